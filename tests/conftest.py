@@ -2,13 +2,16 @@
 
 from pathlib import Path
 
+import os
+
 import matplotlib
 import pytest
 
 matplotlib.use("Agg")
 
 ROOT = Path(__file__).resolve().parents[1]
-SITE = ROOT / "_build" / "html"
+# SITE_DIR lets a test run point at a site built elsewhere (e.g. --path-output builds).
+SITE = Path(os.environ.get("SITE_DIR", ROOT / "_build" / "html"))
 
 
 @pytest.fixture(scope="session")

@@ -1,0 +1,61 @@
+# Dynamics textbook: `make book` builds the site, `make test` checks everything.
+# Both create .venv and install requirements.txt on first use.
+
+SHELL := /bin/bash
+.SHELLFLAGS := -eo pipefail -c      # a failure inside a pipe fails the target
+PYTHON ?= python3
+VENV   ?= .venv
+BIN    := $(VENV)/bin
+SITE   := _build/html
+PORT   ?= 8000
+
+# Reproducible figures: matplotlib stamps SVG/PDF with this date instead of "now".
+export SOURCE_DATE_EPOCH ?= 1767225600
+export FORCE_SOURCE_DATE := 1
+export PYTHONHASHSEED := 0
+
+# Strict: any warning, broken reference or cell error fails the build.
+JB_BUILD := $(BIN)/jupyter-book build . -n -W --keep-going
+
+.PHONY: help venv book test serve clean lint
+
+help:
+	@echo "make book   build the HTML site into $(SITE)"
+	@echo "make test   build the site, then run the whole test suite"
+	@echo "make serve  serve the built site on http://localhost:$(PORT)"
+	@echo "make lint   ruff over the Python code"
+	@echo "make clean  remove the build (keeps .venv)"
+
+venv: $(VENV)/.installed
+
+# Re-install whenever the pinned requirements or the package metadata change.
+$(VENV)/.installed: requirements.txt pyproject.toml
+	@test -x $(BIN)/python || { echo ">>> creating $(VENV)"; $(PYTHON) -m venv $(VENV); }
+	@echo ">>> installing requirements into $(VENV)"
+	$(BIN)/python -m pip install --quiet --upgrade pip
+	$(BIN)/python -m pip install --quiet -r requirements.txt
+	$(BIN)/python -m ipykernel install --sys-prefix --name python3 --display-name "Python 3" >/dev/null
+	@touch $@
+
+book: venv
+	@echo ">>> building the book (pages are executed; cached pages are reused)"
+	$(JB_BUILD)
+	@echo ">>> done: open $(CURDIR)/$(SITE)/index.html  (or run: make serve)"
+
+test: venv
+	@scripts/ensure-debian-packages chromium chromium
+	@scripts/ensure-debian-packages node nodejs
+	@$(MAKE) --no-print-directory book
+	@echo ">>> running the test suite"
+	$(BIN)/python -m pytest
+
+serve:
+	@test -f $(SITE)/index.html || { echo "!!! no site yet: run 'make book' first"; exit 1; }
+	@echo ">>> serving $(SITE) on http://localhost:$(PORT) (Ctrl-C to stop)"
+	$(PYTHON) -m http.server $(PORT) --bind 127.0.0.1 --directory $(SITE)
+
+lint: venv
+	$(BIN)/ruff check physics_figures tests book/_ext
+
+clean:
+	rm -rf _build .pytest_cache .hypothesis

@@ -1,0 +1,390 @@
+"""Falling and rising with air resistance (Notes, "Friction, drag and terminal velocity").
+
+The notes treat drag qualitatively: it opposes the motion and grows with speed. To draw
+the graphs these models use QUADRATIC drag, D = k v², with a drag constant k in kg m^-1
+(a good model for a skydiver or a ball in air). With weight m g (and upthrust U in a
+fluid) the terminal velocity is reached when k v_t² = m g - U, and
+
+    m dv/dt = m g - U - k v²   (falling, down positive),
+
+which has closed-form solutions (tanh, coth, tan) used here.
+"""
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import ClassVar
+
+import numpy as np
+
+from ..constants import G_EARTH
+from . import _checks as check
+
+#: "Terminal velocity reached" means within this fraction of it (points C and E).
+WITHIN_TERMINAL = 0.01
+
+
+def _scalar_or_array(values):
+    return float(values) if np.ndim(values) == 0 else values
+
+
+def _read_only(values) -> np.ndarray:
+    values = np.asarray(values, dtype=float)
+    values.setflags(write=False)
+    return values
+
+
+def drag_force(k, speed):
+    """Quadratic drag D = k v².
+
+    k: drag constant, kg m^-1 (> 0); speed: m s^-1 (>= 0; scalar or array).
+    Returns D in N, opposite to the velocity. Raises ValueError for k <= 0, a negative
+    speed or a value that is not finite.
+    """
+    k = check.positive("k", k, unit="kg m^-1")
+    return k * check.non_negative("speed", speed, unit="m s^-1") ** 2
+
+
+def _net_downward_force(mass, g, upthrust):
+    mass = check.positive("mass", mass, unit="kg")
+    g = check.positive("g", g, unit="m s^-2")
+    upthrust = check.non_negative("upthrust", upthrust, unit="N")
+    weight = mass * g
+    if upthrust >= weight:
+        check.fail("upthrust", upthrust,
+                   f"must be less than the weight m g = {weight:g} N, or the body never "
+                   "falls to a terminal velocity", unit="N")
+    return weight - upthrust
+
+
+def terminal_velocity(mass, k, *, g=G_EARTH, upthrust=0.0):
+    """Terminal velocity for quadratic drag: weight = drag + upthrust, v_t = sqrt((m g - U) / k).
+
+    mass: kg (> 0); k: drag constant, kg m^-1 (> 0); g: m s^-2 (> 0); upthrust: N
+    (>= 0 and less than the weight). Returns v_t in m s^-1.
+    Raises ValueError for a mass, k or g <= 0, an upthrust that is negative or not less
+    than the weight, or a value that is not finite.
+    """
+    net = _net_downward_force(mass, g, upthrust)
+    return float(np.sqrt(net / check.positive("k", k, unit="kg m^-1")))
+
+
+def drag_constant_for_terminal_velocity(mass, terminal_velocity, *, g=G_EARTH, upthrust=0.0):
+    """Drag constant that gives a terminal velocity: k = (m g - U) / v_t².
+
+    mass: kg (> 0); terminal_velocity: m s^-1 (> 0); g: m s^-2 (> 0); upthrust: N
+    (>= 0 and less than the weight). Returns k in kg m^-1.
+    Raises ValueError for a mass, terminal velocity or g <= 0, an upthrust that is
+    negative or not less than the weight, or a value that is not finite.
+    """
+    net = _net_downward_force(mass, g, upthrust)
+    v_t = check.positive("terminal_velocity", terminal_velocity, unit="m s^-1")
+    return net / v_t**2
+
+
+def velocity_from_rest(t, terminal_velocity, *, g=G_EARTH):
+    """Velocity of a body dropped from rest with quadratic drag: v = v_t tanh(g t / v_t).
+
+    Solves dv/dt = g - (g / v_t²) v² with v(0) = 0: the gradient starts at g and v rises
+    towards v_t. t: s (>= 0; scalar or array); terminal_velocity: m s^-1 (> 0);
+    g: m s^-2 (> 0). Returns v in m s^-1, down positive.
+    Raises ValueError for a negative time, v_t or g <= 0, or a value that is not finite.
+    """
+    t = check.non_negative("t", t, unit="s")
+    v_t = check.positive("terminal_velocity", terminal_velocity, unit="m s^-1")
+    g = check.positive("g", g, unit="m s^-2")
+    return v_t * np.tanh(g * t / v_t)
+
+
+def velocity_slowing_to_terminal(t, initial_velocity, terminal_velocity, *, g=G_EARTH):
+    """Velocity of a body moving down faster than its terminal velocity (parachute open).
+
+    v = v_t coth(g t / v_t + arccoth(v0 / v_t)), which solves dv/dt = g - (g / v_t²) v²
+    with v(0) = v0 > v_t: the drag exceeds the weight, so the body slows towards v_t
+    (still moving down). t: s since the change (>= 0; scalar or array);
+    initial_velocity: m s^-1 (> terminal_velocity); terminal_velocity: m s^-1 (> 0);
+    g: m s^-2 (> 0). Returns v in m s^-1, down positive.
+    Raises ValueError for a negative time, v_t or g <= 0, v0 not above v_t, or a value
+    that is not finite.
+    """
+    t = check.non_negative("t", t, unit="s")
+    v_t = check.positive("terminal_velocity", terminal_velocity, unit="m s^-1")
+    g = check.positive("g", g, unit="m s^-2")
+    v0 = check.number("initial_velocity", initial_velocity, unit="m s^-1")
+    if v0 <= v_t:
+        check.fail("initial_velocity", v0,
+                   f"must be greater than terminal_velocity={v_t!r} m s^-1 to slow down to it",
+                   unit="m s^-1")
+    return v_t / np.tanh(g * t / v_t + np.arctanh(v_t / v0))
+
+
+def time_to_terminal_velocity(terminal_velocity, *, g=G_EARTH, within=WITHIN_TERMINAL):
+    """Time for a body falling from rest to come within a fraction of v_t.
+
+    From v = v_t tanh(g t / v_t) = (1 - within) v_t: t = (v_t / g) artanh(1 - within).
+    terminal_velocity: m s^-1 (> 0); g: m s^-2 (> 0); within: fraction, 0 < within < 1.
+    Returns t in s. Raises ValueError for values outside those ranges.
+    """
+    v_t = check.positive("terminal_velocity", terminal_velocity, unit="m s^-1")
+    g = check.positive("g", g, unit="m s^-2")
+    within = _fraction_within(within)
+    return float(v_t / g * np.arctanh(1 - within))
+
+
+def time_to_slow_to_terminal(initial_velocity, terminal_velocity, *, g=G_EARTH,
+                             within=WITHIN_TERMINAL):
+    """Time for a body moving down at v0 > v_t to slow to within a fraction of v_t.
+
+    From v_t coth(g t / v_t + arccoth(v0 / v_t)) = (1 + within) v_t:
+    t = (v_t / g) (arccoth(1 + within) - arccoth(v0 / v_t)), or 0 if v0 is already close.
+    initial_velocity: m s^-1 (> v_t); terminal_velocity: m s^-1 (> 0); g: m s^-2 (> 0);
+    within: fraction, 0 < within < 1. Returns t in s. Raises ValueError for values
+    outside those ranges.
+    """
+    v_t = check.positive("terminal_velocity", terminal_velocity, unit="m s^-1")
+    g = check.positive("g", g, unit="m s^-2")
+    within = _fraction_within(within)
+    v0 = check.number("initial_velocity", initial_velocity, unit="m s^-1")
+    if v0 <= v_t:
+        check.fail("initial_velocity", v0,
+                   f"must be greater than terminal_velocity={v_t!r} m s^-1 to slow down to it",
+                   unit="m s^-1")
+    # arccoth(x) = artanh(1 / x)
+    return float(max(0.0, v_t / g * (np.arctanh(1 / (1 + within)) - np.arctanh(v_t / v0))))
+
+
+def _fraction_within(within):
+    within = check.number("within", within)
+    return check.require("within", within, (within > 0) & (within < 1),
+                         "must be between 0 and 1 (exclusive)")
+
+
+def _log_cosh(x):
+    """ln cosh x for x >= 0 without overflow."""
+    return x + np.log1p(np.exp(-2 * x)) - np.log(2)
+
+
+@dataclass(frozen=True, eq=False)
+class Skydive:
+    """A skydiver falling from rest, then opening a parachute (Notes' skydiver, A to E).
+
+    Down is positive. Quadratic drag D = k v², with k chosen so that the freefall and
+    parachute terminal velocities are the given ones (k = m g / v_t²). The parachute is
+    taken to open instantly, so `time` holds `parachute_opens_at` twice: the first sample
+    is just before the opening, the second just after, so that acceleration, drag and
+    resultant_force show their jump there (the velocity is the same at both).
+
+    Arrays (read-only, same length): time s, velocity m s^-1, distance (fallen) m,
+    acceleration m s^-2, drag N, resultant_force N (= weight - drag).
+    points: label -> (t in s, v in m s^-1), located from the model by POINT_RULES.
+    point_acceleration, point_drag: label -> value at that point (at D: just after the
+    parachute opens, where the deceleration and the drag are largest).
+    """
+
+    mass: float
+    g: float
+    terminal_velocity_freefall: float
+    terminal_velocity_parachute: float
+    parachute_opens_at: float
+    duration: float
+    weight: float
+    drag_constant_freefall: float
+    drag_constant_parachute: float
+    time: np.ndarray = field(repr=False)
+    velocity: np.ndarray = field(repr=False)
+    distance: np.ndarray = field(repr=False)
+    acceleration: np.ndarray = field(repr=False)
+    drag: np.ndarray = field(repr=False)
+    resultant_force: np.ndarray = field(repr=False)
+    points: Mapping[str, tuple[float, float]] = field(repr=False)
+    point_acceleration: Mapping[str, float] = field(repr=False)
+    point_drag: Mapping[str, float] = field(repr=False)
+
+    #: How each labelled point is located (for captions and alt text).
+    POINT_RULES: ClassVar[Mapping[str, str]] = MappingProxyType({
+        "A": "the jump: t = 0, v = 0, so no drag and the acceleration is g",
+        "B": "on the rising curve, where the velocity is half the freefall terminal velocity",
+        "C": "terminal velocity reached: the velocity is within 1 % of the freefall one",
+        "D": "the parachute opens: the drag, and so the deceleration, is largest",
+        "E": "second terminal velocity reached: the velocity is within 1 % of the parachute one",
+    })
+
+
+def skydive(mass, *, terminal_velocity_freefall, terminal_velocity_parachute,
+            parachute_opens_at, duration, g=G_EARTH, samples=801):
+    """Model a skydive: freefall from rest, then an instant parachute opening.
+
+    Freefall: v = v_t1 tanh(g t / v_t1). After opening at t_D with speed v_D > v_t2:
+    v = v_t2 coth(g (t - t_D) / v_t2 + arccoth(v_D / v_t2)). Distance fallen from
+    x = (v_t² / g) ln cosh(g t / v_t) and its coth counterpart.
+
+    mass: kg (> 0); terminal_velocity_freefall, terminal_velocity_parachute: m s^-1
+    (> 0, parachute one lower); parachute_opens_at: s, after the freefall terminal
+    velocity is reached (point C) and before the end; duration: s, the length of the
+    record, long enough to reach the second terminal velocity (point E); g: m s^-2 (> 0);
+    samples: points in each phase (>= 10; the parachute phase gets extra points where
+    the speed drops fast). Returns a Skydive.
+    Raises ValueError for any of those rules broken, naming the argument.
+    """
+    mass = check.positive("mass", mass, unit="kg")
+    g = check.positive("g", g, unit="m s^-2")
+    v_t1 = check.positive("terminal_velocity_freefall", terminal_velocity_freefall,
+                          unit="m s^-1")
+    v_t2 = check.positive("terminal_velocity_parachute", terminal_velocity_parachute,
+                          unit="m s^-1")
+    if v_t2 >= v_t1:
+        check.fail("terminal_velocity_parachute", v_t2,
+                   f"must be less than terminal_velocity_freefall={v_t1!r} m s^-1 (the "
+                   "parachute adds drag)", unit="m s^-1")
+    t_open = check.positive("parachute_opens_at", parachute_opens_at, unit="s")
+    duration = check.positive("duration", duration, unit="s")
+    if t_open >= duration:
+        check.fail("parachute_opens_at", t_open,
+                   f"must be before the end of the record, duration={duration!r} s", unit="s")
+    if isinstance(samples, bool) or not isinstance(samples, int | np.integer) or samples < 10:
+        raise ValueError(f"samples must be a whole number of at least 10 (got samples={samples!r})")
+
+    t_c = time_to_terminal_velocity(v_t1, g=g)
+    if t_open < t_c:
+        check.fail("parachute_opens_at", t_open,
+                   f"must be at or after point C, when terminal velocity is reached "
+                   f"({t_c:.3g} s)", unit="s")
+    v_open = float(velocity_from_rest(t_open, v_t1, g=g))
+    if v_open <= v_t2 * (1 + WITHIN_TERMINAL):
+        check.fail("terminal_velocity_parachute", v_t2,
+                   f"must be well below the speed when the parachute opens ({v_open:.4g} "
+                   "m s^-1), so that the skydiver slows down", unit="m s^-1")
+    t_e = t_open + time_to_slow_to_terminal(v_open, v_t2, g=g)
+    if t_e > duration:
+        check.fail("duration", duration,
+                   f"must reach point E, the parachute terminal velocity ({t_e:.3g} s)",
+                   unit="s")
+
+    # Freefall phase, 0 <= t <= t_open.
+    t_free = np.linspace(0, t_open, samples)
+    v_free = v_t1 * np.tanh(g * t_free / v_t1)
+    x_free = v_t1**2 / g * _log_cosh(g * t_free / v_t1)
+    # Parachute phase, t_open <= t <= duration; extra points while the speed drops.
+    t_chute = np.unique(np.concatenate([np.linspace(t_open, duration, samples),
+                                        np.linspace(t_open, t_e, samples)]))
+    c = np.arctanh(v_t2 / v_open)  # arccoth(v_open / v_t2)
+    y = g * (t_chute - t_open) / v_t2 + c
+    v_chute = v_t2 / np.tanh(y)
+    # ln(sinh y / sinh c), written so that it cannot overflow
+    x_chute = x_free[-1] + v_t2**2 / g * (
+        (y - c) + np.log1p(-np.exp(-2 * y)) - np.log1p(-np.exp(-2 * c)))
+
+    weight = mass * g
+    k1, k2 = weight / v_t1**2, weight / v_t2**2
+    drag = np.concatenate([k1 * v_free**2, k2 * v_chute**2])
+    time = np.concatenate([t_free, t_chute])
+    velocity = np.concatenate([v_free, v_chute])
+    resultant = weight - drag
+
+    t_b = v_t1 / g * np.arctanh(0.5)
+    v_e = v_t2 * (1 + WITHIN_TERMINAL)
+    points = {
+        "A": (0.0, 0.0),
+        "B": (float(t_b), v_t1 / 2),
+        "C": (t_c, v_t1 * (1 - WITHIN_TERMINAL)),
+        "D": (t_open, v_open),
+        "E": (float(t_e), v_e),
+    }
+    point_drag = {
+        "A": 0.0,
+        "B": k1 * (v_t1 / 2) ** 2,
+        "C": k1 * points["C"][1] ** 2,
+        "D": k2 * v_open**2,
+        "E": k2 * v_e**2,
+    }
+    return Skydive(
+        mass=mass, g=g, terminal_velocity_freefall=v_t1, terminal_velocity_parachute=v_t2,
+        parachute_opens_at=t_open, duration=duration, weight=weight,
+        drag_constant_freefall=k1, drag_constant_parachute=k2,
+        time=_read_only(time), velocity=_read_only(velocity),
+        distance=_read_only(np.concatenate([x_free, x_chute])),
+        acceleration=_read_only(resultant / mass), drag=_read_only(drag),
+        resultant_force=_read_only(resultant), points=MappingProxyType(points),
+        point_acceleration=MappingProxyType(
+            {label: (weight - d) / mass for label, d in point_drag.items()}),
+        point_drag=MappingProxyType(point_drag),
+    )
+
+
+@dataclass(frozen=True, eq=False)
+class ThrowUp:
+    """A ball thrown straight up and caught at the launch height (up positive).
+
+    Arrays (read-only, same length): time s, velocity m s^-1, height m (above the
+    launch point), acceleration m s^-2. Scalars: time_to_top s, max_height m,
+    return_speed m s^-1 (speed when back at the launch height), time_of_flight s.
+    terminal_velocity is None for a throw in a vacuum (no drag).
+    """
+
+    launch_speed: float
+    terminal_velocity: float | None
+    g: float
+    time: np.ndarray = field(repr=False)
+    velocity: np.ndarray = field(repr=False)
+    height: np.ndarray = field(repr=False)
+    acceleration: np.ndarray = field(repr=False)
+    time_to_top: float
+    max_height: float
+    return_speed: float
+    time_of_flight: float
+
+
+def thrown_upwards(launch_speed, *, terminal_velocity=None, g=G_EARTH, samples=401):
+    """A ball thrown straight up, with quadratic drag (or none), until it comes back down.
+
+    Up positive; acceleration a = -g - (g / v_t²) v |v| (drag opposes the velocity).
+    With drag, and b = atan(u / v_t):
+      going up    v = v_t tan(b - g t / v_t),  h = (v_t² / g) ln(cos(b - g t / v_t) / cos b),
+      top         t_top = (v_t / g) b,         h_max = (v_t² / 2g) ln(1 + u² / v_t²),
+      coming down v = -v_t tanh(g (t - t_top) / v_t), h = h_max - (v_t² / g) ln cosh(...),
+      back at the start after (v_t / g) asinh(u / v_t) more, at speed u v_t / sqrt(u² + v_t²).
+    In a vacuum: v = u - g t, h = u t - g t² / 2, t_top = u / g, h_max = u² / 2g.
+
+    launch_speed: m s^-1 (> 0); terminal_velocity: m s^-1 (> 0), or None for no drag;
+    g: m s^-2 (> 0); samples: points on each of the way up and the way down (>= 10).
+    Returns a ThrowUp. Raises ValueError for values outside those ranges.
+    """
+    u = check.positive("launch_speed", launch_speed, unit="m s^-1")
+    g = check.positive("g", g, unit="m s^-2")
+    if isinstance(samples, bool) or not isinstance(samples, int | np.integer) or samples < 10:
+        raise ValueError(f"samples must be a whole number of at least 10 (got samples={samples!r})")
+
+    if terminal_velocity is None:
+        t_top = u / g
+        time = np.linspace(0, 2 * t_top, 2 * samples - 1)
+        velocity = u - g * time
+        height = u * time - g * time**2 / 2
+        acceleration = np.full_like(time, -g)
+        return ThrowUp(u, None, g, _read_only(time), _read_only(velocity), _read_only(height),
+                       _read_only(acceleration), t_top, u**2 / (2 * g), u, 2 * t_top)
+
+    v_t = check.positive("terminal_velocity", terminal_velocity, unit="m s^-1")
+    b = np.arctan(u / v_t)
+    t_top = v_t / g * b
+    h_max = v_t**2 / (2 * g) * np.log1p((u / v_t) ** 2)
+    t_down = v_t / g * np.arcsinh(u / v_t)
+
+    t_up = np.linspace(0, t_top, samples)
+    v_up = v_t * np.tan(b - g * t_up / v_t)
+    v_up[-1] = 0.0  # at rest at the top exactly (rounding leaves ~1e-16 m s^-1)
+    h_up = v_t**2 / g * np.log(np.cos(b - g * t_up / v_t) / np.cos(b))
+    tau = np.linspace(0, t_down, samples)[1:]  # the top is already in the way up
+    v_down = -v_t * np.tanh(g * tau / v_t)
+    h_down = h_max - v_t**2 / g * _log_cosh(g * tau / v_t)
+    h_down[-1] = 0.0  # back at the launch height exactly (rounding leaves ~1e-15 m)
+
+    velocity = np.concatenate([v_up, v_down])
+    return ThrowUp(
+        u, v_t, g,
+        time=_read_only(np.concatenate([t_up, t_top + tau])),
+        velocity=_read_only(velocity),
+        height=_read_only(np.concatenate([h_up, h_down])),
+        acceleration=_read_only(-g - g / v_t**2 * velocity * np.abs(velocity)),
+        time_to_top=float(t_top), max_height=float(h_max),
+        return_speed=float(u * v_t / np.hypot(u, v_t)), time_of_flight=float(t_top + t_down),
+    )

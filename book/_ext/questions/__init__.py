@@ -1,0 +1,327 @@
+"""Questions that mark like an examiner (a local Sphinx extension).
+
+An author writes the question in the page and names the data that physics_figures
+computes for it::
+
+    ```{question} Quick check 1
+    :answer: physics_figures.questions:quick_check_1
+
+    A resultant force of 5.0 N acts on a 2.0 kg trolley ...
+    ```
+
+In HTML the question gets answer boxes marked in the browser by static/questions.js
+(loaded only on pages that ask a question) and a worked answer with its mark scheme,
+shown after a first attempt. Without JavaScript, in print and in LaTeX it is the
+question with an answer line; every answer and mark scheme goes to the answer key::
+
+    ```{answer-key}
+    ```
+
+which lists every question of the book (in table-of-contents order).
+"""
+
+from __future__ import annotations
+
+import importlib
+import json
+import re
+from html import escape
+from pathlib import Path
+from typing import ClassVar
+
+from docutils import nodes
+from docutils.parsers.rst import directives
+from sphinx.util import logging
+from sphinx.util.docutils import SphinxDirective
+
+__version__ = "1.0"
+STATIC = Path(__file__).parent / "static"
+logger = logging.getLogger(__name__)
+
+
+class question(nodes.General, nodes.Element):
+    """A question: title, text, answer lines, answer boxes (HTML) and worked answer."""
+
+
+class question_form(nodes.General, nodes.Element):
+    """The answer boxes, marked in the browser (HTML only)."""
+
+
+class worked_answer(nodes.General, nodes.Element):
+    """The worked answer and mark scheme, shown after an attempt (HTML only)."""
+
+
+class answer_key(nodes.General, nodes.Element):
+    """Filled, once every page is read, with each question's answers and mark scheme."""
+
+
+def load_question(reference: str):
+    """Import "package.module:name" and return (Question, the package's source files)."""
+    module_name, _, attribute = reference.partition(":")
+    if not module_name or not attribute:
+        raise ValueError(f'answer must look like "package.module:name" (got answer={reference!r})')
+    module = importlib.import_module(module_name)
+    made = getattr(module, attribute)
+    data = made() if callable(made) else made
+    for needed in ("key", "givens", "parts", "mark_scheme", "browser_data"):
+        if not hasattr(data, needed):
+            raise ValueError(f"answer must name a Question (got {reference!r}, which has no {needed!r})")
+    package = importlib.import_module(module_name.split(".")[0])
+    sources = sorted(Path(package.__file__).parent.rglob("*.py"))
+    return data, sources
+
+
+def _questions(env) -> dict[str, list[dict]]:
+    if not hasattr(env, "exam_questions"):
+        env.exam_questions = {}
+    return env.exam_questions
+
+
+def _answer_key_docs(env) -> set[str]:
+    if not hasattr(env, "exam_answer_keys"):
+        env.exam_answer_keys = set()
+    return env.exam_answer_keys
+
+
+class QuestionDirective(SphinxDirective):
+    """The question's text is the content; its answers come from ``:answer:``."""
+
+    optional_arguments = 1
+    final_argument_whitespace = True
+    has_content = True
+    option_spec: ClassVar = {"answer": directives.unchanged_required}
+
+    def run(self):
+        reference = self.options.get("answer", "")
+        try:
+            data, sources = load_question(reference)
+        except (ImportError, AttributeError, ValueError) as error:
+            raise self.error(f"question: cannot load its answer ({error})") from error
+        for source in sources:  # an edit to physics_figures re-reads this page
+            self.env.note_dependency(str(source))
+        self._check_givens(data)
+        title = self.arguments[0] if self.arguments else data.key
+
+        node = question(qid=data.key, data=data.browser_data(), ids=[f"question-{data.key}"])
+        self.set_source_info(node)
+        node += nodes.paragraph("", "", nodes.strong(text=title), classes=["q-title"])
+        node += self.parse_content_to_nodes()
+        lines = nodes.container(classes=["q-answer-lines"])
+        for index, part in enumerate(data.parts):
+            line = f"{data.label(index)}{part.prompt} = " + "." * 28
+            if part.direction == "choice":
+                line += " direction: " + "." * 16
+            lines += nodes.paragraph(text=line)
+        node += lines
+        node += question_form(data=node["data"],
+                              legends=[data.label(i) + p.prompt[:1].upper() + p.prompt[1:]
+                                       for i, p in enumerate(data.parts)])
+        worked = worked_answer()
+        worked += self.parse_text_to_nodes(data.mark_scheme_markdown())
+        node += worked
+
+        self._record(data, title, worked)
+        return [node]
+
+    def _check_givens(self, data) -> None:
+        """Every number the data uses must be the one the page's text states."""
+        text = "\n".join(self.content)
+        for given in data.givens:
+            if not re.search(rf"(?<![\d.]){re.escape(given.text)}(?!\d)", text):
+                logger.warning(f"question {data.key}: the text does not state {given.name} = "
+                               f"{given.text} {given.unit}, which its answer uses",
+                               location=self.get_location())
+
+    def _record(self, data, title: str, worked: worked_answer) -> None:
+        for docname, asked in _questions(self.env).items():
+            if any(q["key"] == data.key for q in asked):
+                logger.warning(f"question {data.key} is asked twice (also in {docname})",
+                               location=self.get_location())
+        _questions(self.env).setdefault(self.env.docname, []).append({
+            "key": data.key, "title": title, "marks": data.marks,
+            "answers": [data.label(i) + f"{p.prompt}: {p.answer_text}" for i, p in enumerate(data.parts)],
+            "scheme": [child.deepcopy() for child in worked.children],
+        })
+
+
+class AnswerKeyDirective(SphinxDirective):
+    """Where the answer key goes: every question of the book, filled in later."""
+
+    def run(self):
+        _answer_key_docs(self.env).add(self.env.docname)
+        return [answer_key()]
+
+
+# ------------------------------------------------------------------------ events
+
+
+def purge(app, env, docname):
+    _questions(env).pop(docname, None)
+    _answer_key_docs(env).discard(docname)
+
+
+def merge(app, env, docnames, other):
+    for docname in docnames:
+        if docname in _questions(other):
+            _questions(env)[docname] = _questions(other)[docname]
+        if docname in _answer_key_docs(other):
+            _answer_key_docs(env).add(docname)
+
+
+def refresh_answer_keys(app, env, added, changed, removed):
+    """A page's questions changed: re-read the pages that hold an answer key."""
+    return sorted(_answer_key_docs(env)) if added | changed | removed else []
+
+
+def answer_key_has_maths(app, doctree):
+    """The key's mark schemes hold maths, so the page needs MathJax (runs after the math domain)."""
+    if any(doctree.findall(answer_key)):
+        app.env.get_domain("math").data["has_equations"][app.env.docname] = True
+
+
+def _book_order(env, root: str) -> list[str]:
+    order, seen = [], set()
+
+    def visit(docname):
+        if docname in seen:
+            return
+        seen.add(docname)
+        order.append(docname)
+        for child in env.toctree_includes.get(docname, []):
+            visit(child)
+
+    visit(root)
+    return order + sorted(set(env.all_docs) - seen)
+
+
+def _answer_key_content(app, fromdoc: str) -> list[nodes.Node]:
+    env, content = app.env, []
+    for docname in _book_order(env, app.config.root_doc):
+        asked = _questions(env).get(docname)
+        if not asked:
+            continue
+        page = env.titles[docname].astext() if docname in env.titles else docname
+        content.append(nodes.paragraph("", "", nodes.strong(text=page), classes=["q-key-page"]))
+        for item in asked:
+            uri = app.builder.get_relative_uri(fromdoc, docname) + f"#question-{item['key']}"
+            heading = nodes.paragraph(classes=["q-key-title"])
+            heading += nodes.reference("", item["title"], internal=True, refuri=uri)
+            marks = item["marks"]
+            heading += nodes.Text(f" [{marks} mark{'s' if marks != 1 else ''}]")
+            content.append(heading)
+            answers = nodes.bullet_list(classes=["q-key-answers"])
+            for line in item["answers"]:
+                answers += nodes.list_item("", nodes.paragraph(text=line))
+            content.append(answers)
+            content.extend(child.deepcopy() for child in item["scheme"])
+    return content
+
+
+def resolve(app, doctree, docname):
+    """Fill each answer key; outside HTML, questions become plain text with answer lines."""
+    html = app.builder.format == "html"
+    for key in list(doctree.findall(answer_key)):
+        key.extend(_answer_key_content(app, docname))
+        if not html:
+            printed = nodes.container(classes=["q-key"])
+            printed += nodes.rubric(text="Answer key")
+            printed.extend(key.children)
+            key.replace_self(printed)
+    if html:
+        return
+    for asked in list(doctree.findall(question)):
+        printed = nodes.container(ids=asked["ids"], classes=["q"])
+        printed.extend(child for child in asked.children
+                       if not isinstance(child, (question_form, worked_answer)))
+        asked.replace_self(printed)
+
+
+def add_assets(app, pagename, templatename, context, doctree):
+    """Only pages that ask a question (or hold the key) load the script and styles."""
+    if pagename in _questions(app.env) or pagename in _answer_key_docs(app.env):
+        app.add_css_file("questions.css")
+        app.add_js_file("questions.js", loading_method="defer")
+
+
+def add_static_path(app, config):
+    config.html_static_path.append(str(STATIC))
+
+
+# ---------------------------------------------------------------- HTML writer
+
+
+def visit_question(self, node):
+    self.body.append(self.starttag(node, "section", CLASS="q", **{"data-q": node["qid"]}))
+    payload = json.dumps(node["data"], ensure_ascii=False).replace("</", "<\\/")
+    self.body.append(f'<script type="application/json" class="q-data">{payload}</script>\n')
+
+
+def depart_question(self, node):
+    self.body.append("</section>\n")
+
+
+def _input(cls: str, ident: str, label: str, described_by: str) -> str:
+    return (f'<label class="q-field" for="{ident}"><span>{label}</span>'
+            f'<input class="{cls}" id="{ident}" type="text" autocomplete="off" autocapitalize="off" '
+            f'spellcheck="false" aria-describedby="{described_by}"></label>')
+
+
+def visit_question_form(self, node):
+    data, html = node["data"], ['<form class="q-form" hidden novalidate>']
+    for part, legend in zip(data["parts"], node["legends"], strict=True):
+        base = f"q-{data['id']}-{part['id']}"
+        feedback = f"{base}-feedback"
+        html.append(f'<fieldset class="q-part" data-part="{part["id"]}"><legend>{escape(legend)}</legend>')
+        if part["direction"] == "signed":
+            html.append(f'<p class="q-note" id="{base}-note">Give a signed value: positive is '
+                        f"{escape(part['positive'])}.</p>")
+            feedback += f" {base}-note"
+        html.append('<div class="q-fields">')
+        html.append(_input("q-value", f"{base}-value", "Value", feedback))
+        html.append(_input("q-unit", f"{base}-unit", "Unit", feedback))
+        if part["direction"] == "choice":
+            options = "".join(f'<option value="{escape(c)}">{escape(c)}</option>' for c in part["choices"])
+            html.append(f'<label class="q-field" for="{base}-direction"><span>Direction</span>'
+                        f'<select class="q-direction" id="{base}-direction" aria-describedby="{feedback}">'
+                        f'<option value="">Choose…</option>{options}</select></label>')
+        html.append("</div>")
+        html.append(f'<p class="q-feedback" id="{base}-feedback" role="status"></p></fieldset>')
+    html.append('<div class="q-buttons"><button type="submit" class="q-check">Check</button>'
+                '<button type="reset" class="q-clear">Clear my answers</button></div></form>\n')
+    self.body.append("".join(html))
+    raise nodes.SkipNode
+
+
+def visit_worked_answer(self, node):
+    self.body.append('<details class="q-worked" hidden><summary>Worked answer and mark scheme</summary>\n')
+
+
+def depart_worked_answer(self, node):
+    self.body.append("</details>\n")
+
+
+def visit_answer_key(self, node):
+    self.body.append(self.starttag(node, "details", CLASS="q-key"))
+    self.body.append("<summary>Answer key: every answer with its mark scheme</summary>\n")
+
+
+def depart_answer_key(self, node):
+    self.body.append("</details>\n")
+
+
+def setup(app):
+    app.add_node(question, html=(visit_question, depart_question))
+    app.add_node(question_form, html=(visit_question_form, None))
+    app.add_node(worked_answer, html=(visit_worked_answer, depart_worked_answer))
+    app.add_node(answer_key, html=(visit_answer_key, depart_answer_key))
+    app.add_directive("question", QuestionDirective)
+    app.add_directive("answer-key", AnswerKeyDirective)
+    app.connect("config-inited", add_static_path)
+    app.connect("env-purge-doc", purge)
+    app.connect("env-merge-info", merge)
+    app.connect("env-get-outdated", refresh_answer_keys)
+    app.connect("doctree-read", answer_key_has_maths)
+    app.connect("doctree-resolved", resolve)
+    app.connect("html-page-context", add_assets)
+    return {"version": __version__, "parallel_read_safe": True, "parallel_write_safe": True,
+            "env_version": 1}

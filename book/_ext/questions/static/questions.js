@@ -1,0 +1,464 @@
+/* Questions that mark like an examiner: numbers, significant figures, units,
+ * direction and named mistakes. Plain JavaScript, no dependencies, offline.
+ * The marking engine (top) is pure and runs under Node for the tests;
+ * the page code (bottom) only runs in a browser. */
+(function (root) {
+  "use strict";
+
+  var SUPERSCRIPTS = { "⁰": "0", "¹": "1", "²": "2", "³": "3", "⁴": "4", "⁵": "5",
+    "⁶": "6", "⁷": "7", "⁸": "8", "⁹": "9", "⁻": "-", "⁺": "+" };
+
+  // Unicode minus and dashes become "-", a run of superscripts becomes "^n".
+  function normalise(text) {
+    return String(text)
+      .replace(/[\u2212\u2012\u2013\u2014]/g, "-")
+      .replace(/[⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺]+/g, function (run) {
+        return "^" + run.split("").map(function (c) { return SUPERSCRIPTS[c]; }).join("");
+      })
+      .replace(/\*\*/g, "^")
+      .trim();
+  }
+
+  // ---------------------------------------------------------------- numbers
+
+  var NUMBER = /^([+-]?)(\d+\.?\d*|\.\d+)(?:[eE]([+-]?\d+)|\s*[x×X*·]\s*10(?:\s*\^\s*(?:\(\s*([+-]?\d+)\s*\)|([+-]?\d+)))?)?$/;
+  var POWER_ONLY = /^([+-]?)10\s*\^\s*\(?\s*([+-]?\d+)\s*\)?$/;
+
+  function refuse(message) { return { ok: false, message: message }; }
+
+  /* Read a number as a student writes it. Significant figures are counted as
+   * written: a whole number's trailing zeros are ambiguous (1500 has 2 to 4). */
+  function parseNumber(text) {
+    var t = normalise(text);
+    if (t === "") return refuse("Type a number, for example 7.5, -0.25 or 1.5e3.");
+    if (t.indexOf(",") >= 0) {
+      if (/^[+-]?\d{1,3}(,\d{3})+(\.\d*)?$/.test(t)) {
+        return refuse("Write " + t + " without the comma: " + t.replace(/,/g, "") +
+          " (or in standard form, e.g. 1.5 × 10^3).");
+      }
+      return refuse("Use a decimal point, not a comma (write 1.5, not 1,5), and no commas between thousands.");
+    }
+    if (/(^|[x×X*·\s])10\s*-\s*\d+$/.test(t)) {
+      return refuse("\"" + t + "\" reads as ten minus a number. Write a power of ten as 10^-3, or use e: 1.5e-3.");
+    }
+    var mantissa, sign, exponent, m = NUMBER.exec(t);
+    if (m) {
+      sign = m[1];
+      mantissa = m[2];
+      exponent = m[3] !== undefined ? +m[3] : m[4] !== undefined ? +m[4] : m[5] !== undefined ? +m[5] :
+        /[x×X*·]/.test(t.slice(m[1].length + m[2].length)) ? 1 : 0;
+    } else if ((m = POWER_ONLY.exec(t))) {
+      sign = m[1];
+      mantissa = "1";
+      exponent = +m[2];
+    } else {
+      return refuse("I can't read \"" + String(text).trim() + "\" as a number. Write it like 7.5, -0.25, 1.5e3 or 1.5 × 10^3.");
+    }
+    var point = mantissa.indexOf(".");
+    var whole = point < 0 ? mantissa : mantissa.slice(0, point);
+    var fraction = point < 0 ? "" : mantissa.slice(point + 1);
+    var digits = (whole + fraction).replace(/^0+/, "");
+    var value = parseFloat(sign + mantissa + "e" + exponent);
+    var sfMax, sfMin, lead;
+    if (digits === "") { // zero: only the decimal places written say anything
+      sfMax = sfMin = Math.max(1, fraction.length);
+      lead = -fraction.length + sfMax - 1 + exponent;
+    } else {
+      sfMax = digits.length;
+      sfMin = point < 0 ? Math.max(1, digits.replace(/0+$/, "").length) : sfMax;
+      var wholeDigits = whole.replace(/^0+/, "");
+      lead = (wholeDigits ? wholeDigits.length - 1 : -(fraction.match(/^0*/)[0].length + 1)) + exponent;
+    }
+    // lead: power of ten of the first significant digit (the last digit is at lead - sf + 1)
+    return { ok: true, value: value, sfMin: sfMin, sfMax: sfMax, lead: lead };
+  }
+
+  // ------------------------------------------------------------------ units
+
+  // Dimensions: [mass, length, time, angle].
+  var BASE_UNITS = {
+    g: [1e-3, [1, 0, 0, 0]], m: [1, [0, 1, 0, 0]], s: [1, [0, 0, 1, 0]],
+    N: [1, [1, 1, -2, 0]], J: [1, [1, 2, -2, 0]], W: [1, [1, 2, -3, 0]],
+    Pa: [1, [1, -1, -2, 0]], Hz: [1, [0, 0, -1, 0]]
+  };
+  var UNPREFIXED = { // symbols that take no prefix
+    h: [3600, [0, 0, 1, 0]], min: [60, [0, 0, 1, 0]], sec: [1, [0, 0, 1, 0]], t: [1000, [1, 0, 0, 0]],
+    "°": [1, [0, 0, 0, 1]], deg: [1, [0, 0, 0, 1]], "%": [0.01, [0, 0, 0, 0]]
+  };
+  var PREFIXES = { G: 1e9, M: 1e6, k: 1e3, c: 1e-2, m: 1e-3, "µ": 1e-6, "μ": 1e-6, u: 1e-6, n: 1e-9 };
+  var QUANTITIES = [
+    ["momentum", [1, 1, -1, 0]], ["force", [1, 1, -2, 0]], ["energy", [1, 2, -2, 0]],
+    ["power", [1, 2, -3, 0]], ["velocity", [0, 1, -1, 0]], ["acceleration", [0, 1, -2, 0]],
+    ["mass", [1, 0, 0, 0]], ["length", [0, 1, 0, 0]], ["time", [0, 0, 1, 0]],
+    ["pressure", [1, -1, -2, 0]], ["frequency", [0, 0, -1, 0]], ["angle", [0, 0, 0, 1]]
+  ];
+
+  function sameDims(a, b) {
+    for (var i = 0; i < 4; i++) if (a[i] !== b[i]) return false;
+    return true;
+  }
+
+  function quantityOf(dims) {
+    for (var i = 0; i < QUANTITIES.length; i++) if (sameDims(QUANTITIES[i][1], dims)) return QUANTITIES[i][0];
+    return null;
+  }
+
+  // Every way to read a run of letters as unit symbols ("ms": millisecond, or metre second).
+  function segmentations(run) {
+    if (run === "") return [[]];
+    var found = [];
+    function extend(symbol, unit) {
+      segmentations(run.slice(symbol.length)).forEach(function (rest) { found.push([unit].concat(rest)); });
+    }
+    Object.keys(UNPREFIXED).forEach(function (symbol) {
+      if (run.indexOf(symbol) === 0) extend(symbol, UNPREFIXED[symbol]);
+    });
+    Object.keys(BASE_UNITS).forEach(function (symbol) {
+      if (run.indexOf(symbol) === 0) extend(symbol, BASE_UNITS[symbol]);
+      Object.keys(PREFIXES).forEach(function (prefix) {
+        if (run.indexOf(prefix + symbol) === 0) {
+          extend(prefix + symbol, [PREFIXES[prefix] * BASE_UNITS[symbol][0], BASE_UNITS[symbol][1]]);
+        }
+      });
+    });
+    return found;
+  }
+
+  function power(unit, exponent) {
+    return [Math.pow(unit[0], exponent), unit[1].map(function (d) { return d * exponent; })];
+  }
+
+  function times(a, b) {
+    return [a[0] * b[0], a[1].map(function (d, i) { return d + b[1][i]; })];
+  }
+
+  var FACTOR = /^([A-Za-zµμ°%]+)(?:\^\(?\s*([+-]?\d+)\s*\)?|([+-]?\d+))?/;
+
+  /* Read a unit typed as text into SI scale and dimensions. Returns every
+   * reading (a list of {scale, dims}, fewest symbols first) or an error. */
+  function parseUnit(text) {
+    var t = normalise(text).replace(/([A-Za-z°%)])\s*[.·⋅*]\s*(?=[A-Za-zµμ(])/g, "$1 ");
+    if (t === "") return { ok: true, empty: true, readings: [] };
+    var readings = [{ unit: [1, [0, 0, 0, 0]], symbols: 0 }];
+    var rest = t, divide = false;
+    while (rest.length) {
+      var space = /^\s+/.exec(rest);
+      if (space) { rest = rest.slice(space[0].length); continue; }
+      if (rest[0] === "/") {
+        if (divide) return unreadableUnit(text);
+        divide = true; rest = rest.slice(1); continue;
+      }
+      var options;
+      if (rest[0] === "(" && divide) {
+        var close = rest.indexOf(")");
+        if (close < 0) return unreadableUnit(text);
+        var inner = parseUnit(rest.slice(1, close));
+        if (!inner.ok || inner.empty) return unreadableUnit(text);
+        options = inner.readings.map(function (r) { return { unit: [r.scale, r.dims], symbols: r.symbols }; });
+        rest = rest.slice(close + 1);
+      } else {
+        var m = FACTOR.exec(rest);
+        if (!m) return unreadableUnit(text);
+        var exponent = m[2] !== undefined ? +m[2] : m[3] !== undefined ? +m[3] : 1;
+        options = segmentations(m[1]).map(function (symbols) {
+          var last = symbols.length - 1;
+          return {
+            unit: symbols.reduce(function (acc, u, i) { return times(acc, i === last ? power(u, exponent) : u); },
+              [1, [0, 0, 0, 0]]),
+            symbols: symbols.length
+          };
+        });
+        if (!options.length) return unreadableUnit(text);
+        rest = rest.slice(m[0].length);
+      }
+      if (divide) {
+        options = options.map(function (o) { return { unit: power(o.unit, -1), symbols: o.symbols }; });
+        divide = false;
+      }
+      var next = [];
+      readings.forEach(function (r) {
+        options.forEach(function (o) { next.push({ unit: times(r.unit, o.unit), symbols: r.symbols + o.symbols }); });
+      });
+      readings = next;
+    }
+    if (divide) return unreadableUnit(text);
+    readings.sort(function (a, b) { return a.symbols - b.symbols; });
+    return {
+      ok: true, empty: false,
+      readings: readings.map(function (r) { return { scale: r.unit[0], dims: r.unit[1], symbols: r.symbols }; })
+    };
+  }
+
+  function unreadableUnit(text) {
+    return refuse("I can't read the unit \"" + String(text).trim() +
+      "\". Use symbols such as kg, m, s, N, J, with powers written s^-1 or s-1: for example N s, kg m s^-1 or m/s.");
+  }
+
+  /* A value typed with its unit in the number box ("15 N s") is split in two. */
+  function splitValueAndUnit(text) {
+    var t = normalise(text);
+    for (var i = 0; i < t.length; i++) {
+      var c = t[i];
+      if (!/[A-Za-zµμ°%×]/.test(c)) continue;
+      if (/[eE]/.test(c) && /^[+-]?\d/.test(t.slice(i + 1)) && /\d\s*$/.test(t.slice(0, i))) continue;
+      if (/[xX×]/.test(c) && /^\s*10/.test(t.slice(i + 1))) continue;
+      return [t.slice(0, i).trim(), t.slice(i).trim()];
+    }
+    return [t, ""];
+  }
+
+  // ---------------------------------------------------------------- marking
+
+  // Whole numbers of steps of 10^place nearest x; both neighbours on a tie.
+  function steps(x, place) {
+    var q = x / Math.pow(10, place), n = Math.floor(q), f = q - n;
+    if (Math.abs(f - 0.5) < 1e-7) return [n, n + 1];
+    return [f < 0.5 ? n : n + 1];
+  }
+
+  function stepsApart(typed, target, place) {
+    var best = Infinity;
+    steps(typed, place).forEach(function (a) {
+      steps(target, place).forEach(function (b) { best = Math.min(best, Math.abs(a - b)); });
+    });
+    return best;
+  }
+
+  /* Compare a typed number with a target (in the same unit) at every reading
+   * of its significant figures. The comparison is at the student's last digit,
+   * but never finer than checkSf figures of the target: the key is only
+   * trusted that far, so rounding intermediate values to 3 s.f. still passes. */
+  function compare(number, target, minSf, checkSf) {
+    var result = { match: false, matchFewSf: false, lastDigit: false };
+    if (target === 0) { result.match = number.value === 0; return result; } // zero has no significant figures
+    var checkPlace = target === 0 ? -Infinity : Math.floor(Math.log10(Math.abs(target)) + 1e-12) - checkSf + 1;
+    for (var sf = number.sfMax; sf >= number.sfMin; sf--) {
+      var place = Math.max(number.lead - sf + 1, checkPlace);
+      var apart = stepsApart(number.value, target, place);
+      if (apart === 0) {
+        if (sf >= minSf) result.match = true; else result.matchFewSf = true;
+      } else if (apart === 1 && sf === number.sfMax && sf >= 2) {
+        result.lastDigit = true;
+      }
+    }
+    if (result.match) result.matchFewSf = false;
+    return result;
+  }
+
+  function superscript(unitText) {
+    return String(unitText).replace(/\^(-?\d+)/g, function (_, n) {
+      return n.replace(/-/g, "⁻").replace(/\d/g, function (d) { return "⁰¹²³⁴⁵⁶⁷⁸⁹"[d]; });
+    });
+  }
+
+  function formatNumber(x) {
+    return String(parseFloat(x.toPrecision(6)));
+  }
+
+  function outcome(code, message, extra) {
+    var result = { code: code, correct: code === "correct", message: message };
+    if (extra) Object.keys(extra).forEach(function (k) { result[k] = extra[k]; });
+    return result;
+  }
+
+  /* Mark one answer to one part of a question.
+   * part: {value (SI, signed when direction is "signed"), unit, units, quantity,
+   *        minSf, checkSf, direction: "none" | "signed" | "choice", positive,
+   *        choices, answerDirection, mistakes: [{value, unit, direction, feedback}], revisit}
+   * answer: {value: text, unit: text, direction: text} */
+  function mark(part, answer) {
+    var valueText = answer.value || "", unitText = answer.unit || "", direction = answer.direction || "";
+    if (!normalise(unitText) && /[A-Za-zµμ°%]/.test(normalise(valueText).replace(/[eExX×]/g, ""))) {
+      var split = splitValueAndUnit(valueText);
+      valueText = split[0]; unitText = split[1];
+    }
+    var number = parseNumber(valueText);
+    if (!number.ok) return outcome("unreadable-number", number.message);
+    var unit = parseUnit(unitText);
+    if (!unit.ok) return outcome("unreadable-unit", unit.message);
+
+    var expected = parseUnit(part.unit).readings[0];
+    var minSf = part.minSf || 2, checkSf = part.checkSf || 3;
+    var mode = part.direction || "none";
+    var quantity = part.quantity, units = superscript(part.units || part.unit);
+    var typed = number.value;
+    var size = mode === "signed" ? typed : Math.abs(typed);
+    var target = mode === "signed" ? part.value : Math.abs(part.value);
+
+    // The reading of the unit: the one with the right dimensions and the right value, if any.
+    var readings = unit.empty ? [expected] : unit.readings;
+    var fitting = readings.filter(function (r) { return sameDims(r.dims, expected.dims); });
+    function against(value, scale) {
+      var n = { value: size, sfMin: number.sfMin, sfMax: number.sfMax, lead: number.lead };
+      return compare(n, value / scale, minSf, checkSf);
+    }
+    var reading = fitting.filter(function (r) { return against(target, r.scale).match; })[0] ||
+      fitting[0] || readings[0];
+
+    function namedMistake(dims, scale) {
+      var mistakes = part.mistakes || [];
+      for (var i = 0; i < mistakes.length; i++) {
+        var mistake = mistakes[i];
+        var mistakeDims = mistake.unit ? parseUnit(mistake.unit).readings[0].dims : expected.dims;
+        if (!sameDims(mistakeDims, dims)) continue;
+        if (mistake.direction && mistake.direction !== direction) continue;
+        var value = mode === "signed" ? mistake.value : Math.abs(mistake.value);
+        if ((number.sfMax >= 2 || value === 0) && against(value, scale).match) {
+          return outcome("mistake", mistake.feedback, { mistake: mistake.name });
+        }
+      }
+      return null;
+    }
+
+    if (!sameDims(reading.dims, expected.dims)) {
+      var found = namedMistake(reading.dims, reading.scale);
+      if (found) return found;
+      var other = quantityOf(reading.dims);
+      return outcome("wrong-unit", (against(target, 1).match ? "The number is right, but " : "") +
+        superscript(normalise(unitText)) + (other && other !== quantity ?
+          " is a unit of " + other + ", not of " + quantity + "." : " is not a unit of " + quantity + ".") +
+        " Give " + quantity + " in " + units + ".");
+    }
+
+    var sign = mode !== "signed" && typed < 0;
+    var result = against(target, reading.scale);
+    var directionRight = mode !== "choice" || direction === part.answerDirection;
+
+    if (result.match && !sign && directionRight) {
+      if (unit.empty) return outcome("missing-unit", "The number is right. Now give the unit: " + units + ".");
+      return outcome("correct", "Correct.");
+    }
+    if (result.match && !sign && mode === "choice" && !direction) {
+      return outcome("missing-direction", "The size is right. Now give the direction.");
+    }
+
+    var named = namedMistake(reading.dims, reading.scale);
+    if (named) return named;
+
+    if (!unit.empty && reading.scale !== 1 && against(target, 1).match) {
+      return outcome("prefix", "Check the prefix: " + formatNumber(typed) + " " + superscript(part.unit) +
+        " would be right, but 1 " + superscript(normalise(unitText)) + " = " + formatNumber(reading.scale) + " " +
+        superscript(part.unit) + ". Convert g to kg, ms to s, cm to m.");
+    }
+
+    if (sign && result.match) {
+      return outcome("sign", mode === "choice" ?
+        "The size is right. Give it as a positive number and choose the direction from the list." :
+        "The size is right, but a " + quantity + " here is a size with no sign: leave out the minus sign.");
+    }
+    if (mode === "signed" && target !== 0 && compare(
+      { value: -typed, sfMin: number.sfMin, sfMax: number.sfMax, lead: number.lead },
+      target / reading.scale, minSf, checkSf).match) {
+      return outcome("sign", "The size is right but the sign is wrong. Positive is " + part.positive +
+        (target < 0 ? ", and this points the other way, so it is negative." :
+          ", and this points that way, so it is positive."));
+    }
+    if (result.match && !directionRight) {
+      return outcome("direction", "The size is right but the direction is wrong." +
+        (part.directionHint ? " " + part.directionHint : ""));
+    }
+    if (result.matchFewSf) {
+      return outcome("more-sf", "Right value, but give more significant figures: at least " + minSf +
+        (number.sfMin < number.sfMax ? " (zeros at the end of a whole number may not count: write 7.0 × 10², not 700)." : "."));
+    }
+    if (result.lastDigit) {
+      return outcome("last-digit", "Very close: the last digit is out by one. That usually comes from rounding a value part-way through: " +
+        "keep the full calculator value until the end, then round.");
+    }
+    return outcome("wrong", "Not right. " + (part.revisit || "Check your method and your arithmetic."));
+  }
+
+  var engine = {
+    parseNumber: parseNumber, parseUnit: parseUnit, splitValueAndUnit: splitValueAndUnit,
+    mark: mark, superscript: superscript
+  };
+
+  if (typeof module === "object" && module.exports) module.exports = engine;
+  else root.QuestionMarking = engine;
+
+  // ------------------------------------------------------------------ page
+
+  if (typeof document === "undefined") return;
+
+  var STORE = "dynamics-questions:";
+
+  function load(id) {
+    try { return JSON.parse(localStorage.getItem(STORE + id)) || null; } catch (e) { return null; }
+  }
+
+  function save(id, state) {
+    try { localStorage.setItem(STORE + id, JSON.stringify(state)); } catch (e) { /* private mode: no memory */ }
+  }
+
+  function forget(id) {
+    try { localStorage.removeItem(STORE + id); } catch (e) { /* nothing stored */ }
+  }
+
+  function setUp(section) {
+    var data = JSON.parse(section.querySelector("script.q-data").textContent);
+    var form = section.querySelector("form.q-form");
+    var worked = section.querySelector(".q-worked");
+    form.hidden = false;
+
+    function fields(part) {
+      var box = form.querySelector("[data-part=\"" + part.id + "\"]");
+      return {
+        value: box.querySelector(".q-value"), unit: box.querySelector(".q-unit"),
+        direction: box.querySelector(".q-direction"), feedback: box.querySelector(".q-feedback")
+      };
+    }
+
+    function state(checked) {
+      var answers = {};
+      data.parts.forEach(function (part) {
+        var f = fields(part);
+        answers[part.id] = { value: f.value.value, unit: f.unit.value, direction: f.direction ? f.direction.value : "" };
+      });
+      return { answers: answers, checked: checked };
+    }
+
+    function check() {
+      data.parts.forEach(function (part) {
+        var f = fields(part), result = mark(part, {
+          value: f.value.value, unit: f.unit.value, direction: f.direction ? f.direction.value : ""
+        });
+        f.feedback.textContent = (result.correct ? "✓ " : "✗ ") + result.message;
+        f.feedback.className = "q-feedback " + (result.correct ? "q-right" : "q-wrong");
+        f.feedback.setAttribute("data-code", result.code);
+      });
+      if (worked) worked.hidden = false;
+      save(data.id, state(true));
+    }
+
+    form.addEventListener("submit", function (event) { event.preventDefault(); check(); });
+    form.addEventListener("input", function () { save(data.id, state(!!(load(data.id) || {}).checked)); });
+    form.addEventListener("reset", function () {
+      forget(data.id);
+      data.parts.forEach(function (part) {
+        var f = fields(part);
+        f.feedback.textContent = "";
+        f.feedback.className = "q-feedback";
+      });
+      if (worked) { worked.open = false; worked.hidden = true; }
+    });
+
+    var saved = load(data.id);
+    if (saved && saved.answers) {
+      data.parts.forEach(function (part) {
+        var f = fields(part), a = saved.answers[part.id] || {};
+        f.value.value = a.value || "";
+        f.unit.value = a.unit || "";
+        if (f.direction) f.direction.value = a.direction || "";
+      });
+      if (saved.checked) check();
+    }
+  }
+
+  function start() {
+    document.documentElement.classList.add("q-js");
+    Array.prototype.forEach.call(document.querySelectorAll("section.q[data-q]"), setUp);
+  }
+
+  if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", start);
+  else start();
+})(this);

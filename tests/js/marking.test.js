@@ -1,0 +1,215 @@
+// The marking engine of book/_ext/questions/static/questions.js, run with `node --test tests/js`.
+// Parts mirror the notes' Quick check (Notes, "Quick check" and "Answers").
+"use strict";
+const test = require("node:test");
+const assert = require("node:assert/strict");
+const path = require("node:path");
+const { parseNumber, parseUnit, mark, splitValueAndUnit } = require(
+  path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "questions.js"));
+
+// Quick check 1(a): 15 N s, with named mistakes (values as physics_figures computes them).
+const momentum = {
+  value: 15, unit: "N s", units: "N s or kg m s^-1", quantity: "momentum", minSf: 2, checkSf: 3,
+  direction: "none", revisit: "Force × time = change in momentum.",
+  mistakes: [
+    { name: "force divided by time", value: 5 / 3, feedback: "You divided the force by the time." },
+    { name: "force times mass", value: 10, feedback: "You multiplied the force by the mass." },
+    { name: "kinetic energy instead of momentum", value: 56.25, unit: "J", feedback: "That is the kinetic energy." }
+  ]
+};
+// Quick check 3: 686.7 N and 11.619 m s^-2 upwards.
+const drag = { value: 686.7, unit: "N", quantity: "force", direction: "none", revisit: "drag = weight", mistakes: [] };
+const acceleration = {
+  value: (1500 - 686.7) / 70, unit: "m s^-2", quantity: "acceleration", direction: "choice",
+  choices: ["upwards", "downwards"], answerDirection: "upwards", revisit: "resultant = drag − weight",
+  mistakes: [
+    { name: "still falling", value: (1500 - 686.7) / 70, direction: "downwards", feedback: "She is still falling, but slowing down." },
+    { name: "drag as resultant", value: 1500 / 70, feedback: "You used the drag as the resultant force." }
+  ]
+};
+// Quick check 4(a): -2.0 m s^-1, forwards positive.
+const velocity = {
+  value: -2.0, unit: "m s^-1", quantity: "velocity", direction: "signed", positive: "forwards",
+  revisit: "momentum and relative speeds", mistakes: [{ name: "stops", value: 0, feedback: "It only stops for equal masses." }]
+};
+// Quick check 1(b) 7.5 m s^-1 and a time, for units and prefixes.
+const speed = { value: 7.5, unit: "m s^-1", quantity: "speed", direction: "none", revisit: "v = p / m", mistakes: [] };
+const time = { value: 3.0, unit: "s", quantity: "time", direction: "none", revisit: "Δt = Δp / F", mistakes: [] };
+const mass = { value: 12, unit: "kg", quantity: "mass", direction: "none", revisit: "mass is the same", mistakes: [] };
+const showThat = Object.assign({}, drag, { minSf: 3 });
+
+function code(part, value, unit, direction) {
+  return mark(part, { value: value, unit: unit, direction: direction }).code;
+}
+
+test("numbers in every usual form are read", () => {
+  const forms = [["1.5e3", 1500], ["1.5E3", 1500], ["1.5 x 10^3", 1500], ["1.5x10^3", 1500], ["1.5×10³", 1500],
+    ["1.5 × 10^(3)", 1500], ["1.5*10**3", 1500], ["-0.25", -0.25], ["−0.25", -0.25], [".25", 0.25],
+    ["+4.0", 4], ["2.5e-3", 0.0025], ["2.5 × 10⁻³", 0.0025], ["10^3", 1000], ["7.", 7]];
+  for (const [text, value] of forms) {
+    const n = parseNumber(text);
+    assert.equal(n.ok, true, text);
+    assert.ok(Math.abs(n.value - value) < 1e-12 * Math.abs(value), `${text} -> ${n.value}`);
+  }
+});
+
+test("refused forms get a message that says how to write them", () => {
+  assert.match(parseNumber("1,500").message, /without the comma: 1500/);
+  assert.match(parseNumber("1,5").message, /decimal point/);
+  assert.match(parseNumber("10-3").message, /ten minus/);
+  assert.match(parseNumber("1.5 x 10-3").message, /10\^-3/);
+  assert.match(parseNumber("").message, /Type a number/);
+  assert.match(parseNumber("about 5").message, /can't read/);
+  assert.equal(code(momentum, "1,500", "N s"), "unreadable-number");
+});
+
+test("significant figures are counted as written", () => {
+  const sf = (t) => { const n = parseNumber(t); return [n.sfMin, n.sfMax]; };
+  assert.deepEqual(sf("15"), [2, 2]);
+  assert.deepEqual(sf("15.0"), [3, 3]);
+  assert.deepEqual(sf("0.0250"), [3, 3]);
+  assert.deepEqual(sf("1500"), [2, 4]); // trailing zeros of a whole number are ambiguous
+  assert.deepEqual(sf("700"), [1, 3]);
+  assert.deepEqual(sf("700."), [3, 3]);
+  assert.deepEqual(sf("7.0e2"), [2, 2]);
+  assert.deepEqual(sf("1.50 × 10^3"), [3, 3]);
+  assert.deepEqual(sf("0.5"), [1, 1]);
+});
+
+test("the right answer passes in every usual form of its unit", () => {
+  for (const unit of ["N s", "Ns", "N·s", "N*s", "kg m s^-1", "kg m/s", "kg m s⁻¹", "kg m s-1", "kgms-1",
+    "kg ms^-1", "kg.m.s-1", "kg m s^(-1)"]) {
+    assert.equal(code(momentum, "15", unit), "correct", unit);
+  }
+  for (const unit of ["m s^-2", "m/s^2", "m/s²", "ms-2", "m s⁻²", "m/s/s"]) {
+    assert.equal(code(acceleration, "11.6", unit, "upwards"), "correct", unit);
+  }
+  for (const unit of ["m s^-1", "m/s", "ms^-1", "ms-1", "m s⁻¹"]) assert.equal(code(speed, "7.5", unit), "correct", unit);
+  assert.equal(code(momentum, "15000", "g m s^-1"), "correct"); // a correct conversion is still correct
+  assert.equal(code(momentum, "1.5e1", "N s"), "correct");
+  assert.equal(code(momentum, "1.5 × 10^1", "N s"), "correct");
+  assert.equal(code(momentum, "15 N s", ""), "correct"); // the unit typed into the value box
+  assert.equal(code(speed, "27", "km h^-1"), "correct");
+});
+
+test("units are read into SI scale and dimensions", () => {
+  const only = (t) => parseUnit(t).readings[0];
+  assert.deepEqual(only("N s").dims, only("kg m/s").dims);
+  assert.equal(only("g").scale, 1e-3);
+  assert.equal(only("kN").scale, 1000);
+  assert.deepEqual(parseUnit("ms").readings.map((r) => r.scale), [1e-3, 1]); // millisecond, or metre second
+  assert.equal(parseUnit("newtons").ok, false);
+  assert.equal(parseUnit("kg m//s").ok, false);
+  assert.equal(parseUnit("").empty, true);
+});
+
+test("a prefix slip gets its own message", () => {
+  const g = mark(momentum, { value: "15", unit: "g m s^-1" });
+  assert.equal(g.code, "prefix");
+  assert.match(g.message, /prefix/);
+  assert.equal(code(time, "3.0", "ms"), "prefix");
+  assert.equal(code(mass, "12", "g"), "prefix");
+  assert.equal(code(drag, "687", "kN"), "prefix");
+});
+
+test("a unit of another quantity is named as such", () => {
+  const joules = mark(momentum, { value: "15", unit: "J" });
+  assert.equal(joules.code, "wrong-unit");
+  assert.match(joules.message, /J is a unit of energy, not of momentum/);
+  assert.match(joules.message, /number is right/);
+  assert.match(mark(momentum, { value: "15", unit: "N" }).message, /N is a unit of force, not of momentum/);
+  assert.match(mark(drag, { value: "687", unit: "kg" }).message, /kg is a unit of mass, not of force/);
+  assert.match(mark(momentum, { value: "15", unit: "kg m" }).message, /kg m is not a unit of momentum/);
+  assert.equal(code(momentum, "15", "newtons"), "unreadable-unit");
+});
+
+test("a missing unit is asked for", () => {
+  const r = mark(momentum, { value: "15", unit: "" });
+  assert.equal(r.code, "missing-unit");
+  assert.equal(r.correct, false);
+  assert.match(r.message, /N s or kg m s⁻¹/);
+});
+
+test("default rule: 2 or more significant figures; fewer is wrong", () => {
+  assert.equal(code(drag, "690", "N"), "correct"); // 2 s.f. (the zero may not count)
+  assert.equal(code(drag, "687", "N"), "correct");
+  assert.equal(code(drag, "686.7", "N"), "correct");
+  assert.equal(code(drag, "686.70", "N"), "correct");
+  assert.equal(code(drag, "7e2", "N"), "more-sf");
+  const few = mark(drag, { value: "700", unit: "N" });
+  assert.equal(few.code, "more-sf");
+  assert.equal(few.correct, false);
+  assert.match(few.message, /Right value, but give more significant figures/);
+  assert.match(few.message, /7\.0 × 10²/);
+  assert.equal(code(acceleration, "12", "m s^-2", "upwards"), "correct");
+  assert.equal(code(acceleration, "1e1", "m s^-2", "upwards"), "more-sf");
+});
+
+test("a question can ask for more significant figures", () => {
+  assert.equal(code(showThat, "687", "N"), "correct");
+  assert.equal(code(showThat, "690", "N"), "more-sf"); // read as 2 s.f., not 3
+  assert.equal(code(showThat, "6.9e2", "N"), "more-sf");
+});
+
+test("intermediate values rounded to 3 s.f. still pass; an out-by-one last digit is a slip, not a wrong method", () => {
+  assert.equal(code(acceleration, "11.614", "m s^-2", "upwards"), "correct"); // 1500 − 687 then ÷ 70
+  assert.equal(code(acceleration, "11.63", "m s^-2", "upwards"), "correct"); // g = 9.8
+  const slip = mark(acceleration, { value: "11.7", unit: "m s^-2", direction: "upwards" });
+  assert.equal(slip.code, "last-digit");
+  assert.match(slip.message, /rounding/);
+  assert.equal(code(drag, "688", "N"), "last-digit");
+  assert.equal(code(drag, "689", "N"), "wrong");
+  assert.equal(code(drag, "750", "N"), "wrong");
+  assert.equal(code(momentum, "16", "N s"), "last-digit");
+  assert.equal(code(momentum, "15.3", "N s"), "wrong");
+});
+
+test("named mistakes are matched before generic feedback", () => {
+  const r = mark(momentum, { value: "1.67", unit: "N s" });
+  assert.equal(r.code, "mistake");
+  assert.equal(r.mistake, "force divided by time");
+  assert.match(r.message, /divided the force by the time/);
+  assert.equal(mark(momentum, { value: "1.7", unit: "N s" }).mistake, "force divided by time");
+  assert.equal(mark(momentum, { value: "10", unit: "kg m/s" }).mistake, "force times mass");
+  // A mistake that gives another quantity is named by its own unit.
+  assert.equal(mark(momentum, { value: "56", unit: "J" }).mistake, "kinetic energy instead of momentum");
+  assert.equal(mark(acceleration, { value: "21.4", unit: "m/s^2", direction: "upwards" }).mistake, "drag as resultant");
+  assert.equal(mark(velocity, { value: "0", unit: "m/s" }).mistake, "stops");
+  assert.equal(code(momentum, "2", "N s"), "wrong"); // 1 s.f. is never read as a named mistake
+});
+
+test("direction: signed answers and sign slips", () => {
+  assert.equal(code(velocity, "-2.0", "m s^-1"), "correct");
+  assert.equal(code(velocity, "−2.0", "m/s"), "correct");
+  assert.equal(code(velocity, "-2", "m/s"), "more-sf");
+  const slip = mark(velocity, { value: "2.0", unit: "m s^-1" });
+  assert.equal(slip.code, "sign");
+  assert.match(slip.message, /sign is wrong. Positive is forwards/);
+  assert.equal(code(speed, "-7.5", "m/s"), "sign"); // a speed is a size
+});
+
+test("direction: magnitude and direction answers", () => {
+  assert.equal(code(acceleration, "11.6", "m s^-2", "upwards"), "correct");
+  assert.equal(code(acceleration, "11.6", "m s^-2", ""), "missing-direction");
+  const down = mark(acceleration, { value: "11.6", unit: "m s^-2", direction: "downwards" });
+  assert.equal(down.code, "mistake"); // the named direction mistake
+  assert.match(down.message, /still falling/);
+  const plain = Object.assign({}, acceleration, { mistakes: [], directionHint: "Drag > weight." });
+  const generic = mark(plain, { value: "11.6", unit: "m s^-2", direction: "downwards" });
+  assert.equal(generic.code, "direction");
+  assert.match(generic.message, /direction is wrong. Drag > weight./);
+  assert.equal(code(acceleration, "-11.6", "m s^-2", "upwards"), "sign");
+});
+
+test("a wrong method gets the idea to revisit", () => {
+  const r = mark(momentum, { value: "42", unit: "N s" });
+  assert.equal(r.code, "wrong");
+  assert.match(r.message, /Force × time = change in momentum/);
+});
+
+test("the value box alone can hold the unit, in standard form too", () => {
+  assert.deepEqual(splitValueAndUnit("1.5 x 10^3 kg m/s"), ["1.5 x 10^3", "kg m/s"]);
+  assert.deepEqual(splitValueAndUnit("1.5e3 N s"), ["1.5e3", "N s"]);
+  assert.deepEqual(splitValueAndUnit("11.6 m s⁻²"), ["11.6", "m s^-2"]);
+  assert.equal(code(acceleration, "11.6 m s⁻²", "", "upwards"), "correct");
+});

@@ -1,0 +1,96 @@
+"""The browser's marking engine (book/_ext/questions/static/questions.js), run under Node.
+
+1. `node --test tests/js` runs the engine's own tests (numbers, significant figures,
+   units, direction, named mistakes).
+2. Every question of the book is marked by the engine with the data physics_figures
+   computes: the key's own answer is correct, and each named mistake is recognised.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from physics_figures import questions as q
+
+ROOT = Path(__file__).resolve().parents[1]
+ENGINE = ROOT / "book" / "_ext" / "questions" / "static" / "questions.js"
+
+
+def node() -> str:
+    found = shutil.which("node")
+    if found is None:
+        pytest.fail("node is missing, so the marking engine cannot be tested: apt-get install nodejs (Node 20)")
+    return found
+
+
+def test_marking_engine_passes_its_node_tests():
+    result = subprocess.run([node(), "--test", str(ROOT / "tests" / "js")], check=False, capture_output=True, text=True,
+                            timeout=120, cwd=ROOT)
+    assert result.returncode == 0, result.stdout[-4000:] + result.stderr[-2000:]
+    assert "# fail 0" in result.stdout
+
+
+def mark_all(cases: list[dict]) -> list[dict]:
+    result = subprocess.run([node(), str(ROOT / "tests" / "js" / "mark_cases.js")], input=json.dumps(cases),
+                            check=False, capture_output=True, text=True, timeout=120)
+    assert result.returncode == 0, result.stderr
+    return json.loads(result.stdout)
+
+
+def _answer(part: q.Part, value: float, *, sig_figs: int, unit: str | None = None, direction: str | None = None):
+    return {"value": q.number(value, sig_figs), "unit": unit or part.unit,
+            "direction": direction or part.answer_direction}
+
+
+def _cases():
+    for question in q.all_questions():
+        for part_id, part in zip(question.part_ids, question.parts, strict=True):
+            data = part.browser_data(part_id)
+            where = f"{question.key} ({part_id})"
+            # The key as it prints, and the unrounded value, are both right.
+            yield where, "key", data, _answer(part, part.value, sig_figs=part.shown_sig_figs), ("correct", None)
+            yield where, "full", data, _answer(part, part.value, sig_figs=6), ("correct", None)
+            for mistake in part.mistakes:
+                typed = _answer(part, mistake.value, sig_figs=3, unit=mistake.unit, direction=mistake.direction)
+                yield where, mistake.name, data, typed, ("mistake", mistake.name)
+
+
+CASES = list(_cases())
+
+
+def test_every_question_marks_its_own_answer_right_and_names_each_mistake():
+    results = mark_all([{"part": data, "answer": answer} for _, _, data, answer, _ in CASES])
+    wrong = [
+        f"{where} {what}: typed {answer} -> {got['code']} {got.get('mistake')} ({got['message']})"
+        for (where, what, _, answer, expected), got in zip(CASES, results, strict=True)
+        if (got["code"], got.get("mistake")) != expected
+    ]
+    assert not wrong, "\n".join(wrong)
+
+
+def test_every_part_unit_is_read_as_si():
+    """Each part's unit, as the data gives it, must read at scale 1 (answers are in SI)."""
+    units = sorted({part.unit for question in q.all_questions() for part in question.parts})
+    script = (f"const e = require({json.dumps(str(ENGINE))});"
+              f"console.log(JSON.stringify({json.dumps(units)}.map(u => e.parseUnit(u))));")
+    result = subprocess.run([node(), "-e", script], check=False, capture_output=True, text=True, timeout=60)
+    assert result.returncode == 0, result.stderr
+    for unit, parsed in zip(units, json.loads(result.stdout), strict=True):
+        assert parsed["ok"] and parsed["readings"][0]["scale"] == 1, unit
+
+
+def test_sign_slip_and_prefix_slip_on_the_quick_check():
+    """Notes, Answers 4: v1 = -2.0 m s^-1, so +2.0 is a sign slip; Answers 1: 15 N s, so 15 g m/s is a prefix slip."""
+    v1 = q.quick_check_4().parts[0].browser_data("a")
+    p = q.quick_check_1().parts[0].browser_data("a")
+    sign, prefix = mark_all([
+        {"part": v1, "answer": {"value": "2.0", "unit": "m/s"}},
+        {"part": p, "answer": {"value": "15", "unit": "g m/s"}},
+    ])
+    assert sign["code"] == "sign" and "Positive is the direction the 1.0 kg ball moves at first" in sign["message"]
+    assert prefix["code"] == "prefix"

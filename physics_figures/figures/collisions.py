@@ -1,0 +1,159 @@
+"""A straight-line collision before and after, with the totals of momentum and kinetic
+energy (Notes, "Conservation of momentum" and "Elastic and inelastic collisions").
+
+Totals come from :func:`physics_figures.models.total_momentum` and
+:func:`~physics_figures.models.total_kinetic_energy`; velocities are signed, right positive.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+from matplotlib.axes import Axes
+from matplotlib.patches import Rectangle
+from matplotlib.text import Annotation, Text
+
+from ..models import total_kinetic_energy, total_momentum
+from ._text import MOMENTUM_UNIT, VELOCITY_UNIT, a_or_an, plain, sig
+from .style import MAIN, SECOND, new_axes, styled
+
+
+class CollisionDiagram(NamedTuple):
+    """Artists of the before/after diagram."""
+
+    axes: Axes
+    bodies: dict[str, list[Rectangle]]  # "before", "after"
+    velocity_arrows: dict[str, list[Annotation]]
+    totals: dict[str, Text]  # "before", "after": the momentum and kinetic energy line
+
+
+def _row(ax, y, masses, velocities, *, joined):
+    """Draw one row of blocks at height y; return (blocks, arrows)."""
+    colours = (MAIN, SECOND)
+    widths = [0.6 + 0.25 * m for m in masses]  # wider block for more mass
+    blocks, arrows = [], []
+    x = 0.5 if joined else 0.3
+    for i, (m, w) in enumerate(zip(masses, widths, strict=True)):
+        block = Rectangle(
+            (x, y),
+            w,
+            0.7,
+            facecolor="white",
+            edgecolor=colours[i],
+            linewidth=2,
+            hatch="" if i == 0 else "//",
+        )
+        ax.add_patch(block)
+        ax.text(
+            x + w / 2,
+            y + 0.35,
+            f"{sig(m)} kg",
+            ha="center",
+            va="center",
+            fontsize="small",
+            bbox={"facecolor": "white", "edgecolor": "none", "pad": 1},
+        )
+        blocks.append(block)
+        x += w + (0 if joined else 1.8)
+    # one arrow per body (one for the joined pair), from its right face, length ∝ speed
+    movers = (
+        [(blocks[-1], velocities[-1])] if joined else list(zip(blocks, velocities, strict=True))
+    )
+    for block, v in movers:
+        right = block.get_x() + block.get_width()
+        if v == 0:
+            arrows.append(
+                ax.annotate("at rest", xy=(right + 0.1, y + 0.35), va="center", fontsize="small")
+            )
+            continue
+        start = (right + 0.1, y + 0.35) if v > 0 else (block.get_x() - 0.1, y + 0.35)
+        tip = (start[0] + 0.35 * v, start[1])
+        arrows.append(
+            ax.annotate(
+                "",
+                xy=tip,
+                xytext=start,
+                arrowprops={
+                    "arrowstyle": "-|>",
+                    "color": "#111111",
+                    "linewidth": 2,
+                    "shrinkA": 0,
+                    "shrinkB": 0,
+                },
+            )
+        )
+        ax.text(
+            (start[0] + tip[0]) / 2,
+            y + 0.5,
+            f"{sig(abs(v))} {VELOCITY_UNIT}",
+            ha="center",
+            va="bottom",
+            fontsize="small",
+        )
+    return blocks, arrows
+
+
+@styled
+def plot_collision(
+    masses: tuple[float, float],
+    velocities_before: tuple[float, float],
+    velocities_after: tuple[float, float],
+    *,
+    ax: Axes | None = None,
+) -> CollisionDiagram:
+    """Two bodies before and after a straight-line collision, with the totals."""
+    ax = new_axes(ax, figsize=(5.6, 3.0))
+    joined = velocities_after[0] == velocities_after[1]
+    bodies, arrows, totals = {}, {}, {}
+    for name, y, velocities, together in (
+        ("before", 1.6, velocities_before, False),
+        ("after", 0.0, velocities_after, joined),
+    ):
+        bodies[name], arrows[name] = _row(ax, y, masses, velocities, joined=together)
+        ax.text(-0.1, y + 0.35, name, ha="right", va="center", fontweight="bold")
+        p = total_momentum(masses, velocities)
+        ek = total_kinetic_energy(masses, velocities)
+        totals[name] = ax.text(
+            8.0,
+            y + 0.35,
+            f"total p = {sig(p)} {MOMENTUM_UNIT}\ntotal Eₖ = {sig(ek)} J",
+            ha="right",
+            va="center",
+            fontsize="small",
+        )
+    ax.set_xlim(-1.2, 8.0)
+    ax.set_ylim(-0.2, 2.5)
+    ax.set_aspect("equal")
+    ax.set_axis_off()
+    return CollisionDiagram(ax, bodies, arrows, totals)
+
+
+def _totals(masses, before, after):
+    return (
+        total_momentum(masses, before),
+        total_kinetic_energy(masses, before),
+        total_momentum(masses, after),
+        total_kinetic_energy(masses, after),
+    )
+
+
+def collision_caption(masses, velocities_before, velocities_after) -> str:
+    p0, e0, p1, e1 = _totals(masses, velocities_before, velocities_after)
+    return (
+        f"{a_or_an(sig(masses[0])).capitalize()} {sig(masses[0])} kg trolley at {sig(velocities_before[0])} {VELOCITY_UNIT} hits a "
+        f"{sig(masses[1])} kg trolley at rest and they stick together. The total momentum "
+        f"is {sig(p0)} {MOMENTUM_UNIT} before and "
+        f"{sig(p1)} {MOMENTUM_UNIT} after; the kinetic energy falls from "
+        f"{sig(e0)} J to {sig(e1)} J, so the collision is inelastic."
+    )
+
+
+def collision_alt(masses, velocities_before, velocities_after) -> str:
+    p0, e0, p1, e1 = _totals(masses, velocities_before, velocities_after)
+    return plain(
+        f"Before: {a_or_an(sig(masses[0]))} {sig(masses[0])} kg block moving right at {sig(velocities_before[0])} "
+        f"{VELOCITY_UNIT} towards {a_or_an(sig(masses[1]))} {sig(masses[1])} kg block at rest; total momentum "
+        f"{sig(p0)} {MOMENTUM_UNIT}, total kinetic energy {sig(e0)} J. After: the blocks "
+        f"joined, moving right at {sig(velocities_after[0])} {VELOCITY_UNIT}; total momentum "
+        f"{sig(p1)} {MOMENTUM_UNIT}, total kinetic energy {sig(e1)} J."
+    )

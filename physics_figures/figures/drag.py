@@ -1,0 +1,181 @@
+"""Drag against speed and a ball thrown upwards with and without drag (Notes, "Friction,
+drag and terminal velocity"), drawn from :mod:`physics_figures.models.drag` objects.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
+
+from ..models import drag_force
+from ..models.drag import Skydive, ThrowUp
+from ._text import VELOCITY_UNIT, plain, sig
+from .style import FIGSIZE, GUIDE, MAIN, SECOND, book_style, new_axes, styled, unit_label
+
+
+class DragGraph(NamedTuple):
+    """Artists of the drag-against-speed graph."""
+
+    axes: Axes
+    drag_curve: Line2D
+    weight_line: Line2D
+    crossing: Line2D  # marker where drag = weight: the terminal velocity
+
+
+@styled
+def plot_drag_against_speed(
+    skydive: Skydive, *, ax: Axes | None = None, samples: int = 200
+) -> DragGraph:
+    """Drag D = k v² against speed for the freefalling skydiver, with the weight line.
+
+    The curve and the line cross at the terminal velocity. ``samples`` is only how
+    finely the curve is drawn (speeds from 0 to 1.3 times the terminal velocity).
+    """
+    ax = new_axes(ax)
+    v_t = skydive.terminal_velocity_freefall
+    speeds = np.linspace(0, 1.3 * v_t, samples)
+    (curve,) = ax.plot(
+        speeds, drag_force(skydive.drag_constant_freefall, speeds), color=MAIN, label="drag"
+    )
+    weight_line = ax.axhline(skydive.weight, color=SECOND, linestyle="--", label="weight")
+    (crossing,) = ax.plot(
+        [v_t],
+        [skydive.weight],
+        marker="o",
+        color="#111111",
+        markerfacecolor="white",
+        markeredgewidth=1.6,
+        linestyle="none",
+        zorder=4,
+    )
+    ax.annotate(
+        f"terminal velocity\n{sig(v_t)} {VELOCITY_UNIT}: drag = weight",
+        xy=(v_t, skydive.weight),
+        xytext=(-12, 14),
+        textcoords="offset points",
+        ha="right",
+        va="bottom",
+    )
+    ax.annotate(
+        f"weight {sig(skydive.weight, 3)} N",
+        xy=(0, skydive.weight),
+        xytext=(6, -6),
+        textcoords="offset points",
+        va="top",
+        color=SECOND,
+    )
+    ax.annotate(
+        "drag",
+        xy=(speeds[-1], curve.get_ydata()[-1]),
+        xytext=(-6, 0),
+        textcoords="offset points",
+        ha="right",
+        va="center",
+        color=MAIN,
+    )
+    ax.set_xlim(0, speeds[-1])
+    ax.set_ylim(0, 1.8 * skydive.weight)
+    ax.set_xlabel(unit_label("speed v", VELOCITY_UNIT))
+    ax.set_ylabel(unit_label("force", "N"))
+    return DragGraph(ax, curve, weight_line, crossing)
+
+
+def drag_against_speed_caption(skydive: Skydive) -> str:
+    return (
+        f"Drag on the {sig(skydive.mass)} kg skydiver against speed. The drag grows from zero "
+        f"as the speed grows; where it reaches the weight, {sig(skydive.weight, 3)} N, the "
+        f"resultant force is zero: that speed, {sig(skydive.terminal_velocity_freefall)} "
+        f"{VELOCITY_UNIT}, is the terminal velocity."
+    )
+
+
+def drag_against_speed_alt(skydive: Skydive) -> str:
+    return plain(
+        f"Graph of force against speed. The drag curve starts at the origin and rises ever "
+        f"more steeply. A dashed horizontal line marks the weight of the {sig(skydive.mass)} "
+        f"kg skydiver, {sig(skydive.weight, 3)} N. The curve crosses the line at "
+        f"{sig(skydive.terminal_velocity_freefall)} {VELOCITY_UNIT}, the terminal velocity, "
+        f"where drag equals weight."
+    )
+
+
+class ThrowGraph(NamedTuple):
+    """Artists of the thrown-upwards figure (velocity and height against time)."""
+
+    figure: Figure
+    velocity_axes: Axes
+    height_axes: Axes
+    with_drag: tuple[Line2D, Line2D]  # (velocity, height)
+    without_drag: tuple[Line2D, Line2D]
+
+
+@styled
+def plot_thrown_upwards(
+    with_drag: ThrowUp, without_drag: ThrowUp, *, axes: tuple[Axes, Axes] | None = None
+) -> ThrowGraph:
+    """Velocity (up positive) and height against time, with drag (solid) and in a vacuum
+    (dashed), for the same throw. ``axes``: two Axes to draw into, or None for a new Figure.
+    """
+    if axes is None:
+        with book_style():
+            figure = Figure(figsize=(FIGSIZE[0], 5.4), layout="constrained")
+            axes = tuple(figure.subplots(2, 1, sharex=True))
+    ax_v, ax_h = axes
+    lines = {}
+    for throw, name, colour, style in (
+        (without_drag, "in a vacuum", SECOND, "--"),
+        (with_drag, "with air resistance", MAIN, "-"),
+    ):
+        (v,) = ax_v.plot(throw.time, throw.velocity, color=colour, linestyle=style, label=name)
+        (h,) = ax_h.plot(throw.time, throw.height, color=colour, linestyle=style, label=name)
+        ax_h.plot(
+            [throw.time_to_top],
+            [throw.max_height],
+            marker="o",
+            color=colour,
+            markerfacecolor="white",
+            markeredgewidth=1.6,
+            linestyle="none",
+        )
+        lines[name] = (v, h)
+    ax_v.axhline(0, color=GUIDE, linewidth=1.0)
+    ax_v.set_ylabel(unit_label("velocity (up)", VELOCITY_UNIT))
+    ax_v.legend(loc="upper right")
+    ax_h.set_ylabel(unit_label("height", "m"))
+    ax_h.set_xlabel(unit_label("time t", "s"))
+    ax_h.set_ylim(0, without_drag.max_height * 1.2)
+    ax_v.set_xlim(0, max(without_drag.time_of_flight, with_drag.time_of_flight))
+    u = without_drag.launch_speed
+    ax_v.set_ylim(-u * 1.1, u * 1.1)
+    return ThrowGraph(ax_v.figure, ax_v, ax_h, lines["with air resistance"], lines["in a vacuum"])
+
+
+def thrown_upwards_caption(with_drag: ThrowUp, without_drag: ThrowUp) -> str:
+    return (
+        f"A ball thrown straight up at {sig(with_drag.launch_speed)} {VELOCITY_UNIT}, with air "
+        f"resistance (solid) and in a vacuum (dashed), up positive. With drag it slows faster "
+        f"on the way up, reaches {sig(with_drag.max_height, 3)} m instead of "
+        f"{sig(without_drag.max_height, 3)} m, sooner, and comes back at "
+        f"{sig(with_drag.return_speed, 3)} {VELOCITY_UNIT} instead of "
+        f"{sig(without_drag.return_speed)} {VELOCITY_UNIT}."
+    )
+
+
+def thrown_upwards_alt(with_drag: ThrowUp, without_drag: ThrowUp) -> str:
+    return plain(
+        f"Two graphs against time for a ball thrown up at {sig(with_drag.launch_speed)} "
+        f"{VELOCITY_UNIT}, each with two curves. Velocity, up positive: in a vacuum (dashed) "
+        f"a straight line from {sig(without_drag.launch_speed)} down to "
+        f"-{sig(without_drag.return_speed)} {VELOCITY_UNIT} at "
+        f"{sig(without_drag.time_of_flight, 2)} s; with air resistance (solid) a curve that "
+        f"falls more steeply at first, crosses zero earlier, at "
+        f"{sig(with_drag.time_to_top, 2)} s instead of {sig(without_drag.time_to_top, 2)} s, "
+        f"and ends at only -{sig(with_drag.return_speed, 3)} {VELOCITY_UNIT} at "
+        f"{sig(with_drag.time_of_flight, 2)} s. Height: both are hump-shaped; with air "
+        f"resistance the top is {sig(with_drag.max_height, 3)} m instead of "
+        f"{sig(without_drag.max_height, 3)} m."
+    )

@@ -1,0 +1,187 @@
+"""Momentum-time and force-time graphs (Notes, "Reading a momentum-time graph"), drawn
+from a :class:`physics_figures.models.momentum_history.MomentumHistory`.
+
+The gradient of the momentum-time graph is the resultant force; the area under the
+force-time graph is the change in momentum. Both numbers come from the model
+(``segments``, ``segment_forces`` and ``models.impulse``).
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+from matplotlib.axes import Axes
+from matplotlib.collections import PolyCollection
+from matplotlib.lines import Line2D
+from matplotlib.text import Text
+
+from ..models import impulse
+from ..models.momentum_history import MomentumHistory
+from ._text import IMPULSE_UNIT, MOMENTUM_UNIT, VELOCITY_UNIT, a_or_an, plain, seconds, sig
+from .style import GUIDE, MAIN, SHADE, new_axes, styled, unit_label
+
+
+class MomentumTimeGraph(NamedTuple):
+    """Artists of a momentum-time graph."""
+
+    axes: Axes
+    line: Line2D
+    corners: Line2D
+    segment_labels: list[Text]  # one per segment: its gradient, the resultant force
+
+
+class ForceTimeGraph(NamedTuple):
+    """Artists of a force-time graph with the areas shaded."""
+
+    axes: Axes
+    line: Line2D
+    areas: list[PolyCollection]  # one per segment with a force
+    area_labels: list[Text]  # the change in momentum each area stands for
+
+
+def _force_text(force: float) -> str:
+    return "0" if force == 0 else f"{sig(force, 2)} N"
+
+
+@styled
+def plot_momentum_time(history: MomentumHistory, *, ax: Axes | None = None) -> MomentumTimeGraph:
+    """Momentum against time, each straight segment labelled with its gradient (force)."""
+    ax = new_axes(ax)
+    (line,) = ax.plot(history.times, history.momenta, color=MAIN, zorder=3)
+    (corners,) = ax.plot(
+        history.times, history.momenta, linestyle="none", marker="o", color=MAIN, zorder=4
+    )
+    labels = []
+    for segment in history.segments:
+        # a rising segment is labelled high up (3/4 of the way along), a falling one low
+        # down (3/4 of the way along), both just inside the graph, so the two never meet
+        along = 0.5 if segment.force == 0 else 0.75
+        point = (
+            segment.t0 + along * (segment.t1 - segment.t0),
+            segment.p0 + along * (segment.p1 - segment.p0),
+        )
+        offset, ha, va = (
+            ((10, -4), "left", "top")
+            if segment.force > 0
+            else ((-10, -4), "right", "top")
+            if segment.force < 0
+            else ((0, 8), "center", "bottom")
+        )
+        labels.append(
+            ax.annotate(
+                f"gradient = {_force_text(segment.force)}",
+                xy=point,
+                xytext=offset,
+                textcoords="offset points",
+                ha=ha,
+                va=va,
+            )
+        )
+    top = max(history.momenta)
+    ax.set_xlim(history.times[0], history.times[-1])
+    ax.set_ylim(min(0, min(history.momenta)), top * 1.3)
+    ax.set_xlabel(unit_label("time t", "s"))
+    ax.set_ylabel(unit_label("momentum p", MOMENTUM_UNIT))
+    ax.yaxis.set_major_formatter(lambda value, _: sig(value, 3) if value else "0")
+    return MomentumTimeGraph(ax, line, corners, labels)
+
+
+@styled
+def plot_force_time_area(history: MomentumHistory, *, ax: Axes | None = None) -> ForceTimeGraph:
+    """Resultant force against time; each shaded area is labelled with its change in momentum."""
+    ax = new_axes(ax)
+    times, forces = [], []
+    for segment in history.segments:
+        times += [segment.t0, segment.t1]
+        forces += [segment.force, segment.force]
+    (line,) = ax.plot(times, forces, color=MAIN, zorder=3)
+    ax.axhline(0, color=GUIDE, linewidth=1.0, zorder=2)
+    areas, labels = [], []
+    for segment in history.segments:
+        if segment.force == 0:
+            continue
+        areas.append(
+            ax.fill_between(
+                [segment.t0, segment.t1],
+                [segment.force, segment.force],
+                color=SHADE,
+                alpha=0.45,
+                hatch="//" if segment.force > 0 else "\\\\",
+                edgecolor=MAIN,
+                linewidth=0,
+                zorder=1,
+            )
+        )
+        change = impulse(segment.force, segment.t1 - segment.t0)
+        labels.append(
+            ax.text(
+                (segment.t0 + segment.t1) / 2,
+                segment.force / 2,
+                f"area = Δp\n= {sig(change, 2, plus=True)} {IMPULSE_UNIT}",
+                ha="center",
+                va="center",
+                bbox={"facecolor": "white", "edgecolor": "none", "pad": 2},
+                zorder=5,
+            )
+        )
+    low, high = min(forces), max(forces)
+    ax.set_xlim(history.times[0], history.times[-1])
+    ax.set_ylim(min(low, 0) * 1.15, max(high, 0) * 1.15)
+    ax.set_xlabel(unit_label("time t", "s"))
+    ax.set_ylabel(unit_label("resultant force F", "N"))
+    return ForceTimeGraph(ax, line, areas, labels)
+
+
+def momentum_time_caption(history: MomentumHistory, *, mass: float) -> str:
+    forces = ", ".join(_force_text(f) for f in history.segment_forces)
+    return (
+        f"Momentum–time graph of {a_or_an(sig(mass))} {sig(mass)} kg car. The gradient of each straight "  # noqa: RUF001 (typography)
+        f"segment is the resultant force on the car: {forces}."
+    )
+
+
+def momentum_time_alt(history: MomentumHistory, *, mass: float) -> str:
+    parts = []
+    for s in history.segments:
+        if s.force == 0:
+            how = f"stays at {sig(s.p0, 2, group='')} {MOMENTUM_UNIT}"
+        else:
+            how = (
+                f"{'rises' if s.force > 0 else 'falls'} in a straight line from "
+                f"{sig(s.p0, 2, group='')} to {sig(s.p1, 2, group='')} {MOMENTUM_UNIT}"
+            )
+        parts.append(
+            f"from {seconds(s.t0)} to {seconds(s.t1)} it {how} (gradient {_force_text(s.force)})"
+        )
+    speed = max(history.velocity_at(history.times, mass))
+    return plain(
+        f"Momentum-time graph of {a_or_an(sig(mass))} {sig(mass)} kg car: "
+        + "; ".join(parts)
+        + ". "
+        f"The top speed is {sig(speed, 2)} {VELOCITY_UNIT}."
+    )
+
+
+def force_time_caption(history: MomentumHistory) -> str:
+    return (
+        "Resultant force against time for the same car. Each shaded area, force × time, "  # noqa: RUF001 (typography)
+        "is the change in momentum in that interval: the two areas are equal and opposite, "
+        "so the car ends with the momentum it started with."
+    )
+
+
+def force_time_alt(history: MomentumHistory) -> str:
+    parts = [
+        f"{_force_text(s.force)} from {seconds(s.t0)} to {seconds(s.t1)}"
+        + (
+            f", shaded area {sig(impulse(s.force, s.t1 - s.t0), 2, group='')} {IMPULSE_UNIT}"
+            if s.force
+            else ""
+        )
+        for s in history.segments
+    ]
+    return plain(
+        "Force-time graph of the car, made of horizontal steps: "
+        + "; ".join(parts)
+        + ". Each shaded area is the change in momentum over that time."
+    )

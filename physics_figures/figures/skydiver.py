@@ -1,0 +1,194 @@
+"""The skydiver's velocity-time and resultant force-time graphs (Notes, "Friction, drag and
+terminal velocity"), drawn from a :class:`physics_figures.models.drag.Skydive`.
+
+Down is positive, as in the notes. Points A to E sit where the model puts them
+(``Skydive.points``); the two terminal velocities are dashed lines.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+from matplotlib.axes import Axes
+from matplotlib.lines import Line2D
+from matplotlib.text import Text
+
+from ..models.drag import Skydive
+from ._text import ACCELERATION_UNIT, VELOCITY_UNIT, a_or_an, plain, sig
+from .style import GUIDE, MAIN, new_axes, styled, unit_label
+
+POINT_LABELS = ("A", "B", "C", "D", "E")
+# Where each letter sits relative to its marker (points), so letters never sit on the curve.
+_LABEL_OFFSETS = {"A": (8, 4), "B": (8, -14), "C": (-4, 8), "D": (-16, -16), "E": (6, -16)}
+
+
+class SkydiveGraph(NamedTuple):
+    """Artists of a skydiver graph."""
+
+    axes: Axes
+    curve: Line2D
+    markers: Line2D  # the points A to E, in that order
+    point_labels: dict[str, Text]
+    guides: tuple[Line2D, ...]  # reference lines: terminal velocities, or zero and weight
+
+
+def _mark_points(ax: Axes, xy: dict[str, tuple[float, float]]) -> tuple[Line2D, dict[str, Text]]:
+    (markers,) = ax.plot(
+        [xy[p][0] for p in POINT_LABELS],
+        [xy[p][1] for p in POINT_LABELS],
+        linestyle="none",
+        marker="o",
+        markerfacecolor="white",
+        markeredgecolor="#111111",
+        markeredgewidth=1.6,
+        zorder=4,
+    )
+    labels = {
+        p: ax.annotate(
+            p,
+            xy=xy[p],
+            xytext=_LABEL_OFFSETS[p],
+            textcoords="offset points",
+            fontweight="bold",
+            zorder=5,
+        )
+        for p in POINT_LABELS
+    }
+    return markers, labels
+
+
+@styled
+def plot_velocity_time(skydive: Skydive, *, ax: Axes | None = None) -> SkydiveGraph:
+    """Velocity against time, with A-E at the model's points and both terminal velocities."""
+    ax = new_axes(ax)
+    (curve,) = ax.plot(skydive.time, skydive.velocity, color=MAIN, zorder=3)
+    guides = []
+    # labels sit above each dashed line where the curve is far away: the first at the
+    # right end (the curve is down at the second terminal velocity there), the second
+    # a fifth of the way in (the curve is high above it there)
+    for v_t, name, x, ha in (
+        (skydive.terminal_velocity_freefall, "terminal velocity", skydive.duration, "right"),
+        (skydive.terminal_velocity_parachute, "with parachute", 0.2 * skydive.duration, "left"),
+    ):
+        guides.append(ax.axhline(v_t, color=GUIDE, linestyle="--", linewidth=1.3, zorder=2))
+        ax.annotate(
+            f"{name} {sig(v_t)} {VELOCITY_UNIT}",
+            xy=(x, v_t),
+            xytext=(0, 4),
+            textcoords="offset points",
+            ha=ha,
+            va="bottom",
+            color=GUIDE,
+            fontsize="small",
+        )
+    markers, labels = _mark_points(ax, dict(skydive.points))
+    ax.set_xlim(0, skydive.duration)
+    ax.set_ylim(0, skydive.terminal_velocity_freefall * 1.18)
+    ax.set_xlabel(unit_label("time t", "s"))
+    ax.set_ylabel(unit_label("velocity v (down)", VELOCITY_UNIT))
+    return SkydiveGraph(ax, curve, markers, labels, tuple(guides))
+
+
+@styled
+def plot_resultant_force(
+    skydive: Skydive, *, ax: Axes | None = None, clip_at_weights: float = 2.0
+) -> SkydiveGraph:
+    """Resultant force (down positive) against time, with A-E at the model's points.
+
+    The force just after the parachute opens is many weights upwards, so the
+    axis stops at ``clip_at_weights`` weights and the off-scale value is written
+    next to D.
+    """
+    ax = new_axes(ax)
+    (curve,) = ax.plot(skydive.time, skydive.resultant_force, color=MAIN, zorder=3)
+    zero = ax.axhline(0, color=GUIDE, linestyle="--", linewidth=1.3, zorder=2)
+    w = skydive.weight
+    bottom = -clip_at_weights * w
+    points = {p: (skydive.points[p][0], _resultant_at(skydive, p)) for p in POINT_LABELS}
+    shown = {p: (t, max(f, bottom)) for p, (t, f) in points.items()}
+    markers, labels = _mark_points(ax, shown)
+    f_d = points["D"][1]
+    if f_d < bottom:
+        ax.annotate(
+            f"{sig(f_d, 3)} N at D\n(off the scale)",
+            xy=shown["D"],
+            xytext=(-12, 0),
+            textcoords="offset points",
+            fontsize="small",
+            ha="right",
+            va="bottom",
+        )
+    weight_line = ax.axhline(w, color=GUIDE, linestyle=":", linewidth=1.3, zorder=2)
+    ax.annotate(
+        f"weight {sig(w, 3)} N",
+        xy=(skydive.duration, w),
+        xytext=(0, -4),
+        textcoords="offset points",
+        ha="right",
+        va="top",
+        fontsize="small",
+        color=GUIDE,
+    )
+    ax.set_xlim(0, skydive.duration)
+    ax.set_ylim(bottom * 1.08, w * 1.35)
+    ax.set_xlabel(unit_label("time t", "s"))
+    ax.set_ylabel(unit_label("resultant force (down)", "N"))
+    return SkydiveGraph(ax, curve, markers, labels, (zero, weight_line))
+
+
+def _resultant_at(skydive: Skydive, point: str) -> float:
+    """Resultant force at a labelled point, N: the model's weight minus its drag there."""
+    return skydive.weight - skydive.point_drag[point]
+
+
+def _time(skydive: Skydive, point: str) -> str:
+    return sig(skydive.points[point][0], 2)
+
+
+def velocity_time_caption(skydive: Skydive) -> str:
+    v1, v2 = skydive.terminal_velocity_freefall, skydive.terminal_velocity_parachute
+    return (
+        f"Velocity–time graph of {a_or_an(sig(skydive.mass))} {sig(skydive.mass)} kg skydiver, down positive. "  # noqa: RUF001 (typography)
+        f"The velocity levels off at the terminal velocity {sig(v1)} {VELOCITY_UNIT} (C); "
+        f"the parachute opens at D and the velocity falls to a new terminal velocity of "
+        f"{sig(v2)} {VELOCITY_UNIT} (E). Dashed lines: the two terminal velocities."
+    )
+
+
+def velocity_time_alt(skydive: Skydive) -> str:
+    p = skydive.points
+    text = (
+        f"Velocity-time graph of {a_or_an(sig(skydive.mass))} {sig(skydive.mass)} kg skydiver, taking down as positive. "
+        f"The velocity starts at 0 at A with a gradient of g = {sig(skydive.g, 3)} "
+        f"{ACCELERATION_UNIT}, rises ever less steeply through B ({sig(p['B'][1])} "
+        f"{VELOCITY_UNIT} at {_time(skydive, 'B')} s) and levels at "
+        f"{sig(skydive.terminal_velocity_freefall)} {VELOCITY_UNIT} (C, reached at about "
+        f"{_time(skydive, 'C')} s). The parachute opens at D, t = {_time(skydive, 'D')} s: the "
+        f"velocity falls steeply, then less and less steeply, and levels at "
+        f"{sig(skydive.terminal_velocity_parachute)} {VELOCITY_UNIT} (E, at about "
+        f"{_time(skydive, 'E')} s). Dashed horizontal lines mark the two terminal velocities."
+    )
+    return plain(text)
+
+
+def resultant_force_caption(skydive: Skydive) -> str:
+    return (
+        f"Resultant force on the {sig(skydive.mass)} kg skydiver against time, down positive. "
+        f"It starts at the weight, {sig(skydive.weight, 3)} N (A), falls to zero at terminal "
+        f"velocity (C), jumps to a large upward value when the parachute opens (D) and "
+        f"returns to zero (E)."
+    )
+
+
+def resultant_force_alt(skydive: Skydive) -> str:
+    text = (
+        f"Graph of resultant force against time for {a_or_an(sig(skydive.mass))} {sig(skydive.mass)} kg skydiver, "
+        f"down positive. At A the resultant force is the whole weight, "
+        f"{sig(skydive.weight, 3)} N. It decreases through B "
+        f"({sig(_resultant_at(skydive, 'B'), 3)} N) to zero at C, when the drag equals the "
+        f"weight. When the parachute opens at D, t = {_time(skydive, 'D')} s, it jumps to "
+        f"{sig(_resultant_at(skydive, 'D'), 3, group='')} N, that is upwards (off the scale of the "
+        f"graph), then shrinks back to zero at E as the skydiver slows to "
+        f"{sig(skydive.terminal_velocity_parachute)} {VELOCITY_UNIT}."
+    )
+    return plain(text)

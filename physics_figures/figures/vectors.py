@@ -1,0 +1,160 @@
+"""The momentum vector triangle of a glancing collision (Notes, "Momentum in two dimensions"
+and Example 4), drawn from a :class:`physics_figures.models.two_d.GlancingCollision`.
+
+The momentum before runs along the original line. The two momenta after, joined tip to
+tail, end where it ends: the triangle closes because momentum is conserved. Dotted lines
+show the components along and across the line that the working uses.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+from matplotlib.axes import Axes
+from matplotlib.lines import Line2D
+from matplotlib.text import Annotation
+
+from ..models.two_d import GlancingCollision
+from ._text import IMPULSE_UNIT, plain, sig
+from .style import GUIDE, MAIN, PALETTE, SECOND, new_axes, styled
+
+
+class TriangleDiagram(NamedTuple):
+    """Artists of a momentum triangle. Each arrow: ``.xyann`` tail, ``.xy`` tip (N s)."""
+
+    axes: Axes
+    before: Annotation
+    moving_after: Annotation  # the body that was moving (P, X), starts at the origin
+    struck_after: Annotation  # the struck body (Q, Y), tail on the tip of moving_after
+    components: list[Line2D]  # dotted: along and across parts of each momentum after
+    labels: list[Annotation]
+
+
+def _arrow(ax, tail, tip, *, colour, style="-"):
+    return ax.annotate(
+        "",
+        xy=tip,
+        xytext=tail,
+        arrowprops={
+            "arrowstyle": "-|>,head_length=0.7,head_width=0.3",
+            "color": colour,
+            "linewidth": 2.4,
+            "linestyle": style,
+            "shrinkA": 0,
+            "shrinkB": 0,
+        },
+        zorder=4,
+    )
+
+
+@styled
+def plot_momentum_triangle(
+    collision: GlancingCollision,
+    *,
+    ax: Axes | None = None,
+    names: tuple[str, str] = ("P", "Q"),
+    figures: int = 2,
+) -> TriangleDiagram:
+    """Tip-to-tail momentum triangle with the components of both momenta after.
+
+    ``figures``: significant figures of the momenta after (the notes give 2 for the
+    pucks, 3 for Example 4).
+    """
+    ax = new_axes(ax, figsize=(5.6, 4.0))
+    moving, struck = names
+    origin = (0.0, 0.0)
+    before_tip = collision.before_vector
+    corner = collision.known_vector
+    end = collision.triangle[2]
+    before = _arrow(ax, origin, before_tip, colour=GUIDE, style="--")
+    moving_after = _arrow(ax, origin, corner, colour=MAIN)
+    struck_after = _arrow(ax, corner, end, colour=SECOND)
+
+    dotted = {"color": PALETTE["black"], "linestyle": ":", "linewidth": 1.3, "zorder": 2}
+    components = [
+        ax.plot([corner[0], corner[0]], [0, corner[1]], **dotted)[0],  # across, moving body
+        ax.plot([corner[0], end[0]], [corner[1], corner[1]], **dotted)[0],  # along, struck
+    ]
+    along_m, across_m = corner
+    m = collision.missing
+    small = {"textcoords": "offset points", "fontsize": "small"}
+    labels = [
+        ax.annotate(
+            f"{moving} before: {sig(collision.p_before, 3)} {IMPULSE_UNIT}",
+            xy=(before_tip[0] / 2, 0),
+            xytext=(0, -6),
+            ha="center",
+            va="top",
+            **small,
+        ),
+        ax.annotate(
+            f"{moving} after:\n{sig(collision.p_known, figures)} {IMPULSE_UNIT} at "
+            f"{sig(collision.angle_known_deg, 2)}°",
+            xy=(along_m / 2, across_m / 2),
+            xytext=(-8, 4),
+            ha="right",
+            va="bottom",
+            **small,
+        ),
+        ax.annotate(
+            f"{struck} after:\n{sig(m.magnitude, figures)} {IMPULSE_UNIT} at {sig(m.angle_deg, 3)}°",
+            xy=((corner[0] + end[0]) / 2, (corner[1] + end[1]) / 2),
+            xytext=(10, 4),
+            ha="left",
+            va="bottom",
+            **small,
+        ),
+        ax.annotate(
+            f"across {sig(across_m, 3)}",
+            xy=(along_m, across_m / 2),
+            xytext=(-5, 0),
+            ha="right",
+            va="center",
+            color=GUIDE,
+            rotation=90,
+            **small,
+        ),
+        ax.annotate(
+            f"along {sig(m.along, 3)}",
+            xy=((corner[0] + end[0]) / 2, corner[1]),
+            xytext=(0, 4),
+            ha="center",
+            va="bottom",
+            color=GUIDE,
+            **small,
+        ),
+    ]
+    pad = 0.12 * collision.p_before
+    ax.set_xlim(-pad, collision.p_before + 3 * pad)
+    ax.set_ylim(-2 * pad, across_m + 2.5 * pad)
+    ax.set_aspect("equal")
+    ax.set_axis_off()
+    return TriangleDiagram(ax, before, moving_after, struck_after, components, labels)
+
+
+def momentum_triangle_caption(collision: GlancingCollision, *, names=("P", "Q")) -> str:
+    moving, struck = names
+    return (
+        f"Momentum vector triangle for {moving} hitting {struck}, which was at rest. "
+        f"The momenta after, {moving} then {struck}, joined tip to tail, end where the "
+        f"momentum before ({sig(collision.p_before, 3)} {IMPULSE_UNIT}, dashed) ends: "
+        f"momentum is conserved along the line and across it."
+    )
+
+
+def momentum_triangle_alt(
+    collision: GlancingCollision, *, names=("P", "Q"), figures: int = 2
+) -> str:
+    moving, struck = names
+    m = collision.missing
+    along_m, across_m = collision.known_vector
+    return plain(
+        f"Vector triangle. A dashed arrow along the original line shows {moving}'s momentum "
+        f"before, {sig(collision.p_before, 3)} {IMPULSE_UNIT}. From its start, an arrow for "
+        f"{moving} after, {sig(collision.p_known, figures)} {IMPULSE_UNIT} at "
+        f"{sig(collision.angle_known_deg, 2)} degrees above the line (components "
+        f"{sig(along_m, 3)} along, {sig(across_m, 3)} across). From its tip, an arrow for "
+        f"{struck} after, {sig(m.magnitude, figures)} {IMPULSE_UNIT} at {sig(m.angle_deg, 3)} "
+        f"degrees below the line (components {sig(m.along, 3)} along, {sig(m.across, 3)} "
+        f"across), ending at the tip of the dashed arrow, so the triangle closes."
+    )

@@ -315,3 +315,14 @@ def test_the_ball_stops_at_the_top_and_lands_at_the_launch_height():
     assert ball.height[top] == pytest.approx(ball.max_height)
     assert ball.height[-1] == 0.0 and ball.velocity[-1] == pytest.approx(-ball.return_speed)
     assert np.all(np.diff(ball.time) > 0)
+
+
+def test_skydive_reports_the_resultant_force_and_the_drag_at_each_terminal_velocity():
+    # Notes, Understand it > Friction, drag and terminal velocity: at both terminal
+    # velocities the drag is the same size, the weight (80 x 9.81 = 785 N).
+    from physics_figures.scenarios import SKYDIVER as jump
+    for label, drag in jump.point_drag.items():
+        assert jump.point_resultant_force[label] == pytest.approx(jump.weight - drag)
+    assert jump.terminal_drag["C"] == pytest.approx(jump.weight)
+    assert jump.terminal_drag["E"] == pytest.approx(jump.weight)
+    assert round(jump.terminal_drag["C"]) == 785

@@ -15,7 +15,6 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Circle, Rectangle
 from matplotlib.text import Annotation
 
-from ..models import drag_force
 from ..models.drag import Skydive
 from ._text import VELOCITY_UNIT, plain, sig
 from .style import FORCE_COLOURS, book_style, styled
@@ -113,13 +112,7 @@ def _drag_at(skydive: Skydive, point: str) -> float:
     """Drag at a point, N. At C and E the skydiver is at terminal velocity, so the drag is
     the model's drag at that terminal velocity (the model's point is where the velocity is
     within 1 % of it, where the drag is 2 % short of the weight)."""
-    terminal = {
-        "C": (skydive.drag_constant_freefall, skydive.terminal_velocity_freefall),
-        "E": (skydive.drag_constant_parachute, skydive.terminal_velocity_parachute),
-    }
-    if point in terminal:
-        return float(drag_force(*terminal[point]))
-    return skydive.point_drag[point]
+    return skydive.terminal_drag.get(point, skydive.point_drag[point])
 
 
 @styled

@@ -137,8 +137,8 @@ def plot_resultant_force(
 
 
 def _resultant_at(skydive: Skydive, point: str) -> float:
-    """Resultant force at a labelled point, N: the model's weight minus its drag there."""
-    return skydive.weight - skydive.point_drag[point]
+    """Resultant force at a labelled point, N, as the model gives it."""
+    return skydive.point_resultant_force[point]
 
 
 def _time(skydive: Skydive, point: str) -> str:

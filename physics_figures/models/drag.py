@@ -177,8 +177,10 @@ class Skydive:
     Arrays (read-only, same length): time s, velocity m s^-1, distance (fallen) m,
     acceleration m s^-2, drag N, resultant_force N (= weight - drag).
     points: label -> (t in s, v in m s^-1), located from the model by POINT_RULES.
-    point_acceleration, point_drag: label -> value at that point (at D: just after the
-    parachute opens, where the deceleration and the drag are largest).
+    point_acceleration, point_drag, point_resultant_force: label -> value at that point
+    (at D: just after the parachute opens, where the deceleration and the drag are largest).
+    terminal_drag: "C" and "E" -> the drag at exactly that terminal velocity (= the weight);
+    the labelled points themselves sit where the velocity is within 1 % of it.
     """
 
     mass: float
@@ -199,6 +201,8 @@ class Skydive:
     points: Mapping[str, tuple[float, float]] = field(repr=False)
     point_acceleration: Mapping[str, float] = field(repr=False)
     point_drag: Mapping[str, float] = field(repr=False)
+    point_resultant_force: Mapping[str, float] = field(repr=False)
+    terminal_drag: Mapping[str, float] = field(repr=False)
 
     #: How each labelled point is located (for captions and alt text).
     POINT_RULES: ClassVar[Mapping[str, str]] = MappingProxyType({
@@ -308,6 +312,10 @@ def skydive(mass, *, terminal_velocity_freefall, terminal_velocity_parachute,
         point_acceleration=MappingProxyType(
             {label: (weight - d) / mass for label, d in point_drag.items()}),
         point_drag=MappingProxyType(point_drag),
+        point_resultant_force=MappingProxyType(
+            {label: weight - d for label, d in point_drag.items()}),
+        terminal_drag=MappingProxyType(
+            {"C": float(drag_force(k1, v_t1)), "E": float(drag_force(k2, v_t2))}),
     )
 
 

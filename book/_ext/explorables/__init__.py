@@ -1,0 +1,89 @@
+"""The ``explorable`` directive: interactive figures that run in the reader's browser.
+
+    ```{explorable} skydiver
+    ```
+
+puts a hidden container on the page with the scenario's data from
+``physics_figures.explorables`` serialised as JSON; the page's own scripts (shipped
+in ``static/explorables/``, no CDN) reveal it and build the controls and graphs.
+Only pages that use an explorable load those scripts. Without JavaScript, and in
+print, the explorable stays hidden and the static figure next to it is what the
+reader sees; the LaTeX/PDF builders drop it (raw HTML).
+"""
+
+from __future__ import annotations
+
+import html
+import json
+from pathlib import Path
+
+from docutils import nodes
+from sphinx.application import Sphinx
+from sphinx.util.docutils import SphinxDirective
+
+from physics_figures.explorables import EXPLORABLES, explorable_data
+
+STATIC = Path(__file__).parent / "static"
+# Loaded on every page with an explorable, before the explorable's own script.
+SHARED_SCRIPTS = ("explorables/models.js", "explorables/ui.js")
+
+
+class ExplorableDirective(SphinxDirective):
+    """``{explorable} <name>``: one of physics_figures.explorables.EXPLORABLES."""
+
+    required_arguments = 1
+    has_content = False
+
+    def run(self) -> list[nodes.Node]:
+        name = self.arguments[0]
+        if name not in EXPLORABLES:
+            raise self.error(f"unknown explorable {name!r}: choose one of {', '.join(EXPLORABLES)}")
+        # "</" could close the script element early, so it is escaped inside the JSON.
+        data = json.dumps(explorable_data(name), separators=(",", ":")).replace("</", "<\\/")
+        markup = (
+            f'<div class="explorable" data-explorable="{html.escape(name)}" hidden>'
+            f'<script type="application/json" class="explorable-data">{data}</script></div>'
+        )
+        self.env.explorables_by_doc.setdefault(self.env.docname, set()).add(name)
+        return [nodes.raw("", markup, format="html")]
+
+
+def _init_env(app: Sphinx, env, docnames) -> None:
+    if not hasattr(env, "explorables_by_doc"):
+        env.explorables_by_doc = {}
+
+
+def _purge_doc(app: Sphinx, env, docname: str) -> None:
+    getattr(env, "explorables_by_doc", {}).pop(docname, None)
+
+
+def _merge(app: Sphinx, env, docnames, other) -> None:
+    for docname in docnames:
+        if docname in other.explorables_by_doc:
+            env.explorables_by_doc[docname] = other.explorables_by_doc[docname]
+
+
+def _add_static_path(app: Sphinx) -> None:
+    app.config.html_static_path.append(str(STATIC))
+
+
+def _add_page_assets(app: Sphinx, pagename: str, templatename: str, context, doctree) -> None:
+    """Scripts and styles only for pages that show an explorable (Sphinx >= 3.5 per page)."""
+    names = getattr(app.env, "explorables_by_doc", {}).get(pagename)
+    if not names:
+        return
+    app.add_css_file("explorables/explorables.css")
+    for script in SHARED_SCRIPTS:
+        app.add_js_file(script, loading_method="defer")
+    for name in sorted(names):
+        app.add_js_file(f"explorables/{name}.js", loading_method="defer")
+
+
+def setup(app: Sphinx):
+    app.add_directive("explorable", ExplorableDirective)
+    app.connect("env-before-read-docs", _init_env)
+    app.connect("env-purge-doc", _purge_doc)
+    app.connect("env-merge-info", _merge)
+    app.connect("builder-inited", _add_static_path)
+    app.connect("html-page-context", _add_page_assets)
+    return {"parallel_read_safe": True, "parallel_write_safe": True, "env_version": 1}

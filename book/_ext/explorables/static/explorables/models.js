@@ -1,0 +1,318 @@
+/* Closed-form physics for the explorables: a small port of physics_figures.models.
+ *
+ * Every function here has a Python twin (physics_figures.models or
+ * physics_figures.explorables) and tests/test_explorables_models.py runs this file
+ * under node and checks it against the twin on many random inputs to 1e-9 relative.
+ * SI units throughout; velocities are signed along a chosen positive direction.
+ * Works as a browser global (window.ExplorableModels) and as a node module.
+ */
+(function (root, factory) {
+  "use strict";
+  var api = factory();
+  if (typeof module === "object" && module.exports) module.exports = api;
+  else root.ExplorableModels = api;
+})(typeof self !== "undefined" ? self : this, function () {
+  "use strict";
+
+  var DEG = Math.PI / 180;
+
+  /* ---- drag (quadratic: D = k v^2, k in kg m^-1); twin: physics_figures.models.drag ---- */
+
+  var WITHIN_TERMINAL = 0.01; // "terminal velocity reached" = within 1 % of it (C and E)
+
+  function dragForce(k, speed) {
+    return k * speed * speed;
+  }
+
+  /** v_t = sqrt(m g / k): the speed at which the drag equals the weight. */
+  function terminalVelocity(mass, k, g) {
+    return Math.sqrt((mass * g) / k);
+  }
+
+  /** v = v_t tanh(g t / v_t): falling from rest, down positive. */
+  function velocityFromRest(t, vt, g) {
+    return vt * Math.tanh((g * t) / vt);
+  }
+
+  /** v = v_t coth(g t / v_t + arcoth(v0 / v_t)) for v0 > v_t: slowing down to v_t. */
+  function velocitySlowingToTerminal(t, v0, vt, g) {
+    return vt / Math.tanh((g * t) / vt + Math.atanh(vt / v0)); // arcoth(x) = artanh(1/x)
+  }
+
+  /** Time from rest to within 1 % of v_t: t_C = (v_t / g) artanh(0.99). */
+  function timeToTerminalVelocity(vt, g) {
+    return (vt / g) * Math.atanh(1 - WITHIN_TERMINAL);
+  }
+
+  /** Time to slow from v0 > v_t to within 1 % of v_t (0 if already there). */
+  function timeToSlowToTerminal(v0, vt, g) {
+    return Math.max(0, (vt / g) * (Math.atanh(1 / (1 + WITHIN_TERMINAL)) - Math.atanh(vt / v0)));
+  }
+
+  /** Earliest opening the explorable allows: point C (twin: earliest_parachute_opening). */
+  function earliestParachuteOpening(mass, bodyDrag, g) {
+    return timeToTerminalVelocity(terminalVelocity(mass, bodyDrag, g), g);
+  }
+
+  /**
+   * A skydive with quadratic drag (twin: physics_figures.models.skydive): free fall from
+   * rest with drag constant bodyDrag, then the parachute (parachuteDrag) opens at
+   * parachuteOpensAt, at or after point C. Down positive. At the opening instant the
+   * parachute's drag acts (point D), unless justBefore is asked for.
+   */
+  function skydive(opts) {
+    var g = opts.g;
+    var m = opts.mass;
+    var tOpen = opts.parachuteOpensAt;
+    var weight = m * g;
+    var vt1 = terminalVelocity(m, opts.bodyDrag, g);
+    var vt2 = terminalVelocity(m, opts.parachuteDrag, g);
+    // the model's drag constants are k = m g / v_t^2, as in physics_figures
+    var k1 = weight / (vt1 * vt1);
+    var k2 = weight / (vt2 * vt2);
+    var vOpen = velocityFromRest(tOpen, vt1, g);
+
+    function velocityAt(t) {
+      return t < tOpen ? velocityFromRest(t, vt1, g) : velocitySlowingToTerminal(t - tOpen, vOpen, vt2, g);
+    }
+    function dragAt(t, justBefore) {
+      var v = velocityAt(t);
+      return (t < tOpen || (justBefore && t === tOpen) ? k1 : k2) * v * v;
+    }
+    function resultantForceAt(t, justBefore) {
+      return weight - dragAt(t, justBefore);
+    }
+    function accelerationAt(t, justBefore) {
+      return resultantForceAt(t, justBefore) / m;
+    }
+
+    var vE = vt2 * (1 + WITHIN_TERMINAL);
+    var vC = vt1 * (1 - WITHIN_TERMINAL);
+    var points = {
+      A: [0, 0],
+      B: [(vt1 / g) * Math.atanh(0.5), vt1 / 2],
+      C: [timeToTerminalVelocity(vt1, g), vC],
+      D: [tOpen, vOpen],
+      E: [tOpen + timeToSlowToTerminal(vOpen, vt2, g), vE],
+    };
+    var pointDrag = { A: 0, B: k1 * (vt1 / 2) * (vt1 / 2), C: k1 * vC * vC, D: k2 * vOpen * vOpen, E: k2 * vE * vE };
+    var pointAcceleration = {};
+    Object.keys(pointDrag).forEach(function (label) {
+      pointAcceleration[label] = (weight - pointDrag[label]) / m;
+    });
+    return {
+      mass: m,
+      g: g,
+      weight: weight,
+      parachuteOpensAt: tOpen,
+      terminalVelocityFreefall: vt1,
+      terminalVelocityParachute: vt2,
+      dragConstantFreefall: k1,
+      dragConstantParachute: k2,
+      // at each terminal velocity the drag is k v_t^2 (= the weight)
+      dragAtFreefallTerminal: dragForce(k1, vt1),
+      dragAtParachuteTerminal: dragForce(k2, vt2),
+      points: points,
+      pointDrag: pointDrag,
+      pointAcceleration: pointAcceleration,
+      velocityAt: velocityAt,
+      dragAt: dragAt,
+      resultantForceAt: resultantForceAt,
+      accelerationAt: accelerationAt,
+    };
+  }
+
+  /* ---- collisions in a line (velocities signed) ---- */
+
+  function totalMomentum(masses, velocities) {
+    var p = 0;
+    for (var i = 0; i < masses.length; i++) p += masses[i] * velocities[i];
+    return p;
+  }
+
+  function totalKineticEnergy(masses, velocities) {
+    var e = 0;
+    for (var i = 0; i < masses.length; i++) e += 0.5 * masses[i] * velocities[i] * velocities[i];
+    return e;
+  }
+
+  function relativeSpeed(va, vb) {
+    return Math.abs(va - vb);
+  }
+
+  /** Elastic: momentum and kinetic energy conserved, approach speed = separation speed. */
+  function elasticCollision(m1, u1, m2, u2) {
+    var M = m1 + m2;
+    return [((m1 - m2) * u1 + 2 * m2 * u2) / M, ((m2 - m1) * u2 + 2 * m1 * u1) / M];
+  }
+
+  /** Stick together: v = (m1 u1 + m2 u2) / (m1 + m2). */
+  function stickTogether(m1, u1, m2, u2) {
+    return (m1 * u1 + m2 * u2) / (m1 + m2);
+  }
+
+  /** Explosion from rest: 0 = m1 v1 + m2 v2, so v2 = -m1 v1 / m2. */
+  function explosionFromRest(m1, m2, v1) {
+    return (-m1 * v1) / m2;
+  }
+
+  /**
+   * Keep a fraction f of the kinetic energy seen from the centre of mass (f = 1 elastic,
+   * f = 0 stick together): each velocity relative to the centre of mass reverses and
+   * shrinks by sqrt(f).
+   */
+  function collisionWithEnergyKept(m1, u1, m2, u2, f) {
+    var vcm = (m1 * u1 + m2 * u2) / (m1 + m2);
+    var s = Math.sqrt(f);
+    return [vcm - s * (u1 - vcm), vcm - s * (u2 - vcm)];
+  }
+
+  function percentageKineticEnergyLost(before, after) {
+    return ((before - after) / before) * 100;
+  }
+
+  /** Percentage of the kinetic energy lost; 0 when there was none to lose (all at rest). */
+  function percentLost(before, after) {
+    return before > 0 ? percentageKineticEnergyLost(before, after) : 0;
+  }
+
+  /** Percentage of the kinetic energy lost by sticking together: the most any collision loses. */
+  function mostPercentLost(m1, u1, m2, u2) {
+    var v = stickTogether(m1, u1, m2, u2);
+    return percentLost(totalKineticEnergy([m1, m2], [u1, u2]), totalKineticEnergy([m1, m2], [v, v]));
+  }
+
+  /**
+   * The collision lab (twin: physics_figures.explorables.collision_lab). A (m1, u1) on the
+   * left, B (m2, u2) on the right; kind "elastic", "stick", "loss" (percentLost of the
+   * kinetic energy) or "explosion" (from rest; A moves off at velocityAAfter). An
+   * impossible set-up comes back with after = null and refusal naming the broken rule.
+   */
+  function collisionLab(s) {
+    var m1 = s.m1, m2 = s.m2;
+    var explosion = s.kind === "explosion";
+    var u1 = explosion ? 0 : s.u1;
+    var u2 = explosion ? 0 : s.u2;
+    var masses = [m1, m2];
+    var result = {
+      kind: s.kind,
+      before: [u1, u2],
+      after: null,
+      refusal: null,
+      numbers: {},
+      momentumBefore: totalMomentum(masses, [u1, u2]),
+      kineticEnergyBefore: totalKineticEnergy(masses, [u1, u2]),
+      momentumAfter: null,
+      kineticEnergyAfter: null,
+      approachSpeed: relativeSpeed(u1, u2),
+      separationSpeed: null,
+      percentLost: null,
+      mostPercentLost: explosion ? null : mostPercentLost(m1, u1, m2, u2),
+    };
+    function refused(code, numbers) {
+      result.refusal = code;
+      result.numbers = numbers || {};
+      return result;
+    }
+    var after;
+    if (explosion) {
+      if (s.velocityAAfter > 0) return refused("explosion-wrong-way");
+      after = [s.velocityAAfter, explosionFromRest(m1, m2, s.velocityAAfter)];
+    } else {
+      if (u1 <= u2) return refused("never-meet", { u1: u1, u2: u2 });
+      if (s.kind === "elastic") after = elasticCollision(m1, u1, m2, u2);
+      else if (s.kind === "stick") {
+        var v = stickTogether(m1, u1, m2, u2);
+        after = [v, v];
+      } else {
+        var most = result.mostPercentLost;
+        if (s.percentLost < 0) return refused("energy-created");
+        // a hair of tolerance so that typing the sticking-together figure is allowed
+        if (s.percentLost > most * (1 + 1e-9)) return refused("more-than-sticking", { momentum: result.momentumBefore, most: most });
+        // the loss as a fraction of what can be lost (the centre-of-mass kinetic energy)
+        var kept = most > 0 ? Math.max(0, 1 - s.percentLost / most) : 1;
+        after = collisionWithEnergyKept(m1, u1, m2, u2, kept);
+      }
+    }
+    result.after = after;
+    result.momentumAfter = totalMomentum(masses, after);
+    result.kineticEnergyAfter = totalKineticEnergy(masses, after);
+    result.separationSpeed = relativeSpeed(after[0], after[1]);
+    if (!explosion) result.percentLost = percentLost(result.kineticEnergyBefore, result.kineticEnergyAfter);
+    return result;
+  }
+
+  /* ---- momentum in two dimensions (angles in degrees from the original line) ---- */
+
+  function components(magnitude, angleDeg) {
+    return [magnitude * Math.cos(angleDeg * DEG), magnitude * Math.sin(angleDeg * DEG)];
+  }
+
+  function fromComponents(along, across) {
+    return [Math.hypot(along, across), Math.atan2(across, along) / DEG];
+  }
+
+  /**
+   * The other body's momentum from conservation along and across the line: along =
+   * p_before - p cos(theta); across = p sin(theta) (a size, on the other side of the line).
+   */
+  function missingMomentum(pBefore, pKnown, angleKnownDeg) {
+    var known = components(pKnown, angleKnownDeg);
+    var along = pBefore - known[0];
+    var across = known[1];
+    var polar = fromComponents(along, across);
+    return { along: along, across: across, magnitude: polar[0], angleDeg: polar[1] };
+  }
+
+  /* ---- a piecewise-linear momentum-time graph ---- */
+
+  function momentumHistory(times, momenta) {
+    var n = times.length;
+    function segmentIndex(t) {
+      // the segment whose [t0, t1) holds t; the last segment also owns its end point
+      for (var i = 0; i < n - 2; i++) if (t < times[i + 1]) return i;
+      return n - 2;
+    }
+    function gradient(i) {
+      return (momenta[i + 1] - momenta[i]) / (times[i + 1] - times[i]);
+    }
+    return {
+      times: times,
+      momenta: momenta,
+      momentumAt: function (t) {
+        var i = segmentIndex(t);
+        return momenta[i] + gradient(i) * (t - times[i]);
+      },
+      forceAt: function (t) {
+        return gradient(segmentIndex(t));
+      },
+      velocityAt: function (t, mass) {
+        return this.momentumAt(t) / mass;
+      },
+    };
+  }
+
+  return {
+    dragForce: dragForce,
+    terminalVelocity: terminalVelocity,
+    velocityFromRest: velocityFromRest,
+    velocitySlowingToTerminal: velocitySlowingToTerminal,
+    timeToTerminalVelocity: timeToTerminalVelocity,
+    timeToSlowToTerminal: timeToSlowToTerminal,
+    earliestParachuteOpening: earliestParachuteOpening,
+    skydive: skydive,
+    totalMomentum: totalMomentum,
+    totalKineticEnergy: totalKineticEnergy,
+    relativeSpeed: relativeSpeed,
+    elasticCollision: elasticCollision,
+    stickTogether: stickTogether,
+    explosionFromRest: explosionFromRest,
+    collisionWithEnergyKept: collisionWithEnergyKept,
+    percentageKineticEnergyLost: percentageKineticEnergyLost,
+    collisionLab: collisionLab,
+    components: components,
+    fromComponents: fromComponents,
+    missingMomentum: missingMomentum,
+    momentumHistory: momentumHistory,
+  };
+});

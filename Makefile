@@ -17,11 +17,12 @@ export PYTHONHASHSEED := 0
 # Strict: any warning, broken reference or cell error fails the build.
 JB_BUILD := $(BIN)/jupyter-book build . -n -W --keep-going
 
-.PHONY: help venv book test serve clean lint
+.PHONY: help venv html book test serve clean lint
 
 help:
-	@echo "make book   build the HTML site into $(SITE)"
+	@echo "make book   build the site into $(SITE), with its PDFs (make html: HTML only)"
 	@echo "make test   build the site, then run the whole test suite"
+	@echo "make pdf    build the PDF book, question sheet and answer key into $(PDF)"
 	@echo "make serve  serve the built site on http://localhost:$(PORT)"
 	@echo "make lint   ruff over the Python code"
 	@echo "make clean  remove the build (keeps .venv)"
@@ -37,9 +38,12 @@ $(VENV)/.installed: requirements.txt pyproject.toml
 	$(BIN)/python -m ipykernel install --sys-prefix --name python3 --display-name "Python 3" >/dev/null
 	@touch $@
 
-book: venv
-	@echo ">>> building the book (pages are executed; cached pages are reused)"
+html: venv
+	@echo ">>> building the HTML site (pages are executed; cached pages are reused)"
 	$(JB_BUILD)
+
+# The site links the teachers' PDFs, so the book is the HTML plus the PDFs.
+book: html pdf
 	@echo ">>> done: open $(CURDIR)/$(SITE)/index.html  (or run: make serve)"
 
 test: venv
@@ -48,6 +52,25 @@ test: venv
 	@$(MAKE) --no-print-directory book
 	@echo ">>> running the test suite"
 	$(BIN)/python -m pytest
+
+# The teachers' PDFs: the book, a question sheet and an answer key. One LaTeX build
+# writes all three .tex files (book/_latex/); xelatex typesets them. Needs TeX Live
+# from Debian (about 360 MB, no texlive-fonts-extra). The PDFs are copied into the
+# site too, so the intro page's download links work.
+PDF := _build/latex
+PDF_FILES := dynamics.pdf dynamics-questions.pdf dynamics-answers.pdf
+TEX_PACKAGES := texlive-xetex texlive-latex-extra texlive-fonts-recommended fonts-freefont-otf latexmk
+
+.PHONY: pdf
+pdf: venv
+	@scripts/ensure-debian-packages xelatex $(TEX_PACKAGES)
+	@scripts/ensure-debian-packages latexmk $(TEX_PACKAGES)
+	@scripts/ensure-debian-packages /usr/share/fonts/opentype/freefont/FreeSerif.otf fonts-freefont-otf
+	@echo ">>> building the PDFs with xelatex (pages are executed; cached pages are reused)"
+	$(JB_BUILD) --builder pdflatex
+	@mkdir -p $(SITE)/pdf
+	cp $(addprefix $(PDF)/,$(PDF_FILES)) $(SITE)/pdf/
+	@echo ">>> done: $(addprefix $(PDF)/,$(PDF_FILES)) (copied to $(SITE)/pdf/)"
 
 serve:
 	@test -f $(SITE)/index.html || { echo "!!! no site yet: run 'make book' first"; exit 1; }

@@ -1,7 +1,7 @@
 """The build is strict and never stale.
 
 Each test builds a one-page book in a temporary folder with the project's own
-Makefile, _config.yml and extensions, so it checks the very command `make book` runs.
+Makefile, _config.yml and extensions, so it checks the very command `make book` runs for the site.
 """
 
 from __future__ import annotations
@@ -33,7 +33,7 @@ kernelspec:
 
 
 def make_book(project: Path, page: str, *, env: dict[str, str] | None = None):
-    """Write `page` as the only page of a copy of the project and run `make book` on it."""
+    """Write `page` as the only page of a copy of the project and run `make html` on it."""
     for name in ("Makefile", "_config.yml", "requirements.txt", "pyproject.toml"):
         if not (project / name).exists():
             shutil.copy(ROOT / name, project / name)
@@ -44,7 +44,7 @@ def make_book(project: Path, page: str, *, env: dict[str, str] | None = None):
     (project / "book" / "intro.md").write_text(FRONT_MATTER + textwrap.dedent(page))
     return subprocess.run(
         # -o: use the project's installed venv as it is (never reinstall from the copy).
-        ["make", "--no-print-directory", "-o", f"{VENV}/.installed", "book", f"VENV={VENV}"],
+        ["make", "--no-print-directory", "-o", f"{VENV}/.installed", "html", f"VENV={VENV}"],
         cwd=project,
         capture_output=True,
         text=True,

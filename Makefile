@@ -25,6 +25,7 @@ help:
 	@echo "make pdf    build the PDF book, question sheet and answer key into $(PDF)"
 	@echo "make serve  serve the built site on http://localhost:$(PORT)"
 	@echo "make lint   ruff over the Python code"
+	@echo "make bench  time cold/no-op/one-edit builds, weigh every page, Lighthouse: BENCHMARKS.md"
 	@echo "make clean  remove the build (keeps .venv)"
 
 venv: $(VENV)/.installed
@@ -38,7 +39,16 @@ $(VENV)/.installed: requirements.txt pyproject.toml
 	$(BIN)/python -m ipykernel install --sys-prefix --name python3 --display-name "Python 3" >/dev/null
 	@touch $@
 
-html: venv
+# Node tools: MathJax renders the maths at build time; axe-core and Lighthouse test the site.
+# Debian's nodejs package carries no npm, hence the second package.
+node_modules/.package-lock.json: package.json package-lock.json
+	@scripts/ensure-debian-packages node nodejs npm
+	@scripts/ensure-debian-packages npm nodejs npm
+	@echo ">>> installing the node tools (npm ci)"
+	npm ci --no-audit --no-fund --loglevel=error
+	@touch $@
+
+html: venv node_modules/.package-lock.json
 	@echo ">>> building the HTML site (pages are executed; cached pages are reused)"
 	$(JB_BUILD)
 
@@ -48,7 +58,6 @@ book: html pdf
 
 test: venv
 	@scripts/ensure-debian-packages chromium chromium
-	@scripts/ensure-debian-packages node nodejs
 	@$(MAKE) --no-print-directory book
 	@echo ">>> running the test suite"
 	$(BIN)/python -m pytest
@@ -82,3 +91,10 @@ lint: venv
 
 clean:
 	rm -rf _build .pytest_cache .hypothesis
+
+# Build times (cold, no-op, one page edited, one figure function edited) on a copy of the
+# repository, every page's gzip bytes against a default Jupyter Book page, Lighthouse on
+# every page: written to BENCHMARKS.md. Needs chromium and node (npm ci for the tools).
+.PHONY: bench
+bench: venv node_modules/.package-lock.json
+	$(BIN)/python scripts/bench.py

@@ -37,14 +37,20 @@ def make_book(project: Path, page: str, *, env: dict[str, str] | None = None):
     for name in ("Makefile", "_config.yml", "requirements.txt", "pyproject.toml"):
         if not (project / name).exists():
             shutil.copy(ROOT / name, project / name)
-    for folder in ("book/_ext", "_static", "scripts"):
+    for folder in ("book/_ext", "book/_latex", "book/_templates", "_static", "scripts"):
         if (ROOT / folder).exists() and not (project / folder).exists():
             shutil.copytree(ROOT / folder, project / folder, ignore=shutil.ignore_patterns("__pycache__"))
+    for name in ("package.json", "package-lock.json"):
+        if not (project / name).exists():
+            shutil.copy(ROOT / name, project / name)
+    if not (project / "node_modules").exists():  # the project's installed node tools
+        (project / "node_modules").symlink_to(ROOT / "node_modules")
     (project / "_toc.yml").write_text("format: jb-book\nroot: book/intro\n")
     (project / "book" / "intro.md").write_text(FRONT_MATTER + textwrap.dedent(page))
     return subprocess.run(
         # -o: use the project's installed venv as it is (never reinstall from the copy).
-        ["make", "--no-print-directory", "-o", f"{VENV}/.installed", "html", f"VENV={VENV}"],
+        ["make", "--no-print-directory", "-o", f"{VENV}/.installed",
+         "-o", "node_modules/.package-lock.json", "html", f"VENV={VENV}"],
         cwd=project,
         capture_output=True,
         text=True,

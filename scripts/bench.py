@@ -1,0 +1,335 @@
+"""`make bench`: how fast the book builds and how light its pages are, in one run.
+
+1. Copies the repository to a temporary folder (edits never touch the work tree) and
+   times, with the Makefile's strict build command:
+   a cold full build, a no-op rebuild, a rebuild after editing the text of one page,
+   and a rebuild after editing one physics_figures function (reported as ratios to
+   the cold build, with the pages each rebuild executed).
+2. Builds a default one-page Jupyter Book 1 project in another temporary folder and
+   measures, in headless Chromium with gzip as a static host serves it, the bytes
+   its page transfers and the bytes of every page of our site (as ratios to it).
+3. Runs Lighthouse (mobile, offline against localhost) on every page of our site.
+4. Writes BENCHMARKS.md with the machine and the date.
+
+Usage: .venv/bin/python scripts/bench.py [--no-lighthouse]
+"""
+
+from __future__ import annotations
+
+import argparse
+import ast
+import asyncio
+import datetime
+import json
+import os
+import platform
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "tests"))
+
+from browser import (
+    CHROMIUM_ARGS,
+    PageVisitor,
+    chromium_path,
+    node_module,
+    open_browser_async,
+    serve_site,
+    site_pages,
+)
+
+VENV_BIN = ROOT / ".venv" / "bin"
+ENV = {
+    **os.environ,
+    "SOURCE_DATE_EPOCH": os.environ.get("SOURCE_DATE_EPOCH", "1767225600"),
+    "FORCE_SOURCE_DATE": "1",
+    "PYTHONHASHSEED": "0",
+}
+SKIP = {".venv", "_build", ".git", "node_modules", ".pytest_cache", ".hypothesis", ".ruff_cache", "__pycache__"}
+
+
+def build(project: Path, *, env: dict[str, str]) -> tuple[float, str]:
+    """Run the strict build in `project`; (seconds, log). Fails loudly on a build error."""
+    command = [str(VENV_BIN / "jupyter-book"), "build", ".", "-n", "-W", "--keep-going"]
+    start = time.perf_counter()
+    result = subprocess.run(command, cwd=project, env=env, capture_output=True, text=True, check=False)
+    seconds = time.perf_counter() - start
+    if result.returncode != 0:
+        raise SystemExit(f"build failed in {project}:\n{result.stdout[-3000:]}\n{result.stderr[-3000:]}")
+    return seconds, result.stdout + result.stderr
+
+
+def executed_pages(log: str) -> list[str]:
+    return sorted(set(re.findall(r"/(book/\S+?)\.(?:md|ipynb): Executing notebook", log)))
+
+
+def copy_project(target: Path) -> Path:
+    def ignore(folder, names):
+        return [name for name in names if name in SKIP]
+
+    shutil.copytree(ROOT, target, ignore=ignore, symlinks=True)
+    (target / "node_modules").symlink_to(ROOT / "node_modules")
+    return target
+
+
+def edit_text_of_a_page(project: Path) -> str:
+    """Add a sentence to an executed page (one with code cells), as an author would."""
+    pages = sorted(p for p in (project / "book").rglob("*.md") if "kernelspec:" in p.read_text())
+    page = pages[0]
+    page.write_text(page.read_text() + "\nThis sentence was added by the benchmark.\n")
+    return page.relative_to(project).as_posix()
+
+
+def edit_a_figure_function(project: Path) -> str:
+    """Change the docstring of one physics_figures function, as a maintainer would."""
+    for source in sorted((project / "physics_figures" / "figures").glob("[!_]*.py")):
+        tree = ast.parse(source.read_text())
+        for node in ast.walk(tree):
+            if isinstance(node, ast.FunctionDef) and ast.get_docstring(node):
+                lines = source.read_text().splitlines(keepends=True)
+                first = node.body[0].lineno - 1  # the docstring's first line
+                lines[first] = lines[first].replace('"""', '"""(benchmark edit) ', 1)
+                source.write_text("".join(lines))
+                return f"{source.relative_to(project).as_posix()} ({node.name})"
+    raise SystemExit("no documented function in physics_figures/figures to edit")
+
+
+DEFAULT_PAGE = """\
+# A default page
+
+Jupyter Book's defaults: this page has a paragraph, a formula $E = mc^2$ and a list.
+
+- one
+- two
+"""
+
+
+def default_book(folder: Path) -> Path:
+    """A default one-page Jupyter Book 1 project, built with Jupyter Book's defaults."""
+    folder.mkdir(parents=True)
+    (folder / "_config.yml").write_text("title: Default\nauthor: Benchmark\n")
+    (folder / "_toc.yml").write_text("format: jb-book\nroot: intro\n")
+    (folder / "intro.md").write_text(DEFAULT_PAGE)
+    result = subprocess.run(
+        [str(VENV_BIN / "jupyter-book"), "build", "."], cwd=folder, env=ENV, capture_output=True, text=True,
+        check=False,
+    )
+    if result.returncode != 0:
+        raise SystemExit(f"the default book failed to build:\n{result.stdout[-2000:]}")
+    return folder / "_build" / "html"
+
+
+async def page_bytes(site: Path, pages: list[str]) -> dict[str, dict]:
+    """Bytes (gzip) each page transfers in Chromium, with requests to other hosts blocked."""
+    results = {}
+    with serve_site(site) as base:
+        async with open_browser_async() as browser:
+            context = await browser.new_context(viewport={"width": 390, "height": 844})
+            await context.route(re.compile(r"^(?!http://127\.0\.0\.1:)"), lambda route: route.abort())
+            visitor = PageVisitor(await context.new_page())
+            for path in pages:
+                load = await visitor.visit(f"{base}/{path}", scroll=True)
+                results[path] = {
+                    "bytes": load.total_bytes,
+                    "requests": len(load.requests),
+                    "foreign": sorted(set(load.foreign)),
+                }
+            await context.close()
+    return results
+
+
+LIGHTHOUSE_RUNNER = """
+// Lighthouse over many URLs with one Chrome: node runner.mjs OUT URL...
+import fs from 'fs';
+import lighthouse from 'lighthouse';
+import * as chromeLauncher from 'chrome-launcher';
+const [out, ...urls] = process.argv.slice(2);
+const chrome = await chromeLauncher.launch({chromeFlags: JSON.parse(process.env.LH_FLAGS)});
+const scores = {};
+for (const url of urls) {
+  const result = await lighthouse(url, {port: chrome.port, output: 'json', logLevel: 'error',
+    onlyCategories: ['performance', 'accessibility', 'best-practices', 'seo']});
+  const lhr = result.lhr;
+  scores[url] = Object.fromEntries(Object.entries(lhr.categories).map(([k, v]) => [k, v.score]));
+  scores[url].fcp = lhr.audits['first-contentful-paint'].numericValue;
+  scores[url].lcp = lhr.audits['largest-contentful-paint'].numericValue;
+}
+await chrome.kill();
+fs.writeFileSync(out, JSON.stringify(scores));
+"""
+
+
+def lighthouse_scores(site: Path, pages: list[str]) -> dict[str, dict]:
+    node_module("lighthouse")
+    with serve_site(site) as base, tempfile.TemporaryDirectory() as folder:
+        runner = ROOT / "node_modules" / ".bench-lighthouse.mjs"  # beside lighthouse, to import it
+        runner.write_text(LIGHTHOUSE_RUNNER)
+        out = Path(folder) / "scores.json"
+        env = {**os.environ, "CHROME_PATH": chromium_path(), "LH_FLAGS": json.dumps(CHROMIUM_ARGS)}
+        try:
+            result = subprocess.run(
+                ["node", str(runner), str(out), *[f"{base}/{p}" for p in pages]],
+                env=env, capture_output=True, text=True, timeout=3600, check=False,
+            )
+        finally:
+            runner.unlink()
+        if result.returncode != 0:
+            raise SystemExit(f"lighthouse failed:\n{result.stderr[-3000:]}")
+        scores = json.loads(out.read_text())
+    return {url.split("/", 3)[3]: value for url, value in scores.items()}
+
+
+def machine() -> str:
+    cpu = "unknown CPU"
+    cpuinfo = Path("/proc/cpuinfo")
+    if cpuinfo.exists():
+        found = re.search(r"model name\s*:\s*(.+)", cpuinfo.read_text())
+        cpu = found[1].strip() if found else cpu
+    memory = ""
+    meminfo = Path("/proc/meminfo")
+    if meminfo.exists():
+        kb = int(re.search(r"MemTotal:\s+(\d+)", meminfo.read_text())[1])
+        memory = f", {kb / 1024**2:.0f} GiB RAM"
+    chromium = subprocess.run(
+        [chromium_path(), "--version"], capture_output=True, text=True, check=False
+    ).stdout.strip()
+    return f"{platform.platform()}, {os.cpu_count()} cores ({cpu}){memory}; Python {platform.python_version()}; {chromium}"
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--no-lighthouse", action="store_true", help="skip Lighthouse (faster)")
+    parser.add_argument("--output", default=str(ROOT / "BENCHMARKS.md"))
+    args = parser.parse_args()
+    node_module("axe-core")
+
+    with tempfile.TemporaryDirectory(prefix="bench-") as tmp:
+        tmp = Path(tmp)
+        project = copy_project(tmp / "book")
+        # The copy's physics_figures is the one the build and the kernels import.
+        env = {**ENV, "PYTHONPATH": str(project)}
+        timings = {}
+        print(">>> cold build (empty cache)", flush=True)
+        timings["cold"], log = build(project, env=env)
+        cold_executed = executed_pages(log)
+        print(">>> no-op rebuild", flush=True)
+        timings["noop"], log = build(project, env=env)
+        noop_executed = executed_pages(log)
+        edited_page = edit_text_of_a_page(project)
+        print(f">>> rebuild after editing {edited_page}", flush=True)
+        timings["page"], log = build(project, env=env)
+        page_executed = executed_pages(log)
+        edited_function = edit_a_figure_function(project)
+        print(f">>> rebuild after editing {edited_function}", flush=True)
+        timings["figure"], log = build(project, env=env)
+        figure_executed = executed_pages(log)
+        print(">>> seconds: " + ", ".join(f"{k} {v:.1f}" for k, v in timings.items()), flush=True)
+
+        site = project / "_build" / "html"
+        pages = site_pages(site)
+        print(">>> default Jupyter Book page", flush=True)
+        default_site = default_book(tmp / "default")
+        default = asyncio.run(page_bytes(default_site, ["intro.html"]))["intro.html"]
+        print(f">>> bytes of {len(pages)} pages", flush=True)
+        ours = asyncio.run(page_bytes(site, pages))
+        scores = {}
+        if not args.no_lighthouse:
+            print(f">>> lighthouse on {len(pages)} pages (mobile)", flush=True)
+            scores = lighthouse_scores(site, pages)
+
+    report = render(
+        timings=timings,
+        executed={"cold": cold_executed, "noop": noop_executed, "page": page_executed, "figure": figure_executed},
+        edited_page=edited_page,
+        edited_function=edited_function,
+        default=default,
+        ours=ours,
+        scores=scores,
+    )
+    Path(args.output).write_text(report)
+    print(report)
+
+
+def render(*, timings, executed, edited_page, edited_function, default, ours, scores) -> str:
+    cold = timings["cold"]
+    now = datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC")
+    rows = [
+        ("cold full build (empty cache, every page executed)", "cold", ""),
+        ("no-op rebuild (nothing changed)", "noop", "goal: < 0.10"),
+        (f"after editing the text of one page ({edited_page})", "page", "goal: only that page executes"),
+        (f"after editing one physics_figures function ({edited_function})", "figure", ""),
+    ]
+    lines = [
+        "# Benchmarks",
+        "",
+        f"Measured by `make bench` (scripts/bench.py) on {now}.",
+        "",
+        f"Machine: {machine()}.",
+        "",
+        "## Build times",
+        "",
+        "Strict build (`jupyter-book build . -n -W --keep-going`) of a copy of the repository.",
+        "",
+        "| build | seconds | ratio to cold | pages executed | note |",
+        "|---|---:|---:|---:|---|",
+    ]
+    for label, key, note in rows:
+        lines.append(
+            f"| {label} | {timings[key]:.1f} | {timings[key] / cold:.3f} | {len(executed[key])} | {note} |"
+        )
+    lines += [
+        "",
+        f"Pages executed after the one-page edit: {', '.join(executed['page']) or 'none'}.",
+        "",
+        "## Page weight",
+        "",
+        "Bytes each page transfers in headless Chromium (390 px wide, scrolled to the bottom so",
+        "every figure loads), served with gzip as a static host serves it; requests to other",
+        "hosts blocked (offline). The reference is a default one-page Jupyter Book 1 project",
+        "built in the same run (its CDN MathJax is blocked offline, so the reference is, if",
+        "anything, lighter than what a student online would download).",
+        "",
+        (f"Default Jupyter Book page: **{default['bytes']:,} bytes** in {default['requests']} requests; "
+         f"requests to other hosts: {', '.join(default['foreign']) or 'none'}."),
+        "",
+        ("| page | bytes (gzip) | ratio to default | requests | other hosts |"
+         + (" perf | a11y | best practices | SEO |" if scores else "")),
+        "|---|---:|---:|---:|---:|" + ("---:|---:|---:|---:|" if scores else ""),
+    ]
+    for page, data in sorted(ours.items(), key=lambda item: -item[1]["bytes"]):
+        row = (
+            f"| {page} | {data['bytes']:,} | {data['bytes'] / default['bytes']:.2f} | {data['requests']} | "
+            f"{len(data['foreign'])} |"
+        )
+        if scores:
+            s = scores.get(page, {})
+            row += "".join(
+                f" {round(100 * s[c]) if s.get(c) is not None else '?'} |"
+                for c in ("performance", "accessibility", "best-practices", "seo")
+            )
+        lines.append(row)
+    heaviest = max(data["bytes"] for data in ours.values())
+    lines += [
+        "",
+        (f"Heaviest page: {heaviest:,} bytes = {heaviest / default['bytes']:.2f} of the default page "
+         "(goal: at most 0.50)."),
+    ]
+    if scores:
+        worst = {c: min(s[c] for s in scores.values()) for c in ("performance", "accessibility", "best-practices", "seo")}
+        lines.append(
+            "Lighthouse (mobile, simulated slow 4G, offline against localhost), lowest over all pages: "
+            + ", ".join(f"{c} {round(100 * v)}" for c, v in worst.items())
+            + " (goal: performance >= 95, the others 100)."
+        )
+    lines.append("")
+    return "\n".join(lines)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,285 @@
+"""Shared helpers for browser tests: serve a built site and open it in headless Chromium.
+
+The site is served the way a static host serves it: on a local port, with gzip for
+text files, so the bytes Chromium reports are the bytes a student downloads.
+Chromium is Debian's (/usr/bin/chromium), driven by Python playwright, which never
+downloads a browser of its own.
+
+    with serve_site(site_dir) as base_url, open_browser() as browser:
+        page = browser.new_page()
+        page.goto(base_url + "/book/intro.html")
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import gzip
+import http.server
+import io
+import shutil
+import threading
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from functools import cache, lru_cache
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+CHROMIUM = "/usr/bin/chromium"
+NODE_MODULES = ROOT / "node_modules"
+CHROMIUM_ARGS = [
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-quic",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+]
+# The widths the site is checked at: a laptop and a phone.
+VIEWPORTS = {"desktop": {"width": 1280, "height": 800}, "mobile": {"width": 390, "height": 844}}
+COMPRESSIBLE = {".html", ".css", ".js", ".svg", ".json", ".txt", ".xml", ".map", ".inv", ".md"}
+
+
+def require_tool(path: Path, fix: str) -> Path:
+    """`path`, or an error that names the command that installs it (never a skip)."""
+    if not path.exists():
+        raise RuntimeError(f"{path} is missing: {fix}")
+    return path
+
+
+def chromium_path() -> str:
+    return str(require_tool(Path(CHROMIUM), "install Debian's chromium: apt-get install chromium"))
+
+
+def node_module(name: str) -> Path:
+    """The installed npm package `name` (package.json at the repository root pins it)."""
+    return require_tool(NODE_MODULES / name, f"run `npm ci` in {ROOT} to install {name}")
+
+
+@cache
+def _gzipped(path: Path, mtime_ns: int) -> bytes:
+    return gzip.compress(path.read_bytes(), compresslevel=6, mtime=0)
+
+
+class _StaticHandler(http.server.SimpleHTTPRequestHandler):
+    """A quiet static host that gzips text files when the browser accepts gzip."""
+
+    protocol_version = "HTTP/1.1"  # keep-alive, as a real host: one connection, many files
+
+    def log_message(self, format, *args):
+        pass
+
+    def end_headers(self):
+        self.send_header("Cache-Control", "no-cache")
+        super().end_headers()
+
+    def send_head(self):
+        path = Path(self.translate_path(self.path))
+        if path.is_dir():
+            path = path / "index.html"
+        accepts_gzip = "gzip" in self.headers.get("Accept-Encoding", "")
+        if not (accepts_gzip and path.suffix in COMPRESSIBLE and path.is_file()):
+            return super().send_head()
+        body = _gzipped(path, path.stat().st_mtime_ns)
+        self.send_response(200)
+        self.send_header("Content-Type", self.guess_type(str(path)))
+        self.send_header("Content-Encoding", "gzip")
+        self.send_header("Content-Length", str(len(body)))
+        self.send_header("Vary", "Accept-Encoding")
+        self.end_headers()
+        return io.BytesIO(body)
+
+    def copyfile(self, source, outputfile):
+        shutil.copyfileobj(source, outputfile)
+
+
+@contextlib.contextmanager
+def serve_site(site: Path) -> Iterator[str]:
+    """Serve `site` on a free local port in a thread; yield its base URL."""
+
+    def handler(*args, **kwargs):
+        return _StaticHandler(*args, directory=str(site), **kwargs)
+
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    server.daemon_threads = True
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    try:
+        yield f"http://127.0.0.1:{server.server_address[1]}"
+    finally:
+        server.shutdown()
+        server.server_close()
+
+
+@contextlib.contextmanager
+def open_browser():
+    """Headless Debian Chromium driven by playwright (sync API)."""
+    from playwright.sync_api import sync_playwright
+
+    executable = chromium_path()
+    with sync_playwright() as playwright:
+        browser = playwright.chromium.launch(executable_path=executable, args=CHROMIUM_ARGS)
+        try:
+            yield browser
+        finally:
+            browser.close()
+
+
+def site_pages(site: Path) -> list[str]:
+    """Every content page of the built site, as paths relative to its root."""
+    skip = {"genindex.html", "search.html"}
+    return sorted(
+        p.relative_to(site).as_posix()
+        for p in site.rglob("*.html")
+        if p.name not in skip
+        and not {"_static", "_sources", "_images"} & set(p.parts)
+        and 'http-equiv="Refresh"' not in p.read_text()[:500]  # the root redirect
+    )
+
+
+@dataclass
+class PageLoad:
+    """What loading one page cost and what went wrong while loading it."""
+
+    url: str
+    requests: list[str] = field(default_factory=list)
+    transferred: dict[str, int] = field(default_factory=dict)  # url -> gzip body bytes
+    failed: list[str] = field(default_factory=list)
+    foreign: list[str] = field(default_factory=list)  # requests to another host
+    console_errors: list[str] = field(default_factory=list)
+
+    @property
+    def total_bytes(self) -> int:
+        return sum(self.transferred.values())
+
+
+def load_page(context, url: str, *, scroll: bool = True, measure: bool = True) -> tuple[object, PageLoad]:
+    """Open `url` in a new page of `context`; record requests, failures and console errors.
+
+    With `scroll`, the page is scrolled to the bottom so lazily loaded figures count too.
+    With `measure`, each response's transferred size is recorded (slower).
+    """
+    origin = url.split("/", 3)[:3]
+    record = PageLoad(url)
+    page = context.new_page()
+
+    def on_request(request):
+        record.requests.append(request.url)
+        if request.url.split("/", 3)[:3] != origin and not request.url.startswith("data:"):
+            record.foreign.append(request.url)
+
+    def on_finished(request):
+        response = request.response()
+        if response is None:
+            return
+        if response.status >= 400:
+            record.failed.append(f"{request.url} (HTTP {response.status})")
+        if request.url.startswith("data:") or not measure:
+            return
+        sizes = request.sizes()
+        record.transferred[request.url] = sizes["responseBodySize"] + sizes["responseHeadersSize"]
+
+    page.on("request", on_request)
+    page.on("requestfinished", on_finished)
+    page.on("requestfailed", lambda r: record.failed.append(f"{r.url} ({r.failure})"))
+    page.on("console", lambda m: m.type == "error" and record.console_errors.append(m.text))
+    page.on("pageerror", lambda e: record.console_errors.append(str(e)))
+    page.goto(url, wait_until="load")
+    if scroll:
+        page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
+        page.wait_for_load_state("networkidle")
+    return page, record
+
+
+def axe_violations(page, *, rules: list[str] | None = None) -> list[dict]:
+    """Run axe-core in `page` (every rule, or only `rules`; every impact); its violations."""
+    page.add_script_tag(content=_axe_source())
+    return page.evaluate(AXE_RUN, rules)
+
+
+AXE_RUN = """async (rules) => {
+    const options = {resultTypes: ['violations']};
+    if (rules) options.runOnly = {type: 'rule', values: rules};
+    const result = await axe.run(document, options);
+    return result.violations.map(v => ({
+        id: v.id, impact: v.impact, help: v.help,
+        targets: v.nodes.slice(0, 5).map(n => n.target.join(' ') + ' :: ' + n.failureSummary),
+    }));
+}"""
+
+
+@lru_cache(maxsize=1)
+def _axe_source() -> str:
+    return (node_module("axe-core") / "axe.min.js").read_text()
+
+
+# ---------------------------------------------------------------- async (for sweeps)
+
+
+@contextlib.asynccontextmanager
+async def open_browser_async():
+    """Headless Debian Chromium driven by playwright (async API: pages in parallel)."""
+    from playwright.async_api import async_playwright
+
+    executable = chromium_path()
+    async with async_playwright() as playwright:
+        browser = await playwright.chromium.launch(executable_path=executable, args=CHROMIUM_ARGS)
+        try:
+            yield browser
+        finally:
+            await browser.close()
+
+
+class PageVisitor:
+    """One browser tab that visits page after page, recording each visit as a PageLoad.
+
+    Reusing a tab is several times faster than opening one per page (async API).
+    With `measure`, each response's transferred size is recorded (slower).
+    """
+
+    def __init__(self, page, *, measure: bool = True):
+        self.page = page
+        self.measure = measure
+        self.record = PageLoad("")
+        self._pending: list = []
+        page.on("request", self._on_request)
+        page.on("requestfinished", lambda r: self._pending.append(asyncio.ensure_future(self._on_finished(r))))
+        page.on("requestfailed", lambda r: self.record.failed.append(f"{r.url} ({r.failure})"))
+        page.on("console", lambda m: m.type == "error" and self.record.console_errors.append(m.text))
+        page.on("pageerror", lambda e: self.record.console_errors.append(str(e)))
+
+    def _on_request(self, request):
+        record = self.record
+        record.requests.append(request.url)
+        if request.url.split("/", 3)[:3] != record.url.split("/", 3)[:3] and not request.url.startswith("data:"):
+            record.foreign.append(request.url)
+
+    async def _on_finished(self, request):
+        record = self.record
+        response = await request.response()
+        if response is None:
+            return
+        if response.status >= 400:
+            record.failed.append(f"{request.url} (HTTP {response.status})")
+        if self.measure and not request.url.startswith("data:"):
+            sizes = await request.sizes()
+            record.transferred[request.url] = sizes["responseBodySize"] + sizes["responseHeadersSize"]
+
+    async def visit(self, url: str, *, scroll: bool = False) -> PageLoad:
+        """Load `url`; with `scroll`, scroll to the bottom so lazy content loads and counts."""
+        self.record = PageLoad(url)
+        await self.page.goto(url, wait_until="load")
+        if scroll:
+            await self.page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
+            await self.page.wait_for_load_state("networkidle")
+        await asyncio.gather(*self._pending)
+        self._pending.clear()
+        return self.record
+
+
+async def axe_violations_async(page, *, rules: list[str] | None = None) -> list[dict]:
+    """As axe_violations, with the async API."""
+    await page.add_script_tag(content=_axe_source())
+    return await page.evaluate(AXE_RUN, rules)

@@ -193,16 +193,18 @@ def load_page(context, url: str, *, scroll: bool = True, measure: bool = True) -
     return page, record
 
 
-def axe_violations(page, *, rules: list[str] | None = None) -> list[dict]:
-    """Run axe-core in `page` (every rule, or only `rules`; every impact); its violations."""
+def axe_violations(page, *, rules: list[str] | None = None,
+                   context_selector: str | None = None) -> list[dict]:
+    """Run axe-core in `page` (every rule, or only `rules`; every impact) over the whole
+    document or only the elements matching `context_selector`; its violations."""
     page.add_script_tag(content=_axe_source())
-    return page.evaluate(AXE_RUN, rules)
+    return page.evaluate(AXE_RUN, [rules, context_selector])
 
 
-AXE_RUN = """async (rules) => {
+AXE_RUN = """async ([rules, selector]) => {
     const options = {resultTypes: ['violations']};
     if (rules) options.runOnly = {type: 'rule', values: rules};
-    const result = await axe.run(document, options);
+    const result = await axe.run(selector ? {include: [selector]} : document, options);
     return result.violations.map(v => ({
         id: v.id, impact: v.impact, help: v.help,
         targets: v.nodes.slice(0, 5).map(n => n.target.join(' ') + ' :: ' + n.failureSummary),
@@ -282,4 +284,4 @@ class PageVisitor:
 async def axe_violations_async(page, *, rules: list[str] | None = None) -> list[dict]:
     """As axe_violations, with the async API."""
     await page.add_script_tag(content=_axe_source())
-    return await page.evaluate(AXE_RUN, rules)
+    return await page.evaluate(AXE_RUN, [rules, None])

@@ -2,8 +2,8 @@
 
 Expected strings are copied from the notes (../shared/notes/000_e3ec34309135aedb.txt);
 the numbers come from physics_figures.answers (checked against the notes in
-test_answers.py). Maths is compared in its TeX form, as $...$ in the notes becomes
-\\(...\\) in the HTML that MathJax reads.
+test_answers.py). Maths is compared in its TeX form: $...$ in the notes becomes
+\\(...\\), read from the data-tex attribute the site keeps beside each rendered formula.
 """
 
 # ruff: noqa: RUF001  (expected text keeps the notes' typography: en dashes, times signs)
@@ -38,6 +38,11 @@ class _ArticleText(HTMLParser):
             self._article_depth += 1
         if self._skip_depth or tag in self.SKIPPED or "headerlink" in (attrs.get("class") or ""):
             self._skip_depth += 1
+        elif "data-tex" in attrs:  # maths rendered to SVG: read its TeX source instead
+            if self._article_depth:
+                inline = tag == "span"
+                self.parts.append(rf"\({attrs['data-tex']}\)" if inline else rf" \[{attrs['data-tex']}\] ")
+            self._skip_depth += 1
 
     def handle_endtag(self, tag):
         if self._skip_depth:
@@ -66,6 +71,14 @@ def page_html(site_dir: Path, page: str) -> str:
 def page_text(site_dir: Path, page: str) -> str:
     parser = _ArticleText()
     parser.feed(page_html(site_dir, page))
+    return normalise("".join(parser.parts))
+
+
+def fragment_text(html: str) -> str:
+    """Text of an HTML fragment (a list item, a table cell), maths as TeX."""
+    parser = _ArticleText()
+    parser._article_depth = 1  # a fragment is read whole
+    parser.feed(html)
     return normalise("".join(parser.parts))
 
 
@@ -105,7 +118,7 @@ LEARNING_OUTCOMES = [
 def test_intro_lists_the_thirteen_learning_outcomes_in_order(site_dir):
     html = page_html(site_dir, "book/intro")
     items = re.search(r"<ol[^>]*>(.*?)</ol>", html, re.DOTALL).group(1)
-    shown = [normalise(re.sub(r"<[^>]+>", "", item))
+    shown = [fragment_text(item)
              for item in re.findall(r"<li>(.*?)</li>", items, re.DOTALL)]
     assert shown == [normalise(outcome) for outcome in LEARNING_OUTCOMES]
 
@@ -297,7 +310,7 @@ KEY_FACTS = [
 def table_rows(html: str, table_id: str) -> list[list[str]]:
     table = re.search(rf'<table[^>]*id="{table_id}".*?</table>', html, re.DOTALL).group(0)
     body = table.split("<tbody>", 1)[1]
-    return [[normalise(re.sub(r"<[^>]+>", "", cell)) for cell in
+    return [[fragment_text(cell) for cell in
              re.findall(r"<td>(.*?)</td>", row, re.DOTALL)]
             for row in re.findall(r"<tr[^>]*>(.*?)</tr>", body, re.DOTALL)]
 

@@ -126,7 +126,9 @@ def visit_math(self, node: nodes.math) -> None:
         self.body[-1] = before
     if word:
         self.body.append(f'<span class="math-with-word">{word}')
-    self.body.append(self.starttag(node, "span", "", CLASS="math notranslate nohighlight"))
+    # data-tex keeps the source: for copying, and for tests that read the page's text.
+    self.body.append(self.starttag(node, "span", "", CLASS="math notranslate nohighlight",
+                                   **{"data-tex": tex}))
     self.body.append(_math_markup(self, node, tex, display=False) + "</span>")
     if word:
         self.body.append("</span>")
@@ -134,7 +136,8 @@ def visit_math(self, node: nodes.math) -> None:
 
 
 def visit_displaymath(self, node: nodes.math_block) -> None:
-    self.body.append(self.starttag(node, "div", CLASS="math notranslate nohighlight"))
+    self.body.append(self.starttag(node, "div", CLASS="math notranslate nohighlight",
+                                   **{"data-tex": node.astext()}))
     if node["number"] and not node["nowrap"]:
         self.body.append(f'<span class="eqno">({get_node_equation_number(self, node)})')
         self.add_permalink_ref(node, _("Link to this equation"))

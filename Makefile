@@ -59,7 +59,8 @@ book: html pdf
 test: venv
 	@scripts/ensure-debian-packages chromium chromium
 	@$(MAKE) --no-print-directory book
-	@echo ">>> running the test suite"
+	@echo ">>> linting, then running the test suite"
+	$(BIN)/ruff check $(LINTED)
 	$(BIN)/python -m pytest
 
 # The teachers' PDFs: the book, a question sheet and an answer key. One LaTeX build
@@ -86,8 +87,9 @@ serve:
 	@echo ">>> serving $(SITE) on http://localhost:$(PORT) (Ctrl-C to stop)"
 	$(PYTHON) -m http.server $(PORT) --bind 127.0.0.1 --directory $(SITE)
 
+LINTED := physics_figures tests book/_ext book/_latex scripts
 lint: venv
-	$(BIN)/ruff check physics_figures tests book/_ext
+	$(BIN)/ruff check $(LINTED)
 
 clean:
 	rm -rf _build .pytest_cache .hypothesis

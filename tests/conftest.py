@@ -1,8 +1,7 @@
 """Shared fixtures. `make test` builds the site into _build/html before pytest runs."""
 
-from pathlib import Path
-
 import os
+from pathlib import Path
 
 import matplotlib
 import pytest

@@ -7,6 +7,7 @@ on with it, the test does the same and says so.
 """
 
 import pytest
+from rounding import assert_rounds_to
 
 from physics_figures.constants import G_EARTH, G_MOON
 from physics_figures.models import (
@@ -38,15 +39,6 @@ from physics_figures.models import (
     velocity_from_momentum,
     weight,
 )
-
-
-def assert_rounds_to(value, printed, sig_figs):
-    """value rounded to sig_figs significant figures is the number the notes print."""
-    printed_text = f"{printed:.{sig_figs - 1}e}"
-    assert float(printed_text) == printed, f"{printed} has more than {sig_figs} s.f."
-    shown = f"{float(value):.{sig_figs - 1}e}"
-    assert shown == printed_text, (
-        f"{value!r} rounds to {shown} at {sig_figs} s.f., but the notes print {printed}")
 
 
 def test_assert_rounds_to_is_exact_at_the_printed_precision():

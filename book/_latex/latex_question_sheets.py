@@ -27,6 +27,7 @@ from pathlib import Path
 from docutils import nodes
 from docutils.frontend import OptionParser
 from docutils.utils import new_document
+from latex_print import _latex_escape, _raw_latex  # same folder (book/_latex)
 from sphinx.application import Sphinx
 from sphinx.util import logging
 from sphinx.util.docutils import SphinxFileOutput
@@ -46,17 +47,6 @@ class Printed:
 
     questions: list[tuple[str, nodes.container]] = field(default_factory=list)  # (docname, q)
     keys: list[nodes.container] = field(default_factory=list)
-
-
-def _raw_latex(text: str) -> nodes.raw:
-    return nodes.raw("", text + "\n", format="latex")
-
-
-def _latex_escape(text: str) -> str:
-    replacements = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#",
-                    "_": r"\_", "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}",
-                    "^": r"\textasciicircum{}"}
-    return "".join(replacements.get(char, char) for char in text)
 
 
 def _has_class(node: nodes.Node, name: str) -> bool:

@@ -178,7 +178,13 @@ def terminal_velocity() -> Answers:
     jump = scenarios.SKYDIVER
     # At terminal velocity the drag k v_t^2 has grown to equal the weight.
     drag = drag_force(jump.drag_constant_freefall, jump.terminal_velocity_freefall)
-    return {"skydiver_drag_at_terminal": Value(drag, unit="N", sig_figs=3)}
+    # The model opens the parachute instantly: at 50 m/s its drag is (v_t1 / v_t2)^2 weights.
+    opening_drag = drag_force(jump.drag_constant_parachute, jump.terminal_velocity_freefall)
+    opening_drag_in_weights = opening_drag / jump.weight
+    return {
+        "skydiver_drag_at_terminal": Value(drag, unit="N", sig_figs=3),
+        "skydiver_opening_drag_in_weights": Value(opening_drag_in_weights, unit="", sig_figs=3),
+    }
 
 
 def conservation_of_momentum() -> Answers:

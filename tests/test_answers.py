@@ -37,6 +37,8 @@ PRINTED_IN_NOTES = {
     },
     "terminal_velocity": {
         "skydiver_drag_at_terminal": ("785", "Understand it > Friction, drag: C, 80 x 9.81"),
+        # Added note on the model: the notes' terminal velocities give (50 / 5.0)^2 = 100.
+        "skydiver_opening_drag_in_weights": ("100", "Understand it > Friction, drag: D, (50/5.0)²"),
     },
     "conservation_of_momentum": {
         "trolleys_common_velocity": ("3.0", "Understand it > Conservation: 3.0 x 4.0 = 4.0v"),

@@ -17,11 +17,12 @@ export PYTHONHASHSEED := 0
 # Strict: any warning, broken reference or cell error fails the build.
 JB_BUILD := $(BIN)/jupyter-book build . -n -W --keep-going
 
-.PHONY: help venv html book test serve clean lint
+.PHONY: help venv html book test check serve clean lint
 
 help:
 	@echo "make book   build the site into $(SITE), with its PDFs (make html: HTML only)"
-	@echo "make test   build the site, then run the whole test suite"
+	@echo "make test   build the site, then run the whole test suite (what CI runs)"
+	@echo "make check  ruff + the tests that need no build or browser (under a minute)"
 	@echo "make pdf    build the PDF book, question sheet and answer key into $(PDF)"
 	@echo "make serve  serve the built site on http://localhost:$(PORT)"
 	@echo "make lint   ruff over the Python code"
@@ -42,8 +43,7 @@ $(VENV)/.installed: requirements.txt pyproject.toml
 # Node tools: MathJax renders the maths at build time; axe-core and Lighthouse test the site.
 # Debian's nodejs package carries no npm, hence the second package.
 node_modules/.package-lock.json: package.json package-lock.json
-	@scripts/ensure-debian-packages node nodejs npm
-	@scripts/ensure-debian-packages npm nodejs npm
+	@scripts/ensure-debian-packages html
 	@echo ">>> installing the node tools (npm ci)"
 	npm ci --no-audit --no-fund --loglevel=error
 	@touch $@
@@ -57,11 +57,18 @@ book: html pdf
 	@echo ">>> done: open $(CURDIR)/$(SITE)/index.html  (or run: make serve)"
 
 test: venv
-	@scripts/ensure-debian-packages chromium chromium
+	@scripts/ensure-debian-packages test
 	@$(MAKE) --no-print-directory book
 	@echo ">>> linting, then running the test suite"
 	$(BIN)/ruff check $(LINTED)
 	$(BIN)/python -m pytest
+
+# The fast loop: ruff and every test that needs no build and no browser (models, marking
+# rules, questions, notation), with the question variants sampled. Under a minute.
+.PHONY: check
+check: venv node_modules/.package-lock.json
+	$(BIN)/ruff check $(LINTED)
+	CHECK_FAST=1 $(BIN)/python -m pytest -m "not site and not browser and not build" -q
 
 # The teachers' PDFs: the book, a question sheet and an answer key. One LaTeX build
 # writes all three .tex files (book/_latex/); xelatex typesets them. Needs TeX Live
@@ -69,13 +76,10 @@ test: venv
 # site too, so the intro page's download links work.
 PDF := _build/latex
 PDF_FILES := dynamics.pdf dynamics-questions.pdf dynamics-answers.pdf
-TEX_PACKAGES := texlive-xetex texlive-latex-extra texlive-fonts-recommended fonts-freefont-otf latexmk
 
 .PHONY: pdf
 pdf: venv
-	@scripts/ensure-debian-packages xelatex $(TEX_PACKAGES)
-	@scripts/ensure-debian-packages latexmk $(TEX_PACKAGES)
-	@scripts/ensure-debian-packages /usr/share/fonts/opentype/freefont/FreeSerif.otf fonts-freefont-otf
+	@scripts/ensure-debian-packages pdf
 	@echo ">>> building the PDFs with xelatex (pages are executed; cached pages are reused)"
 	$(JB_BUILD) --builder pdflatex
 	@mkdir -p $(SITE)/pdf

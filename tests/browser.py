@@ -50,7 +50,10 @@ def require_tool(path: Path, fix: str) -> Path:
 
 
 def chromium_path() -> str:
-    return str(require_tool(Path(CHROMIUM), "install Debian's chromium: apt-get install chromium"))
+    from conftest import require_marker  # a browser test must say so, for `make check`
+
+    require_marker("browser")
+    return str(require_tool(Path(CHROMIUM), "run `scripts/ensure-debian-packages test` (as root), or apt-get install chromium"))
 
 
 def node_module(name: str) -> Path:

@@ -5,8 +5,51 @@ from pathlib import Path
 
 import matplotlib
 import pytest
+from hypothesis import settings
 
 matplotlib.use("Agg")
+
+# One profile for every Hypothesis test: no deadline (a loaded CI machine is slow, and a
+# timing failure says nothing about the physics), and the same examples on every CI run.
+settings.register_profile("book", deadline=None, derandomize=bool(os.environ.get("CI")))
+settings.load_profile("book")
+
+#: `make check` sets CHECK_FAST=1: tests that loop over many variants take a sample.
+CHECK_FAST = bool(os.environ.get("CHECK_FAST"))
+
+#: What a test needs beyond Python: `make check` leaves these out, `make test` runs them.
+NEEDS = {
+    "site": "the built site or PDFs (make book)",
+    "browser": "Chromium (scripts/ensure-debian-packages test)",
+    "build": "its own Sphinx builds (slow)",
+}
+_current_test = None
+
+
+def pytest_configure(config):
+    for marker, needs in NEEDS.items():
+        config.addinivalue_line("markers", f"{marker}: needs {needs}; left out of `make check`")
+
+
+def pytest_runtest_setup(item):
+    if "site_dir" in getattr(item, "fixturenames", ()) and item.get_closest_marker("site") is None:
+        pytest.fail(f"{item.nodeid} uses the built site: mark it @pytest.mark.site")
+
+
+@pytest.fixture(autouse=True)
+def _remember_test(request):
+    """Lets require_marker see which test is running (browser.py has no request)."""
+    global _current_test
+    _current_test = request.node
+    yield
+    _current_test = None
+
+
+def require_marker(marker: str) -> None:
+    """Fail a test that uses what `marker` stands for without carrying the marker, so the
+    split between `make check` and `make test` cannot drift."""
+    if _current_test is not None and _current_test.get_closest_marker(marker) is None:
+        pytest.fail(f"{_current_test.nodeid} needs {NEEDS[marker]}: mark it @pytest.mark.{marker}")
 
 ROOT = Path(__file__).resolve().parents[1]
 # SITE_DIR lets a test run point at a site built elsewhere (e.g. --path-output builds).

@@ -97,6 +97,8 @@ PROBE_PAGE = """\
 
 ```{code-cell} ipython3
 import time, physics_figures
+
+pytestmark = [pytest.mark.build]
 print("value:", physics_figures.VALUE, "executed at:", time.time_ns())
 ```
 """

@@ -16,6 +16,8 @@ import pytest
 
 from physics_figures import answers
 
+pytestmark = [pytest.mark.site]
+
 ROOT = Path(__file__).resolve().parents[1]
 
 

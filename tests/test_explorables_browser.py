@@ -19,6 +19,8 @@ from playwright.sync_api import Page, expect, sync_playwright
 from physics_figures import models, scenarios
 from physics_figures.explorables import EXPLORABLES, REFUSALS, collision_lab
 
+pytestmark = [pytest.mark.site, pytest.mark.browser]
+
 CHROMIUM = "/usr/bin/chromium"
 CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
                  "--disable-background-networking", "--disable-component-update", "--disable-sync"]

@@ -3,8 +3,12 @@ referred to from the text (needs the built site: `make test` builds it first).""
 
 import re
 
+import pytest
+
 from physics_figures import scenarios
 from physics_figures.figures import book
+
+pytestmark = [pytest.mark.site]
 
 FIGURE = re.compile(
     r'<figure class="physics-figure[^"]*" id="(?P<name>[^"]+)">\s*'

@@ -24,6 +24,8 @@ import yaml
 from physics_figures import answers
 from physics_figures.questions import all_questions, unit_text
 
+pytestmark = [pytest.mark.site]
+
 ROOT = Path(__file__).resolve().parents[1]
 PDF_DIR = Path(os.environ.get("PDF_DIR", ROOT / "_build" / "latex"))
 BOOK, SHEET, KEY = "dynamics.pdf", "dynamics-questions.pdf", "dynamics-answers.pdf"

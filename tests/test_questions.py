@@ -185,6 +185,7 @@ def _build(source: Path, builder: str) -> subprocess.CompletedProcess:
     )
 
 
+@pytest.mark.build
 def test_html_question_has_labelled_boxes_status_feedback_and_a_hidden_worked_answer(tmp_path):
     source = _sphinx_project(tmp_path, QUICK_CHECK_1)
     result = _build(source, "html")
@@ -204,6 +205,7 @@ def test_html_question_has_labelled_boxes_status_feedback_and_a_hidden_worked_an
     assert "questions.js" not in plain and "questions.css" not in plain
 
 
+@pytest.mark.build
 def test_print_builds_show_the_question_with_answer_lines_and_the_key(tmp_path):
     source = _sphinx_project(tmp_path, QUICK_CHECK_1)
     result = _build(source, "text")
@@ -217,6 +219,7 @@ def test_print_builds_show_the_question_with_answer_lines_and_the_key(tmp_path):
     assert "= 7.5 m s^{-1} **A1**" in key  # the mark scheme line, with its mark
 
 
+@pytest.mark.build
 def test_latex_build_prints_the_question_and_its_key(tmp_path):
     source = _sphinx_project(tmp_path, QUICK_CHECK_1)
     result = _build(source, "latex")
@@ -226,6 +229,7 @@ def test_latex_build_prints_the_question_and_its_key(tmp_path):
     assert "Answer key" in tex and r"\sphinxstylestrong{M1}" in tex
 
 
+@pytest.mark.build
 def test_text_that_disagrees_with_the_data_fails_the_strict_build(tmp_path):
     source = _sphinx_project(tmp_path, QUICK_CHECK_1.replace("5.0 N", "6.0 N"))
     result = _build(source, "html")
@@ -233,6 +237,7 @@ def test_text_that_disagrees_with_the_data_fails_the_strict_build(tmp_path):
     assert "quick-check-1: the text does not state force = 5.0 N" in result.stderr
 
 
+@pytest.mark.build
 def test_an_answer_that_cannot_be_loaded_is_an_error(tmp_path):
     source = _sphinx_project(tmp_path, QUICK_CHECK_1.replace("quick_check_1", "quick_check_99"))
     result = _build(source, "html")
@@ -254,6 +259,7 @@ def test_the_books_question_pages_name_real_questions_whose_givens_they_state():
     assert sorted(asked) == sorted(question.key for question in ALL)  # each asked once, none left out
 
 
+@pytest.mark.build
 def test_an_edit_to_the_question_module_re_reads_the_page(tmp_path):
     """The directive notes the answer's source files as dependencies, so an incremental
     build re-reads the page (here the new data no longer matches the text, so it warns)."""

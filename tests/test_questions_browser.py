@@ -11,6 +11,8 @@ from __future__ import annotations
 import pytest
 from browser import VIEWPORTS, axe_violations, open_browser, serve_site
 
+pytestmark = [pytest.mark.site, pytest.mark.browser]
+
 PAGE = "/book/exam/quick-check.html"
 
 

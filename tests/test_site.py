@@ -36,6 +36,8 @@ from browser import (
     site_pages,
 )
 
+pytestmark = [pytest.mark.site, pytest.mark.browser]
+
 # Half of what a default Jupyter Book 1 page transfers with gzip: 0.96 MB with its CDN
 # MathJax (DESIGN.md), 0.87 MB offline (`make bench` measures it in each run). The
 # stricter (offline) half is the budget for every page, figures and widgets included.

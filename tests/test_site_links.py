@@ -14,6 +14,8 @@ from urllib.parse import unquote, urljoin, urlsplit
 
 import pytest
 
+pytestmark = [pytest.mark.site]
+
 BASE = "http://site.invalid/"  # a stand-in origin to resolve relative links against
 
 

@@ -1,0 +1,77 @@
+/* How the book writes a number, in the browser: the twin of physics_figures/notation.py.
+ * tests/notation_cases.json is run against both (tests/js/notation.test.js and
+ * tests/test_notation.py), so a read-out, a feedback message and a figure label agree.
+ * Rounding is half away from zero on the shortest decimal form of the number (as Python's
+ * repr and JavaScript's String both give it): 0.125 -> 0.13, 2.85 -> 2.9. */
+(function (root) {
+  "use strict";
+  var MINUS = "\u2212", GROUP = "\u202f", TIMES = "\u00d7";
+  var SUPERSCRIPTS = { "-": "\u207b", 0: "\u2070", 1: "\u00b9", 2: "\u00b2", 3: "\u00b3", 4: "\u2074",
+    5: "\u2075", 6: "\u2076", 7: "\u2077", 8: "\u2078", 9: "\u2079" };
+
+  function zeros(n) { return n > 0 ? new Array(n + 1).join("0") : ""; }
+
+  /* |x| as {digits, point}: x = 0.digits × 10^point, first digit not 0 (null for 0). */
+  function decimalDigits(size) {
+    var m = /^(\d+)(?:\.(\d+))?(?:e([+-]\d+))?$/.exec(String(size));
+    var digits = m[1] + (m[2] || ""), point = m[1].length + (m[3] ? parseInt(m[3], 10) : 0);
+    var lead = /^0*/.exec(digits)[0].length;
+    digits = digits.slice(lead).replace(/0+$/, "");
+    return digits ? { digits: digits, point: point - lead } : null;
+  }
+
+  /* Keep `keep` digits, rounding half away from zero (on the size). */
+  function roundDigits(d, keep) {
+    if (keep < 0 || (keep === 0 && d.digits[0] < "5")) return null;
+    if (keep === 0) return { digits: "1", point: d.point + 1 }; // 0.06 to 1 place -> 0.1
+    if (d.digits.length <= keep) return { digits: d.digits + zeros(keep - d.digits.length), point: d.point };
+    var kept = d.digits.slice(0, keep), point = d.point;
+    if (d.digits[keep] >= "5") {
+      var out = kept.split(""), i = out.length - 1;
+      while (i >= 0 && out[i] === "9") { out[i] = "0"; i -= 1; }
+      if (i >= 0) out[i] = String(Number(out[i]) + 1);
+      else { out.unshift("1"); point += 1; }
+      kept = out.join("");
+      if (kept.length > keep) kept = kept.slice(0, keep); // 9.99 -> 10.0: one more place before the point
+    }
+    return { digits: kept, point: point };
+  }
+
+  function group(whole) {
+    return whole.length < 5 ? whole : whole.replace(/\B(?=(\d{3})+(?!\d))/g, GROUP);
+  }
+
+  /** x to `sigFigs` significant figures, or to opts.decimals places; opts.plus writes "+" before
+   *  a positive number. formatNumber(-30012, 2) -> "−30 000"; formatNumber(150000, 2) -> "1.5 × 10⁵". */
+  function formatNumber(x, sigFigs, opts) {
+    opts = opts || {};
+    var decimals = opts.decimals;
+    if ((sigFigs === undefined || sigFigs === null) === (decimals === undefined)) {
+      throw new Error("formatNumber: give exactly one of sigFigs and opts.decimals");
+    }
+    if (typeof x !== "number" || !isFinite(x)) throw new Error("formatNumber: x must be a finite number, got " + x);
+    var d = decimalDigits(Math.abs(x));
+    var rounded = d && roundDigits(d, decimals === undefined ? sigFigs : d.point + decimals);
+    var body;
+    if (!rounded) {
+      var places = decimals === undefined ? sigFigs - 1 : decimals;
+      body = places > 0 ? "0." + zeros(places) : "0";
+    } else if (rounded.point >= 6 || rounded.point <= -3) {
+      var exponent = String(rounded.point - 1).split("").map(function (c) { return SUPERSCRIPTS[c]; }).join("");
+      var mantissa = rounded.digits[0] + (rounded.digits.length > 1 ? "." + rounded.digits.slice(1) : "");
+      body = mantissa + " " + TIMES + " 10" + exponent;
+    } else if (rounded.point <= 0) {
+      body = "0." + zeros(-rounded.point) + rounded.digits;
+    } else if (rounded.point >= rounded.digits.length) {
+      body = group(rounded.digits + zeros(rounded.point - rounded.digits.length));
+    } else {
+      body = group(rounded.digits.slice(0, rounded.point)) + "." + rounded.digits.slice(rounded.point);
+    }
+    if (!rounded) return body;
+    return (x < 0 ? MINUS : opts.plus ? "+" : "") + body;
+  }
+
+  var api = { formatNumber: formatNumber, MINUS: MINUS, GROUP: GROUP };
+  if (typeof module === "object" && module.exports) module.exports = api;
+  else root.Notation = api;
+})(this);

@@ -1,0 +1,41 @@
+"""One way to write a number (physics_figures.notation), checked against the shared case
+table that the browser's twin (notation.js) also runs: tests/js/notation.test.js."""
+
+import json
+from pathlib import Path
+
+import pytest
+
+from physics_figures.notation import format_number, plain_number, round_number, tex_number
+
+CASES = json.loads((Path(__file__).parent / "notation_cases.json").read_text())["cases"]
+
+
+@pytest.mark.parametrize("case", CASES, ids=lambda c: f"{c['value']}-{c.get('sig_figs', c.get('decimals'))}")
+def test_format_number_writes_each_case_of_the_shared_table(case):
+    text = format_number(case["value"], case.get("sig_figs"), decimals=case.get("decimals"),
+                         plus=case.get("plus", False))
+    assert text == case["text"], case.get("why", "")
+
+
+def test_tex_and_plain_forms_keep_the_same_digits():
+    assert tex_number("\u22121.5 \u00d7 10\u207b\u2074") == r"-1.5 \times 10^{-4}"
+    assert tex_number("30\u202f000") == r"30\,000"
+    assert plain_number("\u22121.5 \u00d7 10\u2075") == "-1.5e5"
+    assert plain_number("30\u202f000") == "30000"
+
+
+@pytest.mark.parametrize(("kwargs", "message"), [
+    ({"sig_figs": 0}, "sig_figs must be a whole number of at least 1"),
+    ({"sig_figs": 2, "decimals": 1}, "give exactly one of sig_figs and decimals"),
+    ({}, "give exactly one of sig_figs and decimals"),
+    ({"decimals": -1}, "decimals must be a whole number, 0 or more"),
+])
+def test_a_bad_precision_is_refused_with_the_rule(kwargs, message):
+    with pytest.raises(ValueError, match=message):
+        round_number(1.0, kwargs.pop("sig_figs", None), **kwargs)
+
+
+def test_a_value_that_is_not_finite_is_refused():
+    with pytest.raises(ValueError, match=r"value must be a finite number \(got value=nan\)"):
+        format_number(float("nan"), 2)

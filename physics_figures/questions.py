@@ -19,7 +19,6 @@ import math
 import re
 from dataclasses import KW_ONLY, dataclass
 
-from .answers import DIGIT_GROUP_SEPARATOR, MINUS, Value
 from .constants import G_EARTH, G_MOON
 from .models import (
     acceleration,
@@ -41,6 +40,7 @@ from .models import (
     velocity_from_momentum,
     weight,
 )
+from .notation import format_number, tex_number
 
 #: How a part treats direction: a size only, a signed value along a stated positive
 #: direction, or a size plus a direction chosen from a list.
@@ -56,9 +56,8 @@ _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
 def number(value: float, sig_figs: int) -> str:
-    """A value rounded half up to sig_figs significant figures, e.g. number(686.7, 3) -> "687"."""
-    text = Value(value, unit="", sig_figs=sig_figs).text
-    return text.replace(MINUS, "-").replace(DIGIT_GROUP_SEPARATOR, "")
+    """A value as the book writes it, for TeX maths, e.g. number(686.7, 3) -> "687"."""
+    return tex_number(format_number(value, sig_figs))
 
 
 def unit_text(unit: str) -> str:
@@ -164,7 +163,7 @@ class Part:
     def answer_text(self) -> str:
         """The answer as the key prints it (plain text), e.g. "11.6 m s⁻² upwards"."""
         space = "" if self.unit == "°" else " "
-        text = f"{number(self.value, self.shown_sig_figs).replace('-', MINUS)}{space}{unit_text(self.unit)}"
+        text = f"{format_number(self.value, self.shown_sig_figs)}{space}{unit_text(self.unit)}"
         if self.direction == "choice":
             text += f" {self.answer_direction}"
         if self.direction == "signed":

@@ -203,8 +203,8 @@ def test_value_prints_a_true_minus_sign_and_unbreakable_digit_groups():
     [
         ({}, "give exactly one of sig_figs and decimals"),
         ({"sig_figs": 2, "decimals": 1}, "give exactly one of sig_figs and decimals"),
-        ({"sig_figs": 0}, r"sig_figs must be at least 1 \(got sig_figs=0\)"),
-        ({"decimals": -1}, r"decimals must not be negative \(got decimals=-1\)"),
+        ({"sig_figs": 0}, r"sig_figs must be a whole number of at least 1 \(got sig_figs=0\)"),
+        ({"decimals": -1}, r"decimals must be a whole number, 0 or more \(got decimals=-1\)"),
     ],
 )
 def test_value_rejects_an_unclear_precision(options, message):

@@ -15,6 +15,8 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = [pytest.mark.build]
+
 ROOT = Path(__file__).resolve().parents[1]
 VENV = ROOT / ".venv"
 
@@ -97,8 +99,6 @@ PROBE_PAGE = """\
 
 ```{code-cell} ipython3
 import time, physics_figures
-
-pytestmark = [pytest.mark.build]
 print("value:", physics_figures.VALUE, "executed at:", time.time_ns())
 ```
 """

@@ -125,7 +125,7 @@ def test_force_time_areas_are_the_changes_in_momentum():
     graph = plot_force_time_area(scenarios.CAR_HISTORY)
     texts = [label.get_text() for label in graph.area_labels]
     # Notes: +12 000 kg m s^-1 gained in 0-4.0 s, 12 000 lost in 10.0-16.0 s
-    assert texts == ["area = Δp\n= +12 000 N s", "area = Δp\n= −12 000 N s"]  # noqa: RUF001 (true minus)
+    assert texts == ["area = Δp\n= +12\u202f000 N s", "area = Δp\n= −12\u202f000 N s"]  # noqa: RUF001 (true minus; U+202F groups digits)
     assert len(graph.areas) == 2
 
 

@@ -69,9 +69,9 @@ def programs_run_by(source: Path) -> set[str]:
                 word = _first_word(node.args[0])
                 if word:
                     found.add(Path(word).name if word.startswith("/") else word)
-        elif isinstance(node, ast.Constant) and isinstance(node.value, str):
-            if re.fullmatch(r"/usr/s?bin/[\w.+-]+", node.value):
-                found.add(Path(node.value).name)
+        elif (isinstance(node, ast.Constant) and isinstance(node.value, str)
+              and re.fullmatch(r"/usr/s?bin/[\w.+-]+", node.value)):
+            found.add(Path(node.value).name)
     return found
 
 

@@ -117,11 +117,11 @@ def test_mark_scheme_prints_each_answer_and_awards_marks(question):
             f"{question.key}: the mark scheme never states the answer {part.answer_text}"
 
 
-def test_number_rounds_half_up_and_keeps_significant_zeros():
+def test_number_rounds_half_away_from_zero_and_keeps_significant_zeros():
     assert q.number(686.7, 3) == "687"
     assert q.number(-2.0, 2) == "-2.0"
     assert q.number(2.85, 2) == "2.9"
-    assert q.number(10800, 3) == "10800"
+    assert q.number(10800, 3) == r"10\,800"  # grouped from five digits, a thin space in TeX
     assert q.unit_text("m s^-2") == "m s⁻²"
     assert q.unit_markdown("m s^-1") == "m s$^{-1}$"
 

@@ -16,6 +16,7 @@ from pathlib import Path
 import pytest
 
 from physics_figures import questions as q
+from physics_figures.notation import format_number
 
 ROOT = Path(__file__).resolve().parents[1]
 ENGINE = ROOT / "book" / "_ext" / "questions" / "static" / "questions.js"
@@ -43,7 +44,7 @@ def mark_all(cases: list[dict]) -> list[dict]:
 
 
 def _answer(part: q.Part, value: float, *, sig_figs: int, unit: str | None = None, direction: str | None = None):
-    return {"value": q.number(value, sig_figs), "unit": unit or part.unit,
+    return {"value": format_number(value, sig_figs), "unit": unit or part.unit,  # as the book writes it
             "direction": direction or part.answer_direction}
 
 

@@ -14,7 +14,8 @@ from matplotlib.patches import Rectangle
 from matplotlib.text import Annotation, Text
 
 from ..models import total_kinetic_energy, total_momentum
-from ._text import MOMENTUM_UNIT, VELOCITY_UNIT, a_or_an, plain, sig
+from ..notation import format_number
+from ._text import MOMENTUM_UNIT, VELOCITY_UNIT, a_or_an, plain
 from .style import MAIN, SECOND, new_axes, styled
 
 
@@ -47,7 +48,7 @@ def _row(ax, y, masses, velocities, *, joined):
         ax.text(
             x + w / 2,
             y + 0.35,
-            f"{sig(m)} kg",
+            f"{format_number(m, 2)} kg",
             ha="center",
             va="center",
             fontsize="small",
@@ -85,7 +86,7 @@ def _row(ax, y, masses, velocities, *, joined):
         ax.text(
             (start[0] + tip[0]) / 2,
             y + 0.5,
-            f"{sig(abs(v))} {VELOCITY_UNIT}",
+            f"{format_number(abs(v), 2)} {VELOCITY_UNIT}",
             ha="center",
             va="bottom",
             fontsize="small",
@@ -116,7 +117,7 @@ def plot_collision(
         totals[name] = ax.text(
             8.0,
             y + 0.35,
-            f"total p = {sig(p)} {MOMENTUM_UNIT}\ntotal Eₖ = {sig(ek)} J",
+            f"total p = {format_number(p, 2)} {MOMENTUM_UNIT}\ntotal Eₖ = {format_number(ek, 2)} J",
             ha="right",
             va="center",
             fontsize="small",
@@ -140,20 +141,20 @@ def _totals(masses, before, after):
 def collision_caption(masses, velocities_before, velocities_after) -> str:
     p0, e0, p1, e1 = _totals(masses, velocities_before, velocities_after)
     return (
-        f"{a_or_an(sig(masses[0])).capitalize()} {sig(masses[0])} kg trolley at {sig(velocities_before[0])} {VELOCITY_UNIT} hits a "
-        f"{sig(masses[1])} kg trolley at rest and they stick together. The total momentum "
-        f"is {sig(p0)} {MOMENTUM_UNIT} before and "
-        f"{sig(p1)} {MOMENTUM_UNIT} after; the kinetic energy falls from "
-        f"{sig(e0)} J to {sig(e1)} J, so the collision is inelastic."
+        f"{a_or_an(format_number(masses[0], 2)).capitalize()} {format_number(masses[0], 2)} kg trolley at {format_number(velocities_before[0], 2)} {VELOCITY_UNIT} hits a "
+        f"{format_number(masses[1], 2)} kg trolley at rest and they stick together. The total momentum "
+        f"is {format_number(p0, 2)} {MOMENTUM_UNIT} before and "
+        f"{format_number(p1, 2)} {MOMENTUM_UNIT} after; the kinetic energy falls from "
+        f"{format_number(e0, 2)} J to {format_number(e1, 2)} J, so the collision is inelastic."
     )
 
 
 def collision_alt(masses, velocities_before, velocities_after) -> str:
     p0, e0, p1, e1 = _totals(masses, velocities_before, velocities_after)
     return plain(
-        f"Before: {a_or_an(sig(masses[0]))} {sig(masses[0])} kg block moving right at {sig(velocities_before[0])} "
-        f"{VELOCITY_UNIT} towards {a_or_an(sig(masses[1]))} {sig(masses[1])} kg block at rest; total momentum "
-        f"{sig(p0)} {MOMENTUM_UNIT}, total kinetic energy {sig(e0)} J. After: the blocks "
-        f"joined, moving right at {sig(velocities_after[0])} {VELOCITY_UNIT}; total momentum "
-        f"{sig(p1)} {MOMENTUM_UNIT}, total kinetic energy {sig(e1)} J."
+        f"Before: {a_or_an(format_number(masses[0], 2))} {format_number(masses[0], 2)} kg block moving right at {format_number(velocities_before[0], 2)} "
+        f"{VELOCITY_UNIT} towards {a_or_an(format_number(masses[1], 2))} {format_number(masses[1], 2)} kg block at rest; total momentum "
+        f"{format_number(p0, 2)} {MOMENTUM_UNIT}, total kinetic energy {format_number(e0, 2)} J. After: the blocks "
+        f"joined, moving right at {format_number(velocities_after[0], 2)} {VELOCITY_UNIT}; total momentum "
+        f"{format_number(p1, 2)} {MOMENTUM_UNIT}, total kinetic energy {format_number(e1, 2)} J."
     )

@@ -17,7 +17,8 @@ from matplotlib.text import Text
 
 from ..models import impulse
 from ..models.momentum_history import MomentumHistory
-from ._text import IMPULSE_UNIT, MOMENTUM_UNIT, VELOCITY_UNIT, a_or_an, plain, seconds, sig
+from ..notation import format_number
+from ._text import IMPULSE_UNIT, MOMENTUM_UNIT, VELOCITY_UNIT, a_or_an, plain, seconds
 from .style import GUIDE, MAIN, SHADE, new_axes, styled, unit_label
 
 
@@ -40,7 +41,7 @@ class ForceTimeGraph(NamedTuple):
 
 
 def _force_text(force: float) -> str:
-    return "0" if force == 0 else f"{sig(force, 2)} N"
+    return "0" if force == 0 else f"{format_number(force, 2)} N"
 
 
 @styled
@@ -82,7 +83,7 @@ def plot_momentum_time(history: MomentumHistory, *, ax: Axes | None = None) -> M
     ax.set_ylim(min(0, min(history.momenta)), top * 1.3)
     ax.set_xlabel(unit_label("time t", "s"))
     ax.set_ylabel(unit_label("momentum p", MOMENTUM_UNIT))
-    ax.yaxis.set_major_formatter(lambda value, _: sig(value, 3) if value else "0")
+    ax.yaxis.set_major_formatter(lambda value, _: format_number(value, 3) if value else "0")
     return MomentumTimeGraph(ax, line, corners, labels)
 
 
@@ -117,7 +118,7 @@ def plot_force_time_area(history: MomentumHistory, *, ax: Axes | None = None) ->
             ax.text(
                 (segment.t0 + segment.t1) / 2,
                 segment.force / 2,
-                f"area = Δp\n= {sig(change, 2, plus=True)} {IMPULSE_UNIT}",
+                f"area = Δp\n= {format_number(change, 2, plus=True)} {IMPULSE_UNIT}",
                 ha="center",
                 va="center",
                 bbox={"facecolor": "white", "edgecolor": "none", "pad": 2},
@@ -135,7 +136,7 @@ def plot_force_time_area(history: MomentumHistory, *, ax: Axes | None = None) ->
 def momentum_time_caption(history: MomentumHistory, *, mass: float) -> str:
     forces = ", ".join(_force_text(f) for f in history.segment_forces)
     return (
-        f"Momentum–time graph of {a_or_an(sig(mass))} {sig(mass)} kg car. The gradient of each straight "  # noqa: RUF001 (typography)
+        f"Momentum–time graph of {a_or_an(format_number(mass, 2))} {format_number(mass, 2)} kg car. The gradient of each straight "  # noqa: RUF001 (typography)
         f"segment is the resultant force on the car: {forces}."
     )
 
@@ -144,21 +145,21 @@ def momentum_time_alt(history: MomentumHistory, *, mass: float) -> str:
     parts = []
     for s in history.segments:
         if s.force == 0:
-            how = f"stays at {sig(s.p0, 2, group='')} {MOMENTUM_UNIT}"
+            how = f"stays at {format_number(s.p0, 2)} {MOMENTUM_UNIT}"
         else:
             how = (
                 f"{'rises' if s.force > 0 else 'falls'} in a straight line from "
-                f"{sig(s.p0, 2, group='')} to {sig(s.p1, 2, group='')} {MOMENTUM_UNIT}"
+                f"{format_number(s.p0, 2)} to {format_number(s.p1, 2)} {MOMENTUM_UNIT}"
             )
         parts.append(
             f"from {seconds(s.t0)} to {seconds(s.t1)} it {how} (gradient {_force_text(s.force)})"
         )
     speed = max(history.velocity_at(history.times, mass))
     return plain(
-        f"Momentum-time graph of {a_or_an(sig(mass))} {sig(mass)} kg car: "
+        f"Momentum-time graph of {a_or_an(format_number(mass, 2))} {format_number(mass, 2)} kg car: "
         + "; ".join(parts)
         + ". "
-        f"The top speed is {sig(speed, 2)} {VELOCITY_UNIT}."
+        f"The top speed is {format_number(speed, 2)} {VELOCITY_UNIT}."
     )
 
 
@@ -174,7 +175,7 @@ def force_time_alt(history: MomentumHistory) -> str:
     parts = [
         f"{_force_text(s.force)} from {seconds(s.t0)} to {seconds(s.t1)}"
         + (
-            f", shaded area {sig(impulse(s.force, s.t1 - s.t0), 2, group='')} {IMPULSE_UNIT}"
+            f", shaded area {format_number(impulse(s.force, s.t1 - s.t0), 2)} {IMPULSE_UNIT}"
             if s.force
             else ""
         )

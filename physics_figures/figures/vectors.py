@@ -15,7 +15,8 @@ from matplotlib.lines import Line2D
 from matplotlib.text import Annotation
 
 from ..models.two_d import GlancingCollision
-from ._text import IMPULSE_UNIT, plain, sig
+from ..notation import format_number
+from ._text import IMPULSE_UNIT, plain
 from .style import GUIDE, MAIN, PALETTE, SECOND, new_axes, styled
 
 
@@ -80,7 +81,7 @@ def plot_momentum_triangle(
     small = {"textcoords": "offset points", "fontsize": "small"}
     labels = [
         ax.annotate(
-            f"{moving} before: {sig(collision.p_before, 3)} {IMPULSE_UNIT}",
+            f"{moving} before: {format_number(collision.p_before, 3)} {IMPULSE_UNIT}",
             xy=(before_tip[0] / 2, 0),
             xytext=(0, -6),
             ha="center",
@@ -88,8 +89,8 @@ def plot_momentum_triangle(
             **small,
         ),
         ax.annotate(
-            f"{moving} after:\n{sig(collision.p_known, figures)} {IMPULSE_UNIT} at "
-            f"{sig(collision.angle_known_deg, 2)}°",
+            f"{moving} after:\n{format_number(collision.p_known, figures)} {IMPULSE_UNIT} at "
+            f"{format_number(collision.angle_known_deg, 2)}°",
             xy=(along_m / 2, across_m / 2),
             xytext=(-8, 4),
             ha="right",
@@ -97,7 +98,7 @@ def plot_momentum_triangle(
             **small,
         ),
         ax.annotate(
-            f"{struck} after:\n{sig(m.magnitude, figures)} {IMPULSE_UNIT} at {sig(m.angle_deg, 3)}°",
+            f"{struck} after:\n{format_number(m.magnitude, figures)} {IMPULSE_UNIT} at {format_number(m.angle_deg, 3)}°",
             xy=((corner[0] + end[0]) / 2, (corner[1] + end[1]) / 2),
             xytext=(10, 4),
             ha="left",
@@ -105,7 +106,7 @@ def plot_momentum_triangle(
             **small,
         ),
         ax.annotate(
-            f"across {sig(across_m, 3)}",
+            f"across {format_number(across_m, 3)}",
             xy=(along_m, across_m / 2),
             xytext=(-5, 0),
             ha="right",
@@ -115,7 +116,7 @@ def plot_momentum_triangle(
             **small,
         ),
         ax.annotate(
-            f"along {sig(m.along, 3)}",
+            f"along {format_number(m.along, 3)}",
             xy=((corner[0] + end[0]) / 2, corner[1]),
             xytext=(0, 4),
             ha="center",
@@ -137,7 +138,7 @@ def momentum_triangle_caption(collision: GlancingCollision, *, names=("P", "Q"))
     return (
         f"Momentum vector triangle for {moving} hitting {struck}, which was at rest. "
         f"The momenta after, {moving} then {struck}, joined tip to tail, end where the "
-        f"momentum before ({sig(collision.p_before, 3)} {IMPULSE_UNIT}, dashed) ends: "
+        f"momentum before ({format_number(collision.p_before, 3)} {IMPULSE_UNIT}, dashed) ends: "
         f"momentum is conserved along the line and across it."
     )
 
@@ -150,11 +151,11 @@ def momentum_triangle_alt(
     along_m, across_m = collision.known_vector
     return plain(
         f"Vector triangle. A dashed arrow along the original line shows {moving}'s momentum "
-        f"before, {sig(collision.p_before, 3)} {IMPULSE_UNIT}. From its start, an arrow for "
-        f"{moving} after, {sig(collision.p_known, figures)} {IMPULSE_UNIT} at "
-        f"{sig(collision.angle_known_deg, 2)} degrees above the line (components "
-        f"{sig(along_m, 3)} along, {sig(across_m, 3)} across). From its tip, an arrow for "
-        f"{struck} after, {sig(m.magnitude, figures)} {IMPULSE_UNIT} at {sig(m.angle_deg, 3)} "
-        f"degrees below the line (components {sig(m.along, 3)} along, {sig(m.across, 3)} "
+        f"before, {format_number(collision.p_before, 3)} {IMPULSE_UNIT}. From its start, an arrow for "
+        f"{moving} after, {format_number(collision.p_known, figures)} {IMPULSE_UNIT} at "
+        f"{format_number(collision.angle_known_deg, 2)} degrees above the line (components "
+        f"{format_number(along_m, 3)} along, {format_number(across_m, 3)} across). From its tip, an arrow for "
+        f"{struck} after, {format_number(m.magnitude, figures)} {IMPULSE_UNIT} at {format_number(m.angle_deg, 3)} "
+        f"degrees below the line (components {format_number(m.along, 3)} along, {format_number(m.across, 3)} "
         f"across), ending at the tip of the dashed arrow, so the triangle closes."
     )

@@ -21,6 +21,7 @@ from docutils import nodes
 from sphinx.application import Sphinx
 from sphinx.util.docutils import SphinxDirective
 
+from notation import add_notation_script  # book/_ext/notation: the browser's number writer
 from physics_figures.explorables import EXPLORABLES, explorable_data
 
 STATIC = Path(__file__).parent / "static"
@@ -73,6 +74,7 @@ def _add_page_assets(app: Sphinx, pagename: str, templatename: str, context, doc
     if not names:
         return
     app.add_css_file("explorables/explorables.css")
+    add_notation_script(app)  # ui.js writes every read-out and tick with it
     for script in SHARED_SCRIPTS:
         app.add_js_file(script, loading_method="defer")
     for name in sorted(names):

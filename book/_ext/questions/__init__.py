@@ -34,6 +34,8 @@ from docutils.parsers.rst import directives
 from sphinx.util import logging
 from sphinx.util.docutils import SphinxDirective
 
+from notation import add_notation_script  # book/_ext/notation: the browser's number writer
+
 __version__ = "1.0"
 STATIC = Path(__file__).parent / "static"
 logger = logging.getLogger(__name__)
@@ -240,6 +242,7 @@ def add_assets(app, pagename, templatename, context, doctree):
     """Only pages that ask a question (or hold the key) load the script and styles."""
     if pagename in _questions(app.env) or pagename in _answer_key_docs(app.env):
         app.add_css_file("questions.css")
+        add_notation_script(app)  # questions.js writes numbers with it
         app.add_js_file("questions.js", loading_method="defer")
 
 

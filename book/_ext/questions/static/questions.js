@@ -5,6 +5,9 @@
 (function (root) {
   "use strict";
 
+  // How numbers are written (book/_ext/notation): loaded before this script in a page.
+  var Notation = root.Notation || require("../../notation/static/notation.js");
+
   var SUPERSCRIPTS = { "⁰": "0", "¹": "1", "²": "2", "³": "3", "⁴": "4", "⁵": "5",
     "⁶": "6", "⁷": "7", "⁸": "8", "⁹": "9", "⁻": "-", "⁺": "+" };
 
@@ -251,10 +254,6 @@
     });
   }
 
-  function formatNumber(x) {
-    return String(parseFloat(x.toPrecision(6)));
-  }
-
   function outcome(code, message, extra) {
     var result = { code: code, correct: code === "correct", message: message };
     if (extra) Object.keys(extra).forEach(function (k) { result[k] = extra[k]; });
@@ -336,8 +335,8 @@
     if (named) return named;
 
     if (!unit.empty && reading.scale !== 1 && against(target, 1).match) {
-      return outcome("prefix", "Check the prefix: " + formatNumber(typed) + " " + superscript(part.unit) +
-        " would be right, but 1 " + superscript(normalise(unitText)) + " = " + formatNumber(reading.scale) + " " +
+      return outcome("prefix", "Check the prefix: " + Notation.formatNumber(typed, number.sfMax) + " " + superscript(part.unit) +
+        " would be right, but 1 " + superscript(normalise(unitText)) + " = " + Notation.formatNumber(reading.scale, 1) + " " +
         superscript(part.unit) + ". Convert g to kg, ms to s, cm to m.");
     }
 

@@ -48,44 +48,26 @@
     return node;
   }
 
-  /* ---- numbers as the notes print them ---- */
+  /* ---- numbers as the notes print them: book/_ext/notation/static/notation.js ---- */
 
-  var MINUS = "\u2212";
+  var formatNumber = window.Notation.formatNumber, MINUS = window.Notation.MINUS;
 
-  /** x to `sf` significant figures (or `decimals` places), with a real minus sign. */
+  /** A read-out: x to opts.sf significant figures (3 unless given) or opts.decimals places;
+   *  a dash when there is no value. */
   function fmt(x, opts) {
     opts = opts || {};
     if (x === null || x === undefined || !isFinite(x)) return "\u2014";
     if (Math.abs(x) < 1e-9) x = 0; // rounding noise, e.g. 1e-16 for an exact zero
-    var text;
-    if (opts.decimals !== undefined) text = x.toFixed(opts.decimals);
-    else {
-      text = Number(x.toPrecision(opts.sf || 3)).toString();
-      var digits = text.replace(/^-?0*\.?0*/, "").replace(".", "").length;
-      var want = opts.sf || 3;
-      // keep trailing zeros that are significant (50.0, not 50)
-      if (digits < want && Math.abs(x) < Math.pow(10, want) && x !== 0) text = x.toPrecision(want);
-      if (/e/.test(text)) text = Number(text).toString();
-    }
-    if (Math.abs(Number(text)) >= 10000) text = text.replace(/\B(?=(\d{3})+(?!\d))/g, "\u202f");
-    if (Number(text) === 0) text = text.replace("-", "");
-    return text.replace("-", MINUS);
+    return opts.decimals !== undefined ? formatNumber(x, null, { decimals: opts.decimals })
+      : formatNumber(x, opts.sf || 3);
   }
 
-  /** A tick value as plain as it can be: 5, 0.5, 10 000, -2000. */
-  function tickText(v) {
-    var text = Number(v.toPrecision(12)).toString();
-    if (Math.abs(v) >= 10000) text = text.replace(/\B(?=(\d{3})+(?!\d))/g, "\u202f");
-    return text.replace("-", MINUS);
+  /** A tick value with as many places as the spacing of `all` the ticks needs: 5, 0.5, 10 000. */
+  function tickText(v, all) {
+    var step = all.length > 1 ? all[1] - all[0] : 1;
+    return formatNumber(v, null, { decimals: Math.max(0, -Math.floor(Math.log10(step) + 1e-9)) });
   }
 
-  /* ---- controls ---- */
-
-  /**
-   * A labelled quantity set by a slider and a number box kept in step. The state is
-   * held here, so a value between slider steps (from the data) is kept exactly.
-   * opts: {label, unit, min, max, step, value, numberMin, numberMax, onChange}
-   */
   function Quantity(opts) {
     var id = nextId("q");
     var self = this;
@@ -233,15 +215,15 @@
     var b = this.box, g = this.grid;
     while (g.firstChild) g.removeChild(g.firstChild);
     var self = this;
-    ticks(x0, x1, opts.xTicks || 6).forEach(function (t) {
+    ticks(x0, x1, opts.xTicks || 6).forEach(function (t, i, all) {
       var x = self.x(t);
       g.appendChild(svg("line", { x1: x, x2: x, y1: b.top, y2: b.bottom }));
-      g.appendChild(svg("text", { class: "ex-tick", x: x, y: b.bottom + 16, "text-anchor": "middle" }, tickText(t)));
+      g.appendChild(svg("text", { class: "ex-tick", x: x, y: b.bottom + 16, "text-anchor": "middle" }, tickText(t, all)));
     });
-    ticks(y0, y1, opts.yTicks || 5).forEach(function (v) {
+    ticks(y0, y1, opts.yTicks || 5).forEach(function (v, i, all) {
       var y = self.y(v);
       g.appendChild(svg("line", { x1: b.left, x2: b.right, y1: y, y2: y, class: v === 0 ? "ex-zero" : null }));
-      g.appendChild(svg("text", { class: "ex-tick", x: b.left - 6, y: y + 4, "text-anchor": "end" }, tickText(v)));
+      g.appendChild(svg("text", { class: "ex-tick", x: b.left - 6, y: y + 4, "text-anchor": "end" }, tickText(v, all)));
     });
     g.appendChild(svg("rect", { class: "ex-frame", x: b.left, y: b.top, width: b.right - b.left, height: b.bottom - b.top }));
   };

@@ -68,7 +68,7 @@ test: venv
 .PHONY: check
 check: venv node_modules/.package-lock.json
 	$(BIN)/ruff check $(LINTED)
-	CHECK_FAST=1 $(BIN)/python -m pytest -m "not site and not browser and not build" -q
+	$(BIN)/python -m pytest -m "not site and not browser and not build" -q
 
 # The teachers' PDFs: the book, a question sheet and an answer key. One LaTeX build
 # writes all three .tex files (book/_latex/); xelatex typesets them. Needs TeX Live

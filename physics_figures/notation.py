@@ -10,7 +10,8 @@ The rules (Cambridge mark schemes and the SI brochure):
 * rounding is half away from zero, from the shortest decimal form of the float,
   as a calculator does: 0.125 -> 0.13, 2.85 -> 2.9, -0.125 -> -0.13;
 * trailing zeros that are significant stay (5.0, 9.40);
-* a true minus sign (U+2212), never -0;
+* a true minus sign (U+2212), never -0; an exact zero is 0 at any number of
+  significant figures (a value that rounds to zero keeps its places: 0.00);
 * the whole part of a number of five digits or more is grouped in threes with a
   narrow no-break space (U+202F): 1500, 30 000;
 * x 10^n when the rounded size is 10^5 or more, or below 10^-3: 1.5 × 10⁵, 2.0 × 10⁻⁴.
@@ -49,8 +50,8 @@ def round_number(value: float, sig_figs: int | None = None, *, decimals: int | N
     exact = Decimal(repr(value))  # the shortest decimal that is this float: 2.85, not 2.8499…
     if decimals is not None:
         return exact.quantize(Decimal(1).scaleb(-decimals), rounding=ROUND_HALF_UP)
-    if exact == 0:
-        return Decimal(0).quantize(Decimal(1).scaleb(1 - sig_figs))
+    if exact == 0:  # an exact zero has no significant figures to show: 0
+        return Decimal(0)
     with localcontext() as context:
         context.prec = sig_figs
         context.rounding = ROUND_HALF_UP  # Decimal's HALF_UP is half away from zero

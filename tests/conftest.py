@@ -14,8 +14,6 @@ matplotlib.use("Agg")
 settings.register_profile("book", deadline=None, derandomize=bool(os.environ.get("CI")))
 settings.load_profile("book")
 
-#: `make check` sets CHECK_FAST=1: tests that loop over many variants take a sample.
-CHECK_FAST = bool(os.environ.get("CHECK_FAST"))
 
 #: What a test needs beyond Python: `make check` leaves these out, `make test` runs them.
 NEEDS = {

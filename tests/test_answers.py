@@ -183,7 +183,7 @@ def test_momentum_is_conserved_in_the_worked_examples():
         (Value(12000.0, unit="N s", sig_figs=2), "12 000"),
         (Value(1500.0, unit="kg", sig_figs=2), "1500"),     # four digits: not grouped
         (Value(-2000.0, unit="N", sig_figs=2), "-2000"),
-        (Value(0.0, unit="N", sig_figs=2), "0.0"),
+        (Value(0.0, unit="N", sig_figs=2), "0"),
         (Value(36.58, unit="degrees", decimals=1), "36.6"),
         (Value(5.0, unit="s", decimals=2), "5.00"),
     ],

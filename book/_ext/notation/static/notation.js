@@ -53,8 +53,8 @@
     var d = decimalDigits(Math.abs(x));
     var rounded = d && roundDigits(d, decimals === undefined ? sigFigs : d.point + decimals);
     var body;
-    if (!rounded) {
-      var places = decimals === undefined ? sigFigs - 1 : decimals;
+    if (!rounded) { // an exact zero is 0 at any s.f.; a value rounded to zero keeps its places
+      var places = decimals !== undefined ? decimals : d ? sigFigs - 1 : 0;
       body = places > 0 ? "0." + zeros(places) : "0";
     } else if (rounded.point >= 6 || rounded.point <= -3) {
       var exponent = String(rounded.point - 1).split("").map(function (c) { return SUPERSCRIPTS[c]; }).join("");

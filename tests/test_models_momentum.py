@@ -104,7 +104,8 @@ def test_mass_is_the_same_everywhere_and_weight_scales_with_g(mass):
 def test_lift_contact_force_minus_weight_gives_the_acceleration(mass, a):
     contact = lift_contact_force(mass, a)
     assert acceleration(contact - weight(mass), mass) == pytest.approx(a, abs=1e-9)
-    assert thrust_for_acceleration(weight(mass), a) == pytest.approx(contact)
+    # near free fall both are differences of forces of about the weight: compare on that scale
+    assert thrust_for_acceleration(weight(mass), a) == pytest.approx(contact, abs=1e-12 * weight(mass))
 
 
 def test_lift_at_steady_speed_pushes_with_the_weight_and_in_free_fall_not_at_all():

@@ -18,10 +18,10 @@ import json
 from pathlib import Path
 
 from docutils import nodes
+from notation import add_notation_script  # book/_ext/notation: the browser's number writer
 from sphinx.application import Sphinx
 from sphinx.util.docutils import SphinxDirective
 
-from notation import add_notation_script  # book/_ext/notation: the browser's number writer
 from physics_figures.explorables import EXPLORABLES, explorable_data
 
 STATIC = Path(__file__).parent / "static"

@@ -31,10 +31,9 @@ from typing import ClassVar
 
 from docutils import nodes
 from docutils.parsers.rst import directives
+from notation import add_notation_script  # book/_ext/notation: the browser's number writer
 from sphinx.util import logging
 from sphinx.util.docutils import SphinxDirective
-
-from notation import add_notation_script  # book/_ext/notation: the browser's number writer
 
 __version__ = "1.0"
 STATIC = Path(__file__).parent / "static"

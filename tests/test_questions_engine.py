@@ -100,7 +100,7 @@ def test_the_issues_wrong_causes_are_no_longer_given():
     recoil = q.quick_check_2().parts[0].browser_data("a")
     results = mark_all([
         {"part": drag, "answer": {"value": "700", "unit": "N"}},
-        {"part": drag, "answer": {"value": "7.0 × 10²", "unit": "N"}},
+        {"part": drag, "answer": {"value": "7.0 x 10^2", "unit": "N"}},
         {"part": drag, "answer": {"value": "686.0", "unit": "N"}},
         {"part": towing, "answer": {"value": "1.4", "unit": "m s^-2"}},
         {"part": rock, "answer": {"value": "14.7", "unit": "N"}},

@@ -1,3 +1,4 @@
+# ruff: noqa: RUF002  (docstrings write the physics in its own Greek letters)
 """Upthrust, and the forces on a body falling through a fluid at terminal velocity.
 
 Notes: "Key facts" (upthrust F = ρgV, from Forces, density and pressure) and

@@ -2,7 +2,9 @@
 and Example 4), drawn from a :class:`physics_figures.models.two_d.GlancingCollision`.
 
 The momentum before runs along the original line. The two momenta after, joined tip to
-tail, end where it ends: the triangle closes because momentum is conserved. Dotted lines
+tail, end where it ends: the momentum before is their resultant, because momentum is
+conserved. (It is not a closed triangle, three vectors adding to zero: that is an
+explosion from rest.) Dotted lines
 show the components along and across the line that the working uses.
 """
 
@@ -57,8 +59,8 @@ def plot_momentum_triangle(
 ) -> TriangleDiagram:
     """Tip-to-tail momentum triangle with the components of both momenta after.
 
-    ``figures``: significant figures of the momenta after (the notes give 2 for the
-    pucks, 3 for Example 4).
+    ``figures``: significant figures of the given momentum after (the notes give 2 for
+    the pucks, 3 for Example 4); the computed one has at least 3, like its components.
     """
     ax = new_axes(ax, figsize=(5.6, 4.0))
     moving, struck = names
@@ -97,7 +99,7 @@ def plot_momentum_triangle(
             **small,
         ),
         ax.annotate(
-            f"{struck} after:\n{sig(m.magnitude, figures)} {IMPULSE_UNIT} at {sig(m.angle_deg, 3)}°",
+            f"{struck} after:\n{sig(m.magnitude, max(figures, 3))} {IMPULSE_UNIT} at {sig(m.angle_deg, 3)}°",
             xy=((corner[0] + end[0]) / 2, (corner[1] + end[1]) / 2),
             xytext=(10, 4),
             ha="left",
@@ -137,8 +139,9 @@ def momentum_triangle_caption(collision: GlancingCollision, *, names=("P", "Q"))
     return (
         f"Momentum vector triangle for {moving} hitting {struck}, which was at rest. "
         f"The momenta after, {moving} then {struck}, joined tip to tail, end where the "
-        f"momentum before ({sig(collision.p_before, 3)} {IMPULSE_UNIT}, dashed) ends: "
-        f"momentum is conserved along the line and across it."
+        f"momentum before ({sig(collision.p_before, 3)} {IMPULSE_UNIT}, dashed) ends: the "
+        f"momentum before is their resultant, because momentum is conserved along the line "
+        f"and across it."
     )
 
 
@@ -154,7 +157,8 @@ def momentum_triangle_alt(
         f"{moving} after, {sig(collision.p_known, figures)} {IMPULSE_UNIT} at "
         f"{sig(collision.angle_known_deg, 2)} degrees above the line (components "
         f"{sig(along_m, 3)} along, {sig(across_m, 3)} across). From its tip, an arrow for "
-        f"{struck} after, {sig(m.magnitude, figures)} {IMPULSE_UNIT} at {sig(m.angle_deg, 3)} "
+        f"{struck} after, {sig(m.magnitude, max(figures, 3))} {IMPULSE_UNIT} at {sig(m.angle_deg, 3)} "
         f"degrees below the line (components {sig(m.along, 3)} along, {sig(m.across, 3)} "
-        f"across), ending at the tip of the dashed arrow, so the triangle closes."
+        f"across), ending at the tip of the dashed arrow: the momentum before is the "
+        f"resultant of the two momenta after."
     )

@@ -373,7 +373,6 @@ def example_5() -> Answers:
         "ex5_upthrust": Value(lift, unit="N", sig_figs=3),
         # The working carries 4 s.f. so that W - U is not rounded part-way (0.118 - 0.0135 = 0.105).
         "ex5_upthrust_kept": Value(lift, unit="N", sig_figs=4),
-        "ex5_weight": Value(sphere_weight, unit="N", sig_figs=3),
         "ex5_weight_kept": Value(sphere_weight, unit="N", sig_figs=4),
         "ex5_drag": Value(drag, unit="N", sig_figs=3),
         # Just after release the speed, and so the drag, is zero: a = (W - U) / m < g.

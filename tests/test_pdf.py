@@ -199,7 +199,7 @@ def test_intro_keeps_its_heading_in_the_contents(site_dir):
     assert contents.startswith(squash(title)), f"the contents should open with {title!r}"
 
 
-@pytest.mark.parametrize("example", ["example_1", "example_2", "example_3", "example_4"])
+@pytest.mark.parametrize("example", ["example_1", "example_2", "example_3", "example_4", "example_5"])
 def test_worked_example_prints_every_answer(example):
     """Notes, "Worked examples": each value the solution states, as physics_figures prints it."""
     book = squashed(BOOK)

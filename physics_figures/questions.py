@@ -819,7 +819,8 @@ def practice_mars_rock() -> Question:
         mark_scheme=(
             Mark(f"$m = \\frac{{W}}{{g}} = \\frac{{{_f(mars_weight, 2)}}}{{{_f(g_mars, 2)}}}$", "C1", "a"),
             Mark(f"$= {_f(mass, 2)}$ kg (the same everywhere)", "A1", "a"),
-            Mark(f"On the Earth $W = mg = {_f(mass, 3)} \\times {G_EARTH}$ (keep the unrounded mass)", "C1", "b"),
+            Mark(f"On the Earth $W = mg = {_f(mass, 4)} \\times {G_EARTH}$ (the unrounded mass: "
+                 f"{_f(mass, 2)} kg would give {_f(weight(_round_sf(mass, 2)), 3)} N)", "C1", "b"),
             Mark(f"$= {_f(earth_weight, 3)}$ N", "A1", "b"),
         ),
     )

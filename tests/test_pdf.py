@@ -28,7 +28,7 @@ ROOT = Path(__file__).resolve().parents[1]
 PDF_DIR = Path(os.environ.get("PDF_DIR", ROOT / "_build" / "latex"))
 BOOK, SHEET, KEY = "dynamics.pdf", "dynamics-questions.pdf", "dynamics-answers.pdf"
 ALL_PDFS = (BOOK, SHEET, KEY)
-MARK_CODE = re.compile(r"\b[MAB]1\b")
+MARK_CODE = re.compile(r"\b[CMAB]1\b")
 
 
 # ----------------------------------------------------------------- reading PDFs

@@ -25,6 +25,7 @@ from .models import (
     acceleration,
     average_force,
     change_in_momentum,
+    drag_at_terminal_velocity,
     drag_force,
     explosion_from_rest,
     kinetic_energy,
@@ -38,6 +39,7 @@ from .models import (
     stream_force,
     time_for_momentum_change,
     total_kinetic_energy,
+    upthrust,
     velocity_after_collision,
     weight,
 )
@@ -195,7 +197,8 @@ def momentum_in_two_dimensions() -> Answers:
         "pucks_p_along_after": Value(p_along_after, unit="N s", sig_figs=3),
         "pucks_q_along": Value(pucks.missing.along, unit="N s", sig_figs=3),
         "pucks_q_across": Value(pucks.missing.across, unit="N s", sig_figs=3),
-        "pucks_q_momentum": Value(pucks.missing.magnitude, unit="N s", sig_figs=2),
+        # 3 s.f. like its components (0.614, 0.460): the notes print 0.77.
+        "pucks_q_momentum": Value(pucks.missing.magnitude, unit="N s", sig_figs=3),
         "pucks_q_angle": Value(pucks.missing.angle_deg, unit="degrees", sig_figs=3),
     }
 
@@ -312,6 +315,11 @@ def example_4() -> Answers:
         "ex4_y_across": Value(pucks.missing.across, unit="N s", sig_figs=3),
         "ex4_y_momentum": Value(pucks.missing.magnitude, unit="N s", sig_figs=3),
         "ex4_y_speed": Value(pucks.speed_missing, unit="m s^-1", sig_figs=3),
+        # The kinetic energy line squares the speed kept to 4 s.f.: 1.74^2 would give 0.454 J.
+        "ex4_y_speed_kept": Value(pucks.speed_missing, unit="m s^-1", sig_figs=4),
+        "ex4_kinetic_energy_y_after_rounded_speed": Value(
+            kinetic_energy(pucks.mass_struck, float(Value(pucks.speed_missing, unit="m s^-1", sig_figs=3).rounded)),
+            unit="J", sig_figs=3),
         "ex4_y_angle": Value(pucks.missing.angle_deg, unit="degrees", sig_figs=3),
         "ex4_kinetic_energy_before": Value(pucks.kinetic_energy_before, unit="J", sig_figs=2),
         "ex4_kinetic_energy_x_after": Value(ke_x_after, unit="J", sig_figs=3),
@@ -319,6 +327,27 @@ def example_4() -> Answers:
         "ex4_kinetic_energy_after": Value(pucks.kinetic_energy_after, unit="J", sig_figs=2),
         "ex4_kinetic_energy_lost": Value(pucks.kinetic_energy_transferred, unit="J",
                                          sig_figs=2),
+    }
+
+
+def example_5() -> Answers:
+    """Worked examples > Example 5 (not in the notes; their "Drag" method and "In a liquid
+    there is also upthrust"): a 0.012 kg metal sphere of volume 1.5 x 10^-6 m^3 falls
+    through oil of density 920 kg m^-3."""
+    sphere = scenarios.EXAMPLE_5
+    mass, volume, oil = sphere["mass"], sphere["volume"], sphere["oil_density"]
+    lift = upthrust(oil, volume)
+    sphere_weight = weight(mass)
+    drag = drag_at_terminal_velocity(sphere_weight, lift)
+    return {
+        "ex5_upthrust": Value(lift, unit="N", sig_figs=3),
+        # The working carries 4 s.f. so that W - U is not rounded part-way (0.118 - 0.0135 = 0.105).
+        "ex5_upthrust_kept": Value(lift, unit="N", sig_figs=4),
+        "ex5_weight_kept": Value(sphere_weight, unit="N", sig_figs=4),
+        "ex5_drag": Value(drag, unit="N", sig_figs=3),
+        # Just after release the speed, and so the drag, is zero: a = (W - U) / m < g.
+        "ex5_initial_acceleration": Value(acceleration(sphere_weight - lift, mass), unit="m s^-2",
+                                          sig_figs=3),
     }
 
 
@@ -343,6 +372,6 @@ ALL = {
         momentum_and_second_law, momentum_time_graph, weight_and_lift, terminal_velocity,
         conservation_of_momentum, elastic_and_inelastic, momentum_in_two_dimensions,
         method_newtons_laws, method_drag, method_force_momentum, method_definitions,
-        example_1, example_2, example_3, example_4, common_mistakes,
+        example_1, example_2, example_3, example_4, example_5, common_mistakes,
     )
 }

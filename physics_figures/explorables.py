@@ -214,7 +214,8 @@ def explorable_data(name):
             "kind": "stick",
             "m1": trolleys["m1"], "u1": trolleys["u1"], "m2": trolleys["m2"], "u2": trolleys["u2"],
             # the explosion starts as the notes' spring trolleys seen from the other side:
-            # A, on the left, moves off to the left
+            # A (0.20 kg), on the left, moves off to the left; B is the 0.30 kg trolley
+            "explosionM1": spring["m2"], "explosionM2": spring["m1"],
             "velocityAAfter": explosion_from_rest(spring["m1"], spring["m2"], spring["v1"]),
         }
     if name == "momentum-triangle":

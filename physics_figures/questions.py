@@ -10,14 +10,24 @@ mistakes: the classic wrong methods, each worked from the same inputs, each with
 feedback that names the mistake and the idea to revisit. The browser marks with this
 data (book/_ext/questions/static/questions.js); the answer key prints it.
 
-Mark-scheme lines are MyST Markdown ($...$ maths); feedback is plain text.
+Mark-scheme lines are MyST Markdown ($...$ maths); feedback is plain text. Each line names
+the part it belongs to and its Cambridge code: C1 for a calculation step (compensatory: a
+right final answer earns it without the working), M1 and a dependent A1 only where a part
+asks to show that, explain or state a principle, A1 for the answer, B1 for a single point.
+
+A part also keeps its working (``Step`` values) and how the answer follows from them, so
+the answers that rounding part-way through would give are computed here, and the browser
+says "rounded part-way" only for those. A part whose answer depends on g names the g = 10
+mistake and the g = 9.8 slip from the same formula.
 """
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
-from dataclasses import KW_ONLY, dataclass
+from collections.abc import Callable
+from dataclasses import KW_ONLY, dataclass, field
 
 from .constants import G_EARTH, G_MOON
 from .models import (
@@ -40,7 +50,7 @@ from .models import (
     velocity_from_momentum,
     weight,
 )
-from .notation import format_number, tex_number
+from .notation import format_number, round_number, tex_number
 
 #: How a part treats direction: a size only, a signed value along a stated positive
 #: direction, or a size plus a direction chosen from a list.
@@ -50,7 +60,14 @@ DEFAULT_MIN_SIG_FIGS = 2
 #: The key is trusted to 3 s.f.: an answer worked with intermediates rounded to 3 s.f.
 #: still agrees with it at that precision.
 DEFAULT_CHECK_SIG_FIGS = 3
-MARK_CODES = ("M1", "A1", "B1", "C1", "")
+MARK_CODES = ("C1", "M1", "A1", "B1", "")
+#: What a part asks for. M1 (with its dependent A1) belongs only to the last three: a plain
+#: calculation earns C1 for its steps and A1 for its answer.
+ASKS = ("calculate", "show that", "explain", "state")
+#: Rounding an intermediate value to these significant figures is "rounding part-way".
+PART_WAY_SIG_FIGS = (2, 3)
+#: The values of g students use instead of the data's 9.81 m s^-2.
+G_TEN, G_NINE_EIGHT = 10.0, 9.8
 
 _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
@@ -113,6 +130,27 @@ class Mistake:
 
 
 @dataclass(frozen=True)
+class Step:
+    """One intermediate quantity of a part's working, e.g. the rock's mass before its weight.
+
+    value: SI, unrounded; sig_figs: the precision the working prints it with.
+    """
+
+    name: str
+    value: float
+    unit: str
+    sig_figs: int = 3
+
+    def __post_init__(self):
+        object.__setattr__(self, "value", float(self.value))
+        _require(math.isfinite(self.value), "value", self.value, "must be a finite number")
+
+
+def _round_sf(value: float, sig_figs: int) -> float:
+    return float(round_number(value, sig_figs))
+
+
+@dataclass(frozen=True)
 class Part:
     """One answer box: prompt, answer (SI units) and how to mark it.
 
@@ -120,7 +158,13 @@ class Part:
     form, for messages. min_sig_figs: fewer is marked "give more significant figures".
     shown_sig_figs: the precision the key prints (the notes' precision).
     direction: "none" (a size), "signed" (positive is ``positive``) or "choice" (a size
-    plus one of ``choices``; the right one is ``answer_direction``).
+    plus one of ``choices``; the right one is ``answer_direction``). sign_means: for a
+    size, what a minus sign would say (e.g. "backwards"), when the signed form is right too.
+    asks: what the part asks for (ASKS); only "show that", "explain" and "state" earn M1.
+    working: the intermediate values, and answer_from: the answer as a function of them
+    (in order); with both, ``rounded_part_way`` lists what rounding them early gives.
+    answer_for_g: the answer as a function of g, for a part whose answer depends on g;
+    it adds the named mistake "used g = 10 m s⁻²" and the g = 9.8 slip.
     """
 
     prompt: str
@@ -137,8 +181,13 @@ class Part:
     choices: tuple[str, ...] = ()
     answer_direction: str = ""
     direction_hint: str = ""
+    sign_means: str = ""
     mistakes: tuple[Mistake, ...] = ()
     revisit: str = ""
+    asks: str = "calculate"
+    working: tuple[Step, ...] = ()
+    answer_from: Callable[..., float] | None = field(default=None, compare=False, repr=False)
+    answer_for_g: Callable[[float], float] | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self):
         object.__setattr__(self, "value", float(self.value))
@@ -155,9 +204,72 @@ class Part:
                  f"must be between 1 and check_sig_figs={self.check_sig_figs}")
         _require(bool(self.revisit.strip()), "revisit", self.revisit,
                  "must name the idea to revisit after a wrong answer")
+        _require(self.asks in ASKS, "asks", self.asks, f"must be one of {ASKS}")
+        _require(not self.sign_means or self.direction == "none", "sign_means", self.sign_means,
+                 "is only for a part that asks for a size (direction 'none')")
+        _require((self.answer_from is None) == (not self.working), "working", self.working,
+                 "and answer_from go together")
+        if self.answer_from is not None:
+            # The working must lead to the answer, or "rounded part-way" would be a guess.
+            worked = self.answer_from(*(step.value for step in self.working))
+            _require(math.isclose(worked, self.value, rel_tol=1e-9, abs_tol=1e-12), "answer_from",
+                     worked, f"must give the part's value {self.value!r} from the working")
+        if self.answer_for_g is not None:
+            at_981 = self.answer_for_g(G_EARTH)
+            _require(math.isclose(at_981, self.value, rel_tol=1e-9), "answer_for_g", at_981,
+                     f"must give the part's value {self.value!r} at g = {G_EARTH}")
+            g_ten = Mistake(
+                "used g = 10 m s⁻²", self._size(self.answer_for_g(G_TEN)),
+                "You used g = 10 m s⁻². The data give g = 9.81 m s⁻²: with 10 the answer "
+                "is out in the second significant figure, which loses the accuracy mark (A1).")
+            object.__setattr__(self, "mistakes", (*self.mistakes, g_ten))
         for mistake in self.mistakes:
             _require(mistake.direction is None or mistake.direction in self.choices,
                      "mistake.direction", mistake.direction, f"must be one of choices={self.choices}")
+
+    def _size(self, value: float) -> float:
+        return value if self.direction == "signed" else abs(value)
+
+    def _accepted(self, value: float) -> bool:
+        """The marker takes value, typed to 3 s.f., as right (it trusts the key to 3 s.f.)."""
+        return number(value, self.check_sig_figs) == number(self.value, self.check_sig_figs)
+
+    def _named(self, value: float) -> bool:
+        return any(m.unit is None and m.direction is None
+                   and number(m.value, self.check_sig_figs) == number(value, self.check_sig_figs)
+                   for m in self.mistakes)
+
+    @property
+    def g_nine_eight(self) -> float | None:
+        """The answer with g = 9.8 m s⁻², when the marker would not already accept it."""
+        if self.answer_for_g is None:
+            return None
+        value = self._size(self.answer_for_g(G_NINE_EIGHT))
+        return None if self._accepted(value) or self._named(value) else value
+
+    @property
+    def rounded_part_way(self) -> tuple[tuple[float, str], ...]:
+        """(answer, what was rounded) for each way of rounding the working to 2 or 3 s.f.
+        early that the marker would not accept as right and that is no named mistake."""
+        if self.answer_from is None:
+            return ()
+        found: dict[str, tuple[float, str]] = {}
+        indices = range(len(self.working))
+        for sig_figs in PART_WAY_SIG_FIGS:
+            for size in range(1, len(self.working) + 1):
+                for chosen in itertools.combinations(indices, size):
+                    values = [_round_sf(step.value, sig_figs) if i in chosen else step.value
+                              for i, step in enumerate(self.working)]
+                    answer = self._size(self.answer_from(*values))
+                    key = number(answer, self.check_sig_figs)
+                    if self._accepted(answer) or self._named(answer) or key in found:
+                        continue
+                    what = " and ".join(
+                        f"the {self.working[i].name} to {number(values[i], sig_figs)}"
+                        f"{' ' if self.working[i].unit != '°' else ''}{unit_text(self.working[i].unit)}"
+                        for i in chosen)
+                    found[key] = (answer, what)
+        return tuple(found.values())
 
     @property
     def answer_text(self) -> str:
@@ -178,21 +290,29 @@ class Part:
             "minSf": self.min_sig_figs, "checkSf": self.check_sig_figs,
             "direction": self.direction, "positive": self.positive, "choices": list(self.choices),
             "answerDirection": self.answer_direction, "directionHint": self.direction_hint,
+            "signMeans": self.sign_means,
             "revisit": self.revisit,
             "mistakes": [
                 {"name": m.name, "value": m.value, "unit": m.unit, "direction": m.direction,
                  "feedback": m.feedback}
                 for m in self.mistakes
             ],
+            "gNineEight": self.g_nine_eight,
+            "roundedPartWay": [{"value": value, "rounded": what} for value, what in self.rounded_part_way],
         }
 
 
 @dataclass(frozen=True)
 class Mark:
-    """One line of the mark scheme (MyST Markdown) and the mark it earns (M1, A1, B1)."""
+    """One line of the mark scheme (MyST Markdown), the mark it earns and its part(s).
+
+    part: the ids of the parts the line belongs to ("a", or "ab" for working that
+    serves two parts); "" in a one-part question means that part.
+    """
 
     text: str
     code: str = ""
+    part: str = ""
 
     def __post_init__(self):
         _require(self.code in MARK_CODES, "code", self.code, f"must be one of {MARK_CODES}")
@@ -217,6 +337,38 @@ class Question:
         _require(len(self.parts) >= 1, "parts", self.parts, "must hold at least one part")
         _require(any(m.code for m in self.mark_scheme), "mark_scheme", self.mark_scheme,
                  "must award at least one mark")
+        self._check_mark_codes()
+
+    def _check_mark_codes(self) -> None:
+        """9702's codes: M1 only where a part asks to show, explain or state; every A1
+        after a C1 or M1 of its own part (an answer alone is a B1)."""
+        earned: set[str] = set()
+        for mark in self.mark_scheme:
+            if not mark.code:
+                continue
+            parts = self.parts_of(mark)
+            for part_id in parts:
+                part = self.parts[self.part_ids.index(part_id)]
+                if mark.code == "M1":
+                    _require(part.asks != "calculate", "code", mark.code,
+                             f"M1 is for show that, explain or state, not for a calculation step "
+                             f"({self.key} ({part_id}): {mark.text!r}); use C1")
+                if mark.code == "A1":
+                    _require(part_id in earned, "code", mark.code,
+                             f"A1 needs a C1 or M1 before it in its part ({self.key} ({part_id}): "
+                             f"{mark.text!r}); a result on its own is B1")
+            if mark.code in ("C1", "M1"):
+                earned.update(parts)
+
+    def parts_of(self, mark: Mark) -> tuple[str, ...]:
+        """The ids of the parts a mark line belongs to."""
+        if not mark.part:
+            _require(len(self.parts) == 1, "part", mark.part,
+                     f"must name the part of each mark line in {self.key}, which has several")
+            return ("a",)
+        for part_id in mark.part:
+            _require(part_id in self.part_ids, "part", mark.part, f"must be among {self.part_ids}")
+        return tuple(mark.part)
 
     @property
     def part_ids(self) -> tuple[str, ...]:
@@ -236,7 +388,15 @@ class Question:
                 "parts": [p.browser_data(i) for i, p in zip(self.part_ids, self.parts, strict=True)]}
 
     def mark_scheme_markdown(self) -> str:
-        return "\n".join(f"- {m.markdown}" for m in self.mark_scheme)
+        """One bullet a line; with several parts, a line opens with its part(s) when they change."""
+        lines, last = [], ""
+        for mark in self.mark_scheme:
+            label = ""
+            if len(self.parts) > 1 and mark.part and mark.part != last:
+                label = f"**({', '.join(mark.part)})** "
+                last = mark.part
+            lines.append(f"- {label}{mark.markdown}")
+        return "\n".join(lines)
 
 
 def _f(value: float, sig_figs: int) -> str:
@@ -288,11 +448,11 @@ def quick_check_1() -> Question:
                  )),
         ),
         mark_scheme=(
-            Mark(rf"$\Delta p = F \Delta t = {_f(force, 2)} \times {_f(duration, 2)}$", "M1"),
+            Mark(rf"$\Delta p = F \Delta t = {_f(force, 2)} \times {_f(duration, 2)}$", "C1", "a"),
             Mark(f"$= {_f(p, 2)}$ N s, so the final momentum is {_f(p, 2)} kg m s$^{{-1}}$ "
-                 "(it started at rest)", "A1"),
-            Mark(rf"Speed $= \frac{{p}}{{m}} = \frac{{{_f(p, 2)}}}{{{_f(mass, 2)}}} = {_f(v, 2)}$ "
-                 "m s$^{-1}$", "A1"),
+                 "(it started at rest)", "A1", "a"),
+            Mark(rf"Speed $= \frac{{p}}{{m}} = \frac{{{_f(p, 2)}}}{{{_f(mass, 2)}}}$", "C1", "b"),
+            Mark(f"$= {_f(v, 2)}$ m s$^{{-1}}$", "A1", "b"),
         ),
     )
 
@@ -308,6 +468,7 @@ def quick_check_2() -> Question:
                 Given("bullet speed", bullet_speed, "m s^-1", 3)),
         parts=(
             Part("recoil speed of the rifle", abs(v), "m s^-1", "speed", units=_M_S, shown_sig_figs=2,
+                 sign_means="it moves backwards, opposite to the bullet",
                  revisit="The total momentum is zero before firing, so it is zero after: "
                          "0 = m₁v₁ + m₂v₂.",
                  mistakes=(
@@ -327,7 +488,7 @@ def quick_check_2() -> Question:
         ),
         mark_scheme=(
             Mark(f"Total momentum is zero before, so $0 = {_f(bullet, 2)} \\times {_f(bullet_speed, 3)} "
-                 f"+ {_f(rifle, 2)}v$", "M1"),
+                 f"+ {_f(rifle, 2)}v$", "C1"),
             Mark(f"$v = {_f(v, 2)}$ m s$^{{-1}}$: the recoil speed is {_f(abs(v), 2)} m s$^{{-1}}$, "
                  "backwards", "A1"),
         ),
@@ -344,6 +505,7 @@ def quick_check_3() -> Question:
         givens=(Given("mass", mass, "kg", 2), Given("drag with the parachute open", open_drag, "N", 2)),
         parts=(
             Part("drag force at terminal velocity", drag, "N", "force", shown_sig_figs=3,
+                 asks="state", answer_for_g=lambda g: weight(mass, g=g),
                  revisit="At terminal velocity the resultant force is zero, so the drag equals the "
                          "weight, mg.",
                  mistakes=(
@@ -358,6 +520,9 @@ def quick_check_3() -> Question:
             Part("acceleration when the parachute opens", a, "m s^-2", "acceleration", units=_M_S2,
                  shown_sig_figs=3, direction="choice", choices=("upwards", "downwards"),
                  answer_direction="upwards",
+                 working=(Step("drag at terminal velocity (her weight)", drag, "N"),),
+                 answer_from=lambda w: acceleration(open_drag - w, mass),
+                 answer_for_g=lambda g: acceleration(open_drag - weight(mass, g=g), mass),
                  direction_hint="The drag (1500 N) is bigger than the weight, so the resultant force "
                                 "and the acceleration are upwards.",
                  revisit="Resultant force = drag − weight; a = resultant force / mass.",
@@ -378,10 +543,10 @@ def quick_check_3() -> Question:
         ),
         mark_scheme=(
             Mark(f"At terminal velocity the resultant force is zero, so drag $= mg = {_f(mass, 2)} "
-                 f"\\times {G_EARTH} = {_f(drag, 3)}$ N", "B1"),
-            Mark(f"$a = \\frac{{{_f(open_drag, 2)} - {_f(drag, 3)}}}{{{_f(mass, 2)}}}$", "M1"),
-            Mark(f"$= {_f(a, 3)}$ m s$^{{-2}}$", "A1"),
-            Mark("**upwards** (she slows down while still falling)", "B1"),
+                 f"\\times {G_EARTH} = {_f(drag, 3)}$ N", "B1", "a"),
+            Mark(f"$a = \\frac{{{_f(open_drag, 2)} - {_f(drag, 3)}}}{{{_f(mass, 2)}}}$", "C1", "b"),
+            Mark(f"$= {_f(a, 3)}$ m s$^{{-2}}$", "A1", "b"),
+            Mark("**upwards** (she slows down while still falling)", "B1", "b"),
         ),
     )
 
@@ -426,12 +591,12 @@ def quick_check_4() -> Question:
                  )),
         ),
         mark_scheme=(
-            Mark(f"Momentum: ${_f(p_before, 2)} = v_1 + {_f(m2, 2)}v_2$", "M1"),
-            Mark(f"Elastic, so relative speeds: ${_f(approach, 2)} = v_2 - v_1$", "M1"),
+            Mark(f"Momentum: ${_f(p_before, 2)} = v_1 + {_f(m2, 2)}v_2$", "C1", "ab"),
+            Mark(f"Elastic, so relative speeds: ${_f(approach, 2)} = v_2 - v_1$", "C1", "ab"),
             Mark(f"Adding: ${_f(p_before + approach * m1, 2)} = {_f(m1 + m2, 1)}v_2$, so "
-                 f"$v_2 = {_f(v2, 2)}$ m s$^{{-1}}$ forwards", "A1"),
+                 f"$v_2 = {_f(v2, 2)}$ m s$^{{-1}}$ forwards", "A1", "b"),
             Mark(f"$v_1 = {_f(v1, 2)}$ m s$^{{-1}}$, i.e. {_f(abs(v1), 2)} m s$^{{-1}}$ back the way it came",
-                 "A1"),
+                 "A1", "a"),
             Mark(f"(Check: kinetic energy {_f(ke_before, 2)} J before; "
                  f"${_f(kinetic_energy(m1, v1), 2)} + {_f(kinetic_energy(m2, v2), 2)} = "
                  f"{_f(total_kinetic_energy((m1, m2), (v1, v2)), 2)}$ J after.)"),
@@ -469,9 +634,9 @@ def quick_check_5() -> Question:
                  )),
         ),
         mark_scheme=(
-            Mark(f"Mass = {_f(mass, 2)} kg (it doesn't change)", "B1"),
-            Mark(f"Weight $= mg = {_f(mass, 2)} \\times {G_MOON}$", "M1"),
-            Mark(f"$= {_f(moon_weight, 3)}$ N", "A1"),
+            Mark(f"Mass = {_f(mass, 2)} kg (it doesn't change)", "B1", "a"),
+            Mark(f"Weight $= mg = {_f(mass, 2)} \\times {G_MOON}$", "C1", "b"),
+            Mark(f"$= {_f(moon_weight, 3)}$ N", "A1", "b"),
         ),
     )
 
@@ -503,7 +668,7 @@ def practice_tennis_ball() -> Question:
         ),
         mark_scheme=(
             Mark(f"$m = {_f(grams, 2)}$ g $= {_f(mass, 2)}$ kg, so $p = mv = {_f(mass, 2)} \\times {_f(speed, 2)}$",
-                 "M1"),
+                 "C1"),
             Mark(f"$= {_f(p, 2)}$ N s", "A1"),
         ),
     )
@@ -554,10 +719,10 @@ def practice_wall_bounce() -> Question:
         ),
         mark_scheme=(
             Mark(f"Away from the wall positive: $\\Delta p = mv - mu = {_f(mass, 2)} \\times {_f(speed_out, 2)} "
-                 f"- {_f(mass, 2)} \\times (-{_f(speed_in, 2)})$", "M1"),
-            Mark(f"$= {_f(dp, 2)}$ N s, away from the wall", "A1"),
-            Mark(f"$F = \\frac{{\\Delta p}}{{\\Delta t}} = \\frac{{{_f(dp, 2)}}}{{{_f(contact, 2)}}}$", "M1"),
-            Mark(f"$= {_f(force, 2)}$ N, away from the wall", "A1"),
+                 f"- {_f(mass, 2)} \\times (-{_f(speed_in, 2)})$", "C1", "a"),
+            Mark(f"$= {_f(dp, 2)}$ N s, away from the wall", "A1", "a"),
+            Mark(f"$F = \\frac{{\\Delta p}}{{\\Delta t}} = \\frac{{{_f(dp, 2)}}}{{{_f(contact, 2)}}}$", "C1", "b"),
+            Mark(f"$= {_f(force, 2)}$ N, away from the wall", "A1", "b"),
         ),
     )
 
@@ -585,7 +750,7 @@ def practice_car_slowing() -> Question:
                  )),
         ),
         mark_scheme=(
-            Mark(f"Resultant force $= {_f(driving, 2)} - {_f(resistive, 2)} = {_f(resultant, 2)}$ N", "M1"),
+            Mark(f"Resultant force $= {_f(driving, 2)} - {_f(resistive, 2)} = {_f(resultant, 2)}$ N", "C1"),
             Mark(f"$a = \\frac{{{_f(resultant, 2)}}}{{{_f(mass, 2)}}} = {_f(a, 2)}$ m s$^{{-2}}$ "
                  "(the car slows down)", "A1"),
         ),
@@ -601,6 +766,7 @@ def practice_lift() -> Question:
         givens=(Given("mass", mass, "kg", 2), Given("acceleration", a_down, "m s^-2", 2)),
         parts=(
             Part("contact force from the floor", contact, "N", "force", shown_sig_figs=3,
+                 answer_for_g=lambda g: lift_contact_force(mass, -a_down, g=g),
                  revisit="Take up as positive: R − mg = ma, with a negative for a downward acceleration.",
                  mistakes=(
                      Mistake("g + a used", lift_contact_force(mass, a_down),
@@ -614,7 +780,7 @@ def practice_lift() -> Question:
                  )),
         ),
         mark_scheme=(
-            Mark(f"Up positive: $R - mg = ma$ with $a = -{_f(a_down, 2)}$ m s$^{{-2}}$", "M1"),
+            Mark(f"Up positive: $R - mg = ma$ with $a = -{_f(a_down, 2)}$ m s$^{{-2}}$", "C1"),
             Mark(f"$R = {_f(mass, 2)}({G_EARTH} - {_f(a_down, 2)}) = {_f(contact, 3)}$ N", "A1"),
         ),
     )
@@ -638,6 +804,8 @@ def practice_mars_rock() -> Question:
                              "You used the Earth's g. The 5.4 N was measured on Mars, so divide by 3.7."),
                  )),
             Part("weight of the rock on the Earth", earth_weight, "N", "weight", shown_sig_figs=3,
+                 working=(Step("mass", mass, "kg"),), answer_from=lambda m: weight(m),
+                 answer_for_g=lambda g: weight(mass, g=g),
                  revisit="The mass is the same on the Earth; W = mg with g = 9.81 m s⁻².",
                  mistakes=(
                      Mistake("weight unchanged", mars_weight,
@@ -648,10 +816,11 @@ def practice_mars_rock() -> Question:
                  )),
         ),
         mark_scheme=(
-            Mark(f"$m = \\frac{{W}}{{g}} = \\frac{{{_f(mars_weight, 2)}}}{{{_f(g_mars, 2)}}} = "
-                 f"{_f(mass, 2)}$ kg (the same everywhere)", "A1"),
-            Mark(f"On the Earth $W = mg = {_f(mass, 3)} \\times {G_EARTH}$", "M1"),
-            Mark(f"$= {_f(earth_weight, 3)}$ N", "A1"),
+            Mark(f"$m = \\frac{{W}}{{g}} = \\frac{{{_f(mars_weight, 2)}}}{{{_f(g_mars, 2)}}}$", "C1", "a"),
+            Mark(f"$= {_f(mass, 2)}$ kg (the same everywhere)", "A1", "a"),
+            Mark(f"On the Earth $W = mg = {_f(mass, 4)} \\times {G_EARTH}$ (the unrounded mass: "
+                 f"{_f(mass, 2)} kg would give {_f(weight(_round_sf(mass, 2)), 3)} N)", "C1", "b"),
+            Mark(f"$= {_f(earth_weight, 3)}$ N", "A1", "b"),
         ),
     )
 
@@ -680,7 +849,7 @@ def practice_hose() -> Question:
                  )),
         ),
         mark_scheme=(
-            Mark(f"$F = \\frac{{\\Delta m}}{{\\Delta t}} v = {_f(per_second, 2)} \\times {_f(speed, 2)}$", "M1"),
+            Mark(f"$F = \\frac{{\\Delta m}}{{\\Delta t}} v = {_f(per_second, 2)} \\times {_f(speed, 2)}$", "C1"),
             Mark(f"$= {_f(force, 2)}$ N", "A1"),
         ),
     )
@@ -711,7 +880,9 @@ def practice_trolleys_stick() -> Question:
                      Mistake("second trolley ignored", momentum(m1, u1) / (m1 + m2),
                              "You left out the 1.0 kg trolley's momentum. It is moving, the other way."),
                  )),
-            Part("kinetic energy transferred to other forms", lost, "J", "energy", shown_sig_figs=2,
+            Part("kinetic energy transferred to other forms", lost, "J", "energy", shown_sig_figs=3,
+                 working=(Step("common velocity", v, "m s^-1", 2),),
+                 answer_from=lambda common: before - kinetic_energy(m1 + m2, common),
                  revisit="Work out the total kinetic energy before and after separately; the "
                          "difference is the energy transferred.",
                  mistakes=(
@@ -727,12 +898,12 @@ def practice_trolleys_stick() -> Question:
         ),
         mark_scheme=(
             Mark(f"${_f(m1, 2)} \\times {_f(u1, 2)} + {_f(m2, 2)} \\times ({_f(u2, 2)}) = "
-                 f"{_f(m1 + m2, 2)}v$", "M1"),
-            Mark(f"$v = {_f(v, 2)}$ m s$^{{-1}}$ in the 2.0 kg trolley's direction", "A1"),
+                 f"{_f(m1 + m2, 2)}v$", "C1", "a"),
+            Mark(f"$v = {_f(v, 2)}$ m s$^{{-1}}$ in the 2.0 kg trolley's direction", "A1", "a"),
             Mark(f"$E_k$ before $= \\tfrac12 \\times {_f(m1, 2)} \\times {_f(u1, 2)}^2 + \\tfrac12 \\times "
                  f"{_f(m2, 2)} \\times {_f(abs(u2), 2)}^2 = {_f(before, 5)}$ J; after $= \\tfrac12 \\times "
-                 f"{_f(m1 + m2, 2)} \\times {_f(v, 2)}^2 = {_f(after, 4)}$ J", "M1"),
-            Mark(f"Transferred $= {_f(before, 5)} - {_f(after, 4)} = {_f(lost, 3)}$ J", "A1"),
+                 f"{_f(m1 + m2, 2)} \\times {_f(v, 2)}^2 = {_f(after, 4)}$ J", "C1", "b"),
+            Mark(f"Transferred $= {_f(before, 5)} - {_f(after, 4)} = {_f(lost, 3)}$ J", "A1", "b"),
         ),
     )
 
@@ -757,7 +928,7 @@ def practice_stopping_time() -> Question:
                  )),
         ),
         mark_scheme=(
-            Mark(f"$\\Delta p = mv = {_f(mass, 2)} \\times {_f(speed, 2)} = {number(dp, 3)}$ N s", "M1"),
+            Mark(f"$\\Delta p = mv = {_f(mass, 2)} \\times {_f(speed, 2)} = {number(dp, 3)}$ N s", "C1"),
             Mark(f"$\\Delta t = \\frac{{\\Delta p}}{{F}} = \\frac{{{number(dp, 3)}}}{{{_f(force, 2)}}} = "
                  f"{_f(duration, 2)}$ s", "A1"),
         ),
@@ -781,11 +952,21 @@ def practice_towing() -> Question:
                  mistakes=(
                      Mistake("resistive forces left out", acceleration(driving, total),
                              "You left out the resistive forces. Resultant = 2400 − 300 − 150 N."),
+                     Mistake("trailer's resistance left out", acceleration(driving - resistive[0], total),
+                             "You left out the 150 N resistive force on the trailer. Treating the car "
+                             "and trailer as one object, every external force counts: "
+                             "2400 − 300 − 150 N."),
+                     Mistake("car's resistance left out", acceleration(driving - resistive[1], total),
+                             "You left out the 300 N resistive force on the car. Treating the car "
+                             "and trailer as one object, every external force counts: "
+                             "2400 − 300 − 150 N."),
                      Mistake("car's mass only", acceleration(driving - sum(resistive), masses[0]),
                              "You used only the car's mass. The driving force accelerates the car "
                              "and the trailer: use the total mass, 1500 kg."),
                  )),
             Part("tension in the tow bar", tension, "N", "force", shown_sig_figs=2,
+                 working=(Step("acceleration", a, "m s^-2", 2),),
+                 answer_from=lambda acc: resistive[1] + masses[1] * acc,
                  revisit="F = ma for the trailer alone: T − resistive force on the trailer = "
                          "trailer mass × a.",
                  mistakes=(
@@ -799,11 +980,11 @@ def practice_towing() -> Question:
         ),
         mark_scheme=(
             Mark(f"Whole: resultant $= {_f(driving, 2)} - {_f(resistive[0], 2)} - {_f(resistive[1], 2)} = "
-                 f"{_f(towed.resultant_force, 3)}$ N", "M1"),
+                 f"{_f(towed.resultant_force, 3)}$ N", "C1", "a"),
             Mark(f"$a = \\frac{{{_f(towed.resultant_force, 3)}}}{{{_f(total, 2)}}} = {_f(a, 2)}$ "
-                 "m s$^{-2}$", "A1"),
-            Mark(f"Trailer alone: $T - {_f(resistive[1], 2)} = {_f(masses[1], 2)} \\times {_f(a, 2)}$", "M1"),
-            Mark(f"$T = {_f(tension, 2)}$ N", "A1"),
+                 "m s$^{-2}$", "A1", "a"),
+            Mark(f"Trailer alone: $T - {_f(resistive[1], 2)} = {_f(masses[1], 2)} \\times {_f(a, 2)}$", "C1", "b"),
+            Mark(f"$T = {_f(tension, 2)}$ N", "A1", "b"),
         ),
     )
 
@@ -814,13 +995,16 @@ def practice_pucks() -> Question:
     p_before = momentum(mass_a, speed_a)
     p_after = momentum(mass_a, speed_after)
     b = missing_momentum(p_before, p_after, angle)
+    components = (Step("component along the line", b.along, "N s"),
+                  Step("component across the line", b.across, "N s"))
     return Question(
         key="practice-pucks",
         givens=(Given("mass", mass_a, "kg", 2), Given("speed before", speed_a, "m s^-1", 2),
                 Given("speed after", speed_after, "m s^-1", 2), Given("angle", angle, "°", 2)),
         parts=(
             Part("momentum of B after the collision", b.magnitude, "N s", "momentum", units=_N_S,
-                 shown_sig_figs=2,
+                 shown_sig_figs=2, working=components,
+                 answer_from=lambda along, across: math.hypot(along, across),
                  revisit="Momentum is a vector: conserve the components along and across the "
                          "original line separately, then combine them with Pythagoras.",
                  mistakes=(
@@ -832,7 +1016,8 @@ def practice_pucks() -> Question:
                              "component along the line: p = √(along² + across²)."),
                  )),
             Part("angle between B's motion and A's original line", b.angle_deg, "°", "angle",
-                 units="° (degrees)", shown_sig_figs=3,
+                 units="° (degrees)", shown_sig_figs=3, working=components,
+                 answer_from=lambda along, across: math.degrees(math.atan2(across, along)),
                  revisit="tan θ = across component / along component, on the other side of the line.",
                  mistakes=(
                      Mistake("same angle as A", angle,
@@ -845,13 +1030,13 @@ def practice_pucks() -> Question:
         ),
         mark_scheme=(
             Mark(f"Along: ${_f(p_before, 2)} = {_f(p_after, 2)} \\cos {_f(angle, 2)}^\\circ + p_{{\\text{{along}}}}$, "
-                 f"so $p_{{\\text{{along}}}} = {_f(b.along, 3)}$ N s", "M1"),
+                 f"so $p_{{\\text{{along}}}} = {_f(b.along, 3)}$ N s", "C1", "ab"),
             Mark(f"Across: $p_{{\\text{{across}}}} = {_f(p_after, 2)} \\sin {_f(angle, 2)}^\\circ = "
-                 f"{_f(b.across, 3)}$ N s", "M1"),
+                 f"{_f(b.across, 3)}$ N s", "C1", "ab"),
             Mark(f"$p_B = \\sqrt{{{_f(b.along, 3)}^2 + {_f(b.across, 3)}^2}} = {_f(b.magnitude, 2)}$ N s",
-                 "A1"),
+                 "A1", "a"),
             Mark(f"$\\theta = \\tan^{{-1}} \\frac{{{_f(b.across, 3)}}}{{{_f(b.along, 3)}}} = "
-                 f"{_f(b.angle_deg, 3)}^\\circ$ on the other side of the line", "A1"),
+                 f"{_f(b.angle_deg, 3)}^\\circ$ on the other side of the line", "A1", "b"),
         ),
     )
 

@@ -74,3 +74,8 @@ EXAMPLE_4 = glancing_collision(
 # Worked examples > Example 1: a 1200 kg car tows a 400 kg trailer; driving force 3000 N,
 # resistive forces 400 N (car) and 200 N (trailer).
 EXAMPLE_1 = towing(3000.0, (1200.0, 400.0), (400.0, 200.0))
+
+# Worked examples > Example 5 (a drag question the notes describe but do not work):
+# CHOSEN a steel-like sphere (density 8000 kg m^-3) falling through oil, so that the
+# upthrust is about a tenth of the weight and the working shows both.
+EXAMPLE_5 = {"mass": 0.012, "volume": 1.5e-6, "oil_density": 920.0}  # kg, m^3, kg m^-3

@@ -235,6 +235,9 @@ UNDERSTAND_PAGES = {
         "Puck P has momentum 1.00 N s and hits puck Q, which is at rest.",
         "Afterwards P has 0.60 N s at 50° to its old line",
         "must end where the arrow before the collision ends",
+        # The physics issue: a collision's triangle is a resultant, not a closed triangle.
+        "So the arrow before is the resultant of the two arrows after, drawn tip to tail",
+        "that picture is for an explosion from rest",
     ]),
 }
 
@@ -264,6 +267,7 @@ GLUED_PAGES = {
     "book/exam/example-2": "example_2",
     "book/exam/example-3": "example_3",
     "book/exam/example-4": "example_4",
+    "book/exam/example-5": "example_5",
     "book/exam/common-mistakes": "common_mistakes",
 }
 
@@ -425,10 +429,19 @@ def test_each_question_type_has_its_method_and_every_variation(site_dir, page):
 
 # --- Exam skills: worked examples ----------------------------------------------------
 
+# The physics issue corrects the notes' table (M1 for calculation steps, "A1 needs the M
+# mark"): 9702 marks calculation steps C1, and keeps M1/A1 for show that, explanations
+# and stated principles.
 MARK_CODES = [
-    ["M1", "method mark: for a correct method, even if the numbers slip."],
-    ["A1", "accuracy mark: for a correct answer; it needs the M mark before it."],
-    ["B1", "mark for a correct result on its own, with no method needed."],
+    ["C1", ("compensatory mark: for a step of a calculation. A right final answer earns it "
+            'without the working, because a bare correct answer gets full marks (except in "show '
+            'that" questions).')],
+    ["M1", ('method mark: for the method in a "show that", an explanation or a stated principle. '
+            "The A1 after it depends on it.")],
+    ["A1", ("accuracy mark: for the answer (to 2 or more significant figures) or the conclusion. "
+            "After an M1 it is given only if the M1 is.")],
+    ["B1", ("independent mark: for a single point on its own, such as a recalled fact, a "
+            "direction, or a one-mark result.")],
 ]
 
 EXAMPLES = {  # page: question phrases with their marks, and solution phrases
@@ -448,7 +461,7 @@ EXAMPLES = {  # page: question phrases with their marks, and solution phrases
         "State and explain whether the collision is elastic. [2]",
         "State the average force exerted on the wall by the ball. [1]",
         "Take the direction the ball bounces back as positive",
-        "the collision is inelastic. B1 B1", "towards the wall (Newton's third law). B1",
+        "so the collision is inelastic. A1", "towards the wall (Newton's third law). B1",
     ],
     "example-3": [
         "A trolley A of mass 0.60 kg moves at 2.5 m s",
@@ -466,10 +479,52 @@ EXAMPLES = {  # page: question phrases with their marks, and solution phrases
         "angles to X's original direction. [3]"),
         "Calculate the speed of Y and its direction. [2]",
         "Determine whether the collision is elastic. [2]",
-        "on the other side of the line from X. A1", "to X's original direction. A1",
+        "on the other side of the line from X. A1", "to X's original direction. B1",
         "Less than before, so it is inelastic",
+        # The physics issue: the notes square 1.74 and print 0.456, but 1.74^2 gives 0.454;
+        # the working keeps 1.744 so that it gives the printed value.
+        "\\frac{1}{2} \\times 0.30 \\times\\) 1.744\\(^2 =\\) 0.324 \\(+\\) 0.456",
+        "shows the momentum before as the resultant of X's and Y's momenta after, drawn tip to tail",
+    ],
+    "example-5": [
+        "A small metal sphere of mass 0.012 kg and volume 1.5",
+        ("Describe and explain the motion of the sphere from the moment it is released until it "
+         "reaches terminal velocity. [4]"),
+        "Calculate the upthrust on the sphere. [2]",
+        "weight = drag + upthrust", "the density of the oil",
     ],
 }
+
+# Parts of the worked examples that earn M1: they ask to show that, to explain, or to state
+# a principle. Any other part is a calculation or a single point, marked C1/A1 or B1.
+METHOD_MARKED_PARTS = {("example-2", "c"), ("example-3", "a"), ("example-3", "c"), ("example-5", "a")}
+METHOD_WORDS = re.compile(r"\b(Show that|explain|State the principle)", re.IGNORECASE)
+
+
+def _example_parts(source: str, fence: str) -> dict[str, str]:
+    """{part letter: text} of the exercise or solution block of an example page."""
+    block = re.search(rf"(`{{3,}})\{{{fence}\}}.*?\n(.*?)\n\1(?!`)", source, re.DOTALL).group(2)
+    pieces = re.split(r"(?:^|\n)\**\(([a-z])\)\**", block)
+    return dict(zip(pieces[1::2], pieces[2::2], strict=True))
+
+
+@pytest.mark.parametrize("page", [f"example-{n}" for n in range(1, 6)])
+def test_worked_example_marks_follow_9702_codes(page):
+    """No M1 on a calculation step; every A1 after a C1 or M1 of its own part; the codes of
+    each part add up to the [n] its question prints."""
+    source = (ROOT / "book" / "exam" / f"{page}.md").read_text(encoding="utf-8")
+    questions, solutions = _example_parts(source, "exercise"), _example_parts(source, "solution")
+    assert questions.keys() == solutions.keys()
+    for part, question in questions.items():
+        codes = re.findall(r"\*\*([CMAB]1)\*\*", solutions[part])
+        flagged = (page, part) in METHOD_MARKED_PARTS
+        assert flagged == bool(METHOD_WORDS.search(question)), (page, part)
+        if not flagged:
+            assert "M1" not in codes, f"{page} ({part}): M1 on a calculation step"
+        for index, code in enumerate(codes):
+            if code == "A1":
+                assert {"C1", "M1"} & set(codes[:index]), f"{page} ({part}): an A1 with no mark before it"
+        assert len(codes) == int(re.search(r"\*\*\[(\d)\]\*\*", question).group(1)), (page, part)
 
 
 def test_worked_examples_explain_the_mark_codes(site_dir):
@@ -482,8 +537,7 @@ def test_worked_example_shows_the_question_and_hides_the_solution(site_dir, page
     assert_on_page(site_dir, f"book/exam/{page}", EXAMPLES[page])
     html = page_html(site_dir, f"book/exam/{page}")
     assert html.index('class="exercise') < html.index('class="solution dropdown')
-    for code in ("M1", "A1"):
-        assert f"<strong>{code}</strong>" in html
+    assert "<strong>A1</strong>" in html  # the marks are shown in bold, as in a mark scheme
 
 
 # --- Exam skills: mistakes, marks, past papers ----------------------------------------
@@ -507,6 +561,9 @@ GETTING_THE_MARKS = [
     '"Describe and explain"', "Force diagrams:", "Elastic or inelastic:",
     'A number without "so it is inelastic" loses the mark.', "Sketches:", "Units:",
     "Multiple choice:",
+    # The physics issue: what C1, M1, A1, B1 and ecf each mean.
+    "A right final answer earns the C1 marks too", '"Show that": the method is marked M1 and the result A1',
+    "the reason is the M1 and the conclusion the A1", "is a B1 on its own", "(ecf)",
 ]
 
 PAST_QUESTIONS = [
@@ -539,9 +596,55 @@ def test_the_book_has_every_section_of_the_notes(site_dir):
         "book/exam/example-2": "Example 2",
         "book/exam/example-3": "Example 3",
         "book/exam/example-4": "Example 4",
+        "book/exam/example-5": "Example 5",
         "book/exam/common-mistakes": "Common mistakes",
         "book/exam/getting-the-marks": "How to get the marks",
         "book/exam/past-questions": "Past questions to try",
     }
     for page, title in titles.items():
         assert f">{title}" in page_html(site_dir, page), page
+
+
+# --- The physics issue: what a 9702 examiner expects the book to say ------------------
+
+PHYSICS_ISSUE_PHRASES = {
+    # 6: which angle theta is in 2p sin theta.
+    "book/exam/method-force-momentum": [
+        "with \\(\\theta\\) measured from the surface",
+        "it is \\(\\Delta p = 2p\\cos\\theta\\)",
+    ],
+    # 7: the cut string, with its two masses; 16: lifts slowing.
+    "book/exam/method-newtons-laws": [
+        "Two masses hang from a spring, \\(m_1\\) above and \\(m_2\\) below, joined by a string.",
+        "accelerates upwards at \\(\\dfrac{m_2 g}{m_1}\\)", "falls freely",
+        "going up faster or going down and slowing", "going down faster or going up and slowing",
+    ],
+    "book/understand/weight": [
+        "A lift moving down and slowing accelerates upwards, so \\(R = m(g + a)\\)",
+        "A lift moving up and slowing accelerates downwards, so \\(R = m(g - a)\\)",
+    ],
+    # 13: the first and third laws, word for word.
+    "book/exam/method-definitions": [
+        ("Newton's first law: an object stays at rest, or keeps moving at a constant velocity, unless "
+         "a resultant force acts on it."),
+        ("Newton's third law: if body A exerts a force on body B, then B exerts a force on A that is "
+         "equal in magnitude and opposite in direction. The two forces act on different bodies and are "
+         "of the same type."),
+    ],
+    # 14: the syllabus's phrase, and the word in multiple-choice options.
+    "book/understand/elastic-and-inelastic": ["The syllabus calls this a perfectly elastic collision"],
+    "book/understand/momentum-and-second-law": ["is called the impulse of the force",
+                                                "impulse = change in momentum, in N s"],
+}
+
+
+@pytest.mark.parametrize("page", sorted(PHYSICS_ISSUE_PHRASES))
+def test_pages_say_what_a_9702_examiner_expects(site_dir, page):
+    assert_on_page(site_dir, page, PHYSICS_ISSUE_PHRASES[page])
+
+
+def test_worked_examples_list_all_five_examples(site_dir):
+    html = page_html(site_dir, "book/exam/worked-examples")
+    for n in range(1, 6):
+        assert f'href="example-{n}.html' in html
+    assert "drag, upthrust and terminal velocity in a liquid" in page_text(site_dir, "book/exam/worked-examples")

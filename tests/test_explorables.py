@@ -41,9 +41,11 @@ def test_notes_sticking_trolleys_lose_a_quarter_of_their_kinetic_energy():
 def test_notes_spring_trolleys_explosion_seen_from_the_left():
     # Notes, Conservation of momentum: 0.30 kg moves off at 2.0 m/s, the 0.20 kg one at
     # 3.0 m/s the other way. In the lab A (0.20 kg) is on the left and moves left.
-    spring = scenarios.SPRING_TROLLEYS
-    lab = collision_lab("explosion", m1=spring["m2"], m2=spring["m1"],
-                        velocity_a_after=explorable_data("collision-lab")["velocityAAfter"])
+    data = explorable_data("collision-lab")
+    # The explosion starts with the notes' masses, not the sticking trolleys' 3.0 and 1.0 kg.
+    assert (data["explosionM1"], data["explosionM2"]) == (0.20, 0.30)
+    lab = collision_lab("explosion", m1=data["explosionM1"], m2=data["explosionM2"],
+                        velocity_a_after=data["velocityAAfter"])
     assert lab.after == pytest.approx((-3.0, 2.0))
     assert lab.momentum_after == pytest.approx(0)
 

@@ -144,10 +144,24 @@ def test_momentum_arrows_join_tip_to_tail_and_close_the_triangle(collision):
 
 
 def test_pucks_triangle_labels_show_the_notes_values():
-    # Notes: p_Q = 0.77 N s at 36.8 degrees; components 0.614 along, 0.460 across
+    # Notes: p_Q = 0.77 N s at 36.8 degrees; components 0.614 along, 0.460 across.
+    # The physics issue: p_Q to 3 s.f. (0.767) beside its 3 s.f. components, not 0.77.
     texts = " ".join(t.get_text() for t in plot_momentum_triangle(scenarios.PUCKS_PQ).labels)
-    for value in ("1.00 N s", "0.60 N s at 50°", "0.77 N s at 36.8°", "0.614", "0.460"):
+    for value in ("1.00 N s", "0.60 N s at 50°", "0.767 N s at 36.8°", "0.614", "0.460"):
         assert value in texts
+    assert "0.77 N s" not in texts
+
+
+def test_a_collision_triangle_is_drawn_as_a_resultant_not_a_closed_triangle():
+    """At AS level a closed triangle is vectors adding to zero (an explosion from rest);
+    in a collision the momentum before is the resultant of the momenta after."""
+    from physics_figures.figures.vectors import momentum_triangle_alt, momentum_triangle_caption
+
+    for collision, names in ((scenarios.PUCKS_PQ, ("P", "Q")), (scenarios.EXAMPLE_4, ("X", "Y"))):
+        for text in (momentum_triangle_caption(collision, names=names),
+                     momentum_triangle_alt(collision, names=names)):
+            assert "resultant" in text
+            assert "closes" not in text and "closed" not in text
 
 
 # --- third-law pairs (Notes, "Newton's third law") ---

@@ -30,7 +30,7 @@ ROOT = Path(__file__).resolve().parents[1]
 PDF_DIR = Path(os.environ.get("PDF_DIR", ROOT / "_build" / "latex"))
 BOOK, SHEET, KEY = "dynamics.pdf", "dynamics-questions.pdf", "dynamics-answers.pdf"
 ALL_PDFS = (BOOK, SHEET, KEY)
-MARK_CODE = re.compile(r"\b[MAB]1\b")
+MARK_CODE = re.compile(r"\b[CMAB]1\b")
 
 
 # ----------------------------------------------------------------- reading PDFs
@@ -201,7 +201,7 @@ def test_intro_keeps_its_heading_in_the_contents(site_dir):
     assert contents.startswith(squash(title)), f"the contents should open with {title!r}"
 
 
-@pytest.mark.parametrize("example", ["example_1", "example_2", "example_3", "example_4"])
+@pytest.mark.parametrize("example", ["example_1", "example_2", "example_3", "example_4", "example_5"])
 def test_worked_example_prints_every_answer(example):
     """Notes, "Worked examples": each value the solution states, as physics_figures prints it."""
     book = squashed(BOOK)

@@ -38,9 +38,11 @@ def test_quick_check_1_final_momentum_15_n_s_and_speed_7_5():
 
 
 def test_quick_check_2_rifle_recoils_at_1_0_backwards():
-    """Notes, Answers 2: 0 = 0.010 x 400 + 4.0v, v = -1.0 m s^-1: 1.0 m s^-1 backwards."""
+    """Notes, Answers 2: 0 = 0.010 x 400 + 4.0v, v = -1.0 m s^-1: 1.0 m s^-1 backwards.
+    The notes' own signed answer is accepted too (the part says what the minus sign means)."""
     (recoil,) = q.quick_check_2().parts
     assert (shown(recoil), recoil.unit, recoil.direction) == ("1.0", "m s^-1", "none")
+    assert "backwards" in recoil.sign_means
     assert recoil.value == pytest.approx(1.0)
     assert "$v = -1.0$" in q.quick_check_2().mark_scheme_markdown()
     assert "backwards" in q.quick_check_2().mark_scheme_markdown()
@@ -145,6 +147,102 @@ def test_a_badly_made_part_is_refused_with_the_rule(change, message):
         q.Part("p", arguments.pop("value"), "N", "force", **arguments)
 
 
+# ------------------------------------------------------- 9702's mark codes
+
+
+def test_no_question_uses_m1_on_a_calculation_and_every_a1_follows_its_own_c1_or_m1():
+    """9702: calculation steps are C1; M1 (with a dependent A1) only where a part asks to
+    show that, explain or state a principle; an A1 depends on a mark before it in its part."""
+    for question in ALL:
+        earned = set()
+        for mark in question.mark_scheme:
+            parts = question.parts_of(mark) if mark.code else ()
+            for part_id in parts:
+                part = question.parts[question.part_ids.index(part_id)]
+                if mark.code == "M1":
+                    assert part.asks in ("show that", "explain", "state"), (question.key, mark.text)
+                if mark.code == "A1":
+                    assert part_id in earned, (question.key, part_id, mark.text)
+            if mark.code in ("C1", "M1"):
+                earned.update(parts)
+        assert {code for mark in question.mark_scheme for code in [mark.code] if code} <= {"C1", "M1", "A1", "B1"}
+
+
+def test_m1_on_a_calculation_step_is_refused():
+    part = q.Part("force", 1.0, "N", "force", revisit="F = ma")
+    with pytest.raises(ValueError, match="M1 is for show that, explain or state, not for a calculation step"):
+        q.Question("q", (), (part,), (q.Mark("$F = ma$", "M1"), q.Mark("$= 1.0$ N", "A1")))
+    explained = q.Part("force", 1.0, "N", "force", revisit="F = ma", asks="explain")
+    assert q.Question("q", (), (explained,), (q.Mark("drag grows", "M1"), q.Mark("so a falls", "A1"))).marks == 2
+
+
+def test_an_a1_with_no_mark_before_it_in_its_part_is_refused():
+    first = q.Part("mass", 1.0, "kg", "mass", revisit="m = W / g")
+    second = q.Part("weight", 9.81, "N", "weight", revisit="W = mg")
+    with pytest.raises(ValueError, match="A1 needs a C1 or M1 before it in its part"):
+        q.Question("q", (), (first, second), (q.Mark("$m = W/g$", "C1", "a"), q.Mark("$= 1.0$ kg", "A1", "a"),
+                                             q.Mark("$W = 9.81$ N", "A1", "b")))
+    with pytest.raises(ValueError, match="must name the part of each mark line"):
+        q.Question("q", (), (first, second), (q.Mark("$m = W/g$", "C1"),))
+
+
+def test_each_mark_line_names_its_part_in_the_scheme():
+    scheme = q.quick_check_1().mark_scheme_markdown()
+    assert scheme.startswith("- **(a)** ") and "- **(b)** Speed" in scheme
+
+
+def test_the_answer_key_prints_the_number_its_mark_scheme_gives():
+    """Practice 9 printed 6.8 J in the key and 6.75 J in its mark scheme: one number, not two."""
+    for question in ALL:
+        scheme = question.mark_scheme_markdown()
+        for part in question.parts:
+            assert re.search(rf"(?<![\d.]){re.escape(shown(part))}(?!\d)", scheme), (question.key, part.prompt)
+    (_, lost) = q.practice_trolleys_stick().parts
+    assert shown(lost) == "6.75"
+
+
+# ------------------------------------------------------------ g and rounding
+
+#: Every part whose answer depends on g = 9.81 m s^-2, with its answer at g = 10.
+G_PARTS = {
+    ("quick-check-3", 0): 70 * 10.0,  # drag = mg
+    ("quick-check-3", 1): (1500 - 70 * 10.0) / 70,
+    ("practice-lift", 0): 58 * (10.0 - 1.5),
+    ("practice-mars-rock", 1): 5.4 / 3.7 * 10.0,
+}
+
+
+def test_every_part_that_depends_on_g_names_the_g_10_mistake_and_the_g_9_8_slip():
+    for question in ALL:
+        for index, part in enumerate(question.parts):
+            g_ten = [m for m in part.mistakes if m.name == "used g = 10 m s⁻²"]
+            if (question.key, index) in G_PARTS:
+                assert len(g_ten) == 1 and g_ten[0].value == pytest.approx(G_PARTS[question.key, index])
+                assert "A1" in g_ten[0].feedback
+            else:
+                assert not g_ten and part.answer_for_g is None, (question.key, index)
+    drag = q.quick_check_3().parts[0]
+    assert drag.g_nine_eight == pytest.approx(686.0)  # 70 x 9.8: its own message, not "rounding"
+    assert q.quick_check_3().parts[1].g_nine_eight is None  # 11.63 is still 11.6: accepted
+
+
+def test_rounded_part_way_is_what_the_working_gives_with_early_rounding():
+    """Practice 7(b): the mass 5.4/3.7 = 1.459... kg rounded to 1.5 kg gives 14.7 N, not 14.3 N."""
+    rock = q.practice_mars_rock().parts[1]
+    assert [(round(value, 3), what) for value, what in rock.rounded_part_way] == [(14.715, "the mass to 1.5 kg")]
+    # Nothing rounds part-way to the towing slips: 1.4 m s^-2 is a resistive force left out.
+    towing = q.practice_towing().parts[0]
+    assert towing.rounded_part_way == ()
+    assert {m.name for m in towing.mistakes if q.number(m.value, 2) in ("1.4", "1.5")} == {
+        "trailer's resistance left out", "car's resistance left out"}
+
+
+def test_working_that_does_not_lead_to_the_answer_is_refused():
+    with pytest.raises(ValueError, match="answer_from"):
+        q.Part("weight", 14.3, "N", "weight", revisit="W = mg", working=(q.Step("mass", 1.46, "kg"),),
+               answer_from=lambda m: m * 10)
+
+
 def test_a_mark_must_be_a_cambridge_code():
     with pytest.raises(ValueError, match=r"code must be one of .* \(got code='X2'\)"):
         q.Mark("F = ma", "X2")
@@ -197,7 +295,7 @@ def test_html_question_has_labelled_boxes_status_feedback_and_a_hidden_worked_an
     assert '<details class="q-worked" hidden>' in page
     assert "final momentum = " in page  # the answer line for print and no-JS
     key = page[page.index('<details class="q-key"'):]
-    assert "final momentum: 15 N s" in key and "<strong>M1</strong>" in key
+    assert "final momentum: 15 N s" in key and "<strong>C1</strong>" in key
     assert 'href="#question-quick-check-1"' in key
     # The script and styles are added only where a question is asked.
     assert "_static/questions.js" in page and "_static/questions.css" in page
@@ -226,7 +324,7 @@ def test_latex_build_prints_the_question_and_its_key(tmp_path):
     assert result.returncode == 0, result.stderr
     tex = (source / "_out" / "latex" / "book.tex").read_text()
     assert "initially at rest" in tex and "final momentum =" in tex
-    assert "Answer key" in tex and r"\sphinxstylestrong{M1}" in tex
+    assert "Answer key" in tex and r"\sphinxstylestrong{C1}" in tex
 
 
 @pytest.mark.build

@@ -53,7 +53,7 @@ def test_typing_an_answer_and_pressing_enter_marks_it(browser_and_url):
     worked = page.locator("#question-quick-check-4 .q-worked")
     assert worked.is_visible()
     worked.locator("summary").click()
-    assert "M1" in worked.inner_text() and "A1" in worked.inner_text()
+    assert "C1" in worked.inner_text() and "A1" in worked.inner_text()
     assert not errors
     context.close()
 

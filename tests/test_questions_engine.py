@@ -59,6 +59,11 @@ def _cases():
             for mistake in part.mistakes:
                 typed = _answer(part, mistake.value, sig_figs=3, unit=mistake.unit, direction=mistake.direction)
                 yield where, mistake.name, data, typed, ("mistake", mistake.name)
+            # The slips computed from the working get their own message, and only they do.
+            if part.g_nine_eight is not None:
+                yield where, "g = 9.8", data, _answer(part, part.g_nine_eight, sig_figs=3), ("g-9.8", None)
+            for value, what in part.rounded_part_way:
+                yield where, what, data, _answer(part, value, sig_figs=3), ("rounded-part-way", None)
 
 
 CASES = list(_cases())
@@ -83,6 +88,33 @@ def test_every_part_unit_is_read_as_si():
     assert result.returncode == 0, result.stderr
     for unit, parsed in zip(units, json.loads(result.stdout), strict=True):
         assert parsed["ok"] and parsed["readings"][0]["scale"] == 1, unit
+
+
+def test_the_issues_wrong_causes_are_no_longer_given():
+    """Quick check 3(a): 700 N (g = 10) is not "right value"; 686.0 (g = 9.8) and practice 8(a)'s
+    1.4 (a resistive force left out) are not "rounding"; practice 7(b)'s 14.7 N is; practice
+    10(b) takes rad and degrees; quick check 2 takes the notes' own -1.0."""
+    drag = q.quick_check_3().parts[0].browser_data("a")
+    towing = q.practice_towing().parts[0].browser_data("a")
+    rock = q.practice_mars_rock().parts[1].browser_data("b")
+    angle = q.practice_pucks().parts[1].browser_data("b")
+    recoil = q.quick_check_2().parts[0].browser_data("a")
+    results = mark_all([
+        {"part": drag, "answer": {"value": "700", "unit": "N"}},
+        {"part": drag, "answer": {"value": "7.0 x 10^2", "unit": "N"}},
+        {"part": drag, "answer": {"value": "686.0", "unit": "N"}},
+        {"part": towing, "answer": {"value": "1.4", "unit": "m s^-2"}},
+        {"part": rock, "answer": {"value": "14.7", "unit": "N"}},
+        {"part": angle, "answer": {"value": "35.5", "unit": "degrees"}},
+        {"part": angle, "answer": {"value": "0.620", "unit": "rad"}},
+        {"part": recoil, "answer": {"value": "-1.0", "unit": "m s^-1"}},
+        {"part": recoil, "answer": {"value": "- 1.0", "unit": "metres per second"}},
+    ])
+    codes = [(r["code"], r.get("mistake")) for r in results]
+    assert codes == [("mistake", "used g = 10 m s⁻²"), ("mistake", "used g = 10 m s⁻²"), ("g-9.8", None),
+                     ("mistake", "trailer's resistance left out"), ("rounded-part-way", None),
+                     ("correct", None), ("correct", None), ("correct", None), ("correct", None)]
+    assert "mass to 1.5 kg" in results[4]["message"]
 
 
 def test_sign_slip_and_prefix_slip_on_the_quick_check():

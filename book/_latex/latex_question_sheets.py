@@ -197,7 +197,7 @@ def write_sheets(app: Sphinx, exception: Exception | None) -> None:
         return
     _write(app, ANSWERS_TEX, f"{book}: answers and mark schemes",
            "The answer to every question on the question sheet, with its mark scheme "
-           "(M1 method, A1 accuracy, B1 independent mark).",
+           "(C1 calculation step, M1 method, A1 accuracy, B1 independent mark).",
            [_unlinked(key) for key in printed.keys], name_lines=False)
 
 

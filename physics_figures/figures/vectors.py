@@ -2,7 +2,9 @@
 and Example 4), drawn from a :class:`physics_figures.models.two_d.GlancingCollision`.
 
 The momentum before runs along the original line. The two momenta after, joined tip to
-tail, end where it ends: the triangle closes because momentum is conserved. Dotted lines
+tail, end where it ends: the momentum before is their resultant, because momentum is
+conserved. (It is not a closed triangle, three vectors adding to zero: that is an
+explosion from rest.) Dotted lines
 show the components along and across the line that the working uses.
 """
 
@@ -58,8 +60,8 @@ def plot_momentum_triangle(
 ) -> TriangleDiagram:
     """Tip-to-tail momentum triangle with the components of both momenta after.
 
-    ``figures``: significant figures of the momenta after (the notes give 2 for the
-    pucks, 3 for Example 4).
+    ``figures``: significant figures of the given momentum after (the notes give 2 for
+    the pucks, 3 for Example 4); the computed one has at least 3, like its components.
     """
     ax = new_axes(ax, figsize=(5.6, 4.0))
     moving, struck = names
@@ -98,7 +100,7 @@ def plot_momentum_triangle(
             **small,
         ),
         ax.annotate(
-            f"{struck} after:\n{format_number(m.magnitude, figures)} {IMPULSE_UNIT} at {format_number(m.angle_deg, 3)}°",
+            f"{struck} after:\n{format_number(m.magnitude, max(figures, 3))} {IMPULSE_UNIT} at {format_number(m.angle_deg, 3)}°",
             xy=((corner[0] + end[0]) / 2, (corner[1] + end[1]) / 2),
             xytext=(10, 4),
             ha="left",
@@ -138,8 +140,9 @@ def momentum_triangle_caption(collision: GlancingCollision, *, names=("P", "Q"))
     return (
         f"Momentum vector triangle for {moving} hitting {struck}, which was at rest. "
         f"The momenta after, {moving} then {struck}, joined tip to tail, end where the "
-        f"momentum before ({format_number(collision.p_before, 3)} {IMPULSE_UNIT}, dashed) ends: "
-        f"momentum is conserved along the line and across it."
+        f"momentum before ({format_number(collision.p_before, 3)} {IMPULSE_UNIT}, dashed) ends: the "
+        f"momentum before is their resultant, because momentum is conserved along the line "
+        f"and across it."
     )
 
 
@@ -155,7 +158,8 @@ def momentum_triangle_alt(
         f"{moving} after, {format_number(collision.p_known, figures)} {IMPULSE_UNIT} at "
         f"{format_number(collision.angle_known_deg, 2)} degrees above the line (components "
         f"{format_number(along_m, 3)} along, {format_number(across_m, 3)} across). From its tip, an arrow for "
-        f"{struck} after, {format_number(m.magnitude, figures)} {IMPULSE_UNIT} at {format_number(m.angle_deg, 3)} "
+        f"{struck} after, {format_number(m.magnitude, max(figures, 3))} {IMPULSE_UNIT} at {format_number(m.angle_deg, 3)} "
         f"degrees below the line (components {format_number(m.along, 3)} along, {format_number(m.across, 3)} "
-        f"across), ending at the tip of the dashed arrow, so the triangle closes."
+        f"across), ending at the tip of the dashed arrow: the momentum before is the "
+        f"resultant of the two momenta after."
     )

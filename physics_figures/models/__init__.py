@@ -8,6 +8,7 @@ argument, its value and the rule it breaks. Modules:
 * ``momentum_history`` piecewise-linear momentum-time graphs
 * ``drag``             quadratic drag, terminal velocity, the skydive, throwing up
 * ``collisions``       straight-line collisions and explosions
+* ``fluids``           upthrust, and drag at terminal velocity in a fluid
 * ``two_d``            components and glancing collisions
 """
 
@@ -36,6 +37,7 @@ from .drag import (
     velocity_from_rest,
     velocity_slowing_to_terminal,
 )
+from .fluids import drag_at_terminal_velocity, upthrust
 from .momentum import (
     average_force,
     change_in_momentum,
@@ -86,6 +88,7 @@ __all__ = [
     "change_in_momentum",
     "collision_with_energy_kept",
     "components",
+    "drag_at_terminal_velocity",
     "drag_constant_for_terminal_velocity",
     "drag_force",
     "elastic_collision",
@@ -119,6 +122,7 @@ __all__ = [
     "total_kinetic_energy",
     "total_momentum",
     "towing",
+    "upthrust",
     "velocity_after_collision",
     "velocity_from_momentum",
     "velocity_from_rest",

@@ -32,7 +32,7 @@
   /* Read a number as a student writes it. Significant figures are counted as
    * written: a whole number's trailing zeros are ambiguous (1500 has 2 to 4). */
   function parseNumber(text) {
-    var t = normalise(text);
+    var t = normalise(text).replace(/^([+-])\s+(?=[\d.])/, "$1"); // "- 1.0" is -1.0
     if (t === "") return refuse("Type a number, for example 7.5, -0.25 or 1.5e3.");
     if (t.indexOf(",") >= 0) {
       if (/^[+-]?\d{1,3}(,\d{3})+(\.\d*)?$/.test(t)) {
@@ -86,8 +86,27 @@
   };
   var UNPREFIXED = { // symbols that take no prefix
     h: [3600, [0, 0, 1, 0]], min: [60, [0, 0, 1, 0]], sec: [1, [0, 0, 1, 0]], t: [1000, [1, 0, 0, 0]],
-    "°": [1, [0, 0, 0, 1]], deg: [1, [0, 0, 0, 1]], "%": [0.01, [0, 0, 0, 0]]
+    "°": [1, [0, 0, 0, 1]], deg: [1, [0, 0, 0, 1]], rad: [180 / Math.PI, [0, 0, 0, 1]],
+    "%": [0.01, [0, 0, 0, 0]]
   };
+  // Unit names written as words ("newtons", "metres per second squared", "degrees").
+  var UNIT_WORDS = {
+    newton: "N", newtons: "N", joule: "J", joules: "J", watt: "W", watts: "W",
+    kilogram: "kg", kilograms: "kg", gram: "g", grams: "g", metre: "m", metres: "m", meter: "m",
+    meters: "m", kilometre: "km", kilometres: "km", kilometer: "km", kilometers: "km",
+    centimetre: "cm", centimetres: "cm", centimeter: "cm", centimeters: "cm", second: "s",
+    seconds: "s", millisecond: "ms", milliseconds: "ms", hour: "h", hours: "h",
+    degree: "°", degrees: "°", radian: "rad", radians: "rad", per: "/"
+  };
+
+  function unitWords(text) {
+    return text
+      .replace(/\s*\bsquared\b/gi, "^2")
+      .replace(/[A-Za-z]+/g, function (word) {
+        var symbol = UNIT_WORDS[word.toLowerCase()];
+        return symbol === undefined ? word : symbol;
+      });
+  }
   var PREFIXES = { G: 1e9, M: 1e6, k: 1e3, c: 1e-2, m: 1e-3, "µ": 1e-6, "μ": 1e-6, u: 1e-6, n: 1e-9 };
   var QUANTITIES = [
     ["momentum", [1, 1, -1, 0]], ["force", [1, 1, -2, 0]], ["energy", [1, 2, -2, 0]],
@@ -140,7 +159,7 @@
   /* Read a unit typed as text into SI scale and dimensions. Returns every
    * reading (a list of {scale, dims}, fewest symbols first) or an error. */
   function parseUnit(text) {
-    var t = normalise(text).replace(/([A-Za-z°%)])\s*[.·⋅*]\s*(?=[A-Za-zµμ(])/g, "$1 ");
+    var t = unitWords(normalise(text)).replace(/([A-Za-z°%)])\s*[.·⋅*]\s*(?=[A-Za-zµμ(])/g, "$1 ");
     if (t === "") return { ok: true, empty: true, readings: [] };
     var readings = [{ unit: [1, [0, 0, 0, 0]], symbols: 0 }];
     var rest = t, divide = false;
@@ -230,18 +249,18 @@
   /* Compare a typed number with a target (in the same unit) at every reading
    * of its significant figures. The comparison is at the student's last digit,
    * but never finer than checkSf figures of the target: the key is only
-   * trusted that far, so rounding intermediate values to 3 s.f. still passes. */
+   * trusted that far, so rounding intermediate values to 3 s.f. still passes.
+   * match: right to minSf or more. matchFewSf: too few figures, yet still the
+   * key to at least 2 s.f. (700 for 686.7 is not: 7.0 × 10² is g = 10's answer). */
   function compare(number, target, minSf, checkSf) {
-    var result = { match: false, matchFewSf: false, lastDigit: false };
+    var result = { match: false, matchFewSf: false };
     if (target === 0) { result.match = number.value === 0; return result; } // zero has no significant figures
-    var checkPlace = target === 0 ? -Infinity : Math.floor(Math.log10(Math.abs(target)) + 1e-12) - checkSf + 1;
+    var checkPlace = Math.floor(Math.log10(Math.abs(target)) + 1e-12) - checkSf + 1;
     for (var sf = number.sfMax; sf >= number.sfMin; sf--) {
-      var place = Math.max(number.lead - sf + 1, checkPlace);
-      var apart = stepsApart(number.value, target, place);
-      if (apart === 0) {
-        if (sf >= minSf) result.match = true; else result.matchFewSf = true;
-      } else if (apart === 1 && sf === number.sfMax && sf >= 2) {
-        result.lastDigit = true;
+      if (sf >= minSf) {
+        if (stepsApart(number.value, target, Math.max(number.lead - sf + 1, checkPlace)) === 0) result.match = true;
+      } else if (stepsApart(number.value, target, Math.max(number.lead - Math.max(sf, 2) + 1, checkPlace)) === 0) {
+        result.matchFewSf = true;
       }
     }
     if (result.match) result.matchFewSf = false;
@@ -319,13 +338,15 @@
         " Give " + quantity + " in " + units + ".");
     }
 
-    var sign = mode !== "signed" && typed < 0;
+    // A size typed with a minus sign is a slip, unless the part says what the sign means.
+    var signed = mode !== "signed" && typed < 0;
+    var sign = signed && !part.signMeans;
     var result = against(target, reading.scale);
     var directionRight = mode !== "choice" || direction === part.answerDirection;
 
     if (result.match && !sign && directionRight) {
       if (unit.empty) return outcome("missing-unit", "The number is right. Now give the unit: " + units + ".");
-      return outcome("correct", "Correct.");
+      return outcome("correct", signed ? "Correct: the minus sign says " + part.signMeans + "." : "Correct.");
     }
     if (result.match && !sign && mode === "choice" && !direction) {
       return outcome("missing-direction", "The size is right. Now give the direction.");
@@ -334,6 +355,10 @@
     var named = namedMistake(reading.dims, reading.scale);
     if (named) return named;
 
+    if (!unit.empty && reading.scale !== 1 && against(target, 1).match && sameDims(expected.dims, [0, 0, 0, 1])) {
+      return outcome("angle-unit", "That number is right in degrees, but " + superscript(normalise(unitText)) +
+        " is not degrees: 1 rad = 57.3°. Give the angle in ° (degrees).");
+    }
     if (!unit.empty && reading.scale !== 1 && against(target, 1).match) {
       return outcome("prefix", "Check the prefix: " + Notation.formatNumber(typed, number.sfMax) + " " + superscript(part.unit) +
         " would be right, but 1 " + superscript(normalise(unitText)) + " = " + Notation.formatNumber(reading.scale, 1) + " " +
@@ -360,9 +385,17 @@
       return outcome("more-sf", "Right value, but give more significant figures: at least " + minSf +
         (number.sfMin < number.sfMax ? " (zeros at the end of a whole number may not count: write 7.0 × 10², not 700)." : "."));
     }
-    if (result.lastDigit) {
-      return outcome("last-digit", "Very close: the last digit is out by one. That usually comes from rounding a value part-way through: " +
-        "keep the full calculator value until the end, then round.");
+    // Slips computed from the working (physics_figures.questions): nothing else is called rounding.
+    if (number.sfMax >= 2 && typeof part.gNineEight === "number" && against(part.gNineEight, reading.scale).match) {
+      return outcome("g-9.8", "That is the answer with g = 9.8 m s⁻². The data give g = 9.81 m s⁻²: use it, " +
+        "and keep every figure until the end.");
+    }
+    var partWay = part.roundedPartWay || [];
+    for (var i = 0; i < partWay.length; i++) {
+      if (number.sfMax >= 2 && against(partWay[i].value, reading.scale).match) {
+        return outcome("rounded-part-way", "Close, but that is what rounding " + partWay[i].rounded +
+          " part-way through gives. Keep the full calculator value until the end, then round only the answer.");
+      }
     }
     return outcome("wrong", "Not right. " + (part.revisit || "Check your method and your arithmetic."));
   }

@@ -30,6 +30,7 @@
       var input = el("input", { type: "radio", name: id.replace(/-\d+$/, "") + "-" + title.id, id: id, value: name, checked: name === kind });
       input.addEventListener("change", function () {
         if (input.checked) {
+          switchMasses(kind === "explosion", name === "explosion");
           kind = name;
           update();
         }
@@ -45,6 +46,20 @@
       lost: new X.Quantity({ label: "Kinetic energy lost", unit: "%", unitSpoken: "per cent", min: -20, max: 100, step: 1, value: 10, onChange: update }),
       va: new X.Quantity({ label: "Velocity of A after the explosion (right +)", unit: MS, unitSpoken: "metres per second", min: -10, max: 10, step: 0.1, value: data.velocityAAfter, onChange: update }),
     };
+
+    // An explosion starts on the notes' spring trolleys (0.20 kg and 0.30 kg); going back to a
+    // collision brings back the masses the reader had there.
+    var masses = { explosion: [data.explosionM1, data.explosionM2], collision: null };
+    function switchMasses(wasExplosion, isExplosion) {
+      if (wasExplosion === isExplosion) return;
+      var leaving = [q.m1.value, q.m2.value], coming = isExplosion ? masses.explosion : masses.collision;
+      masses[isExplosion ? "collision" : "explosion"] = leaving;
+      if (!coming) return;
+      q.m1.value = coming[0];
+      q.m1.show();
+      q.m2.value = coming[1];
+      q.m2.show();
+    }
 
     var rows = [
       ["pa", "Momentum of A", P], ["pb", "Momentum of B", P], ["p", "Total momentum", P],

@@ -29,14 +29,17 @@
     });
     var picture = svg("svg", { viewBox: "0 0 " + W + " " + H, class: "ex-plot ex-triangle", role: "img", "aria-label": "Momentum before, and the momenta of P and Q after, drawn tip to tail" });
     var description = new X.Description();
+    var energy = el("p", { class: "ex-verdict ex-energy" });
 
     root.appendChild(
       el("section", { class: "ex-panel", "aria-labelledby": title.id }, [
         title,
         el("p", { class: "ex-hint" }, "Puck P (momentum " + fmt(pIn) + " " + NS + ") hits puck Q at rest. Set P\u2019s momentum afterwards; Q\u2019s follows from conservation of momentum along and across the original line."),
+        el("p", { class: "ex-hint ex-energy-note" }, "Momentum alone allows every setting here, even ones in which the pucks would leave with more kinetic energy than P brought in. A real collision cannot gain kinetic energy (only an explosion, with energy from a store, can), so those outcomes never happen. Which ones they are depends on the masses: the line below works it out for pucks of equal mass."),
         el("div", { class: "ex-controls" }, [size.element, angle.element]),
         picture,
         el("div", { class: "ex-readouts" }, [r.pAlong.element, r.pAcross.element, r.qAlong.element, r.qAcross.element, r.q.element, r.phi.element]),
+        energy,
         description.element,
       ])
     );
@@ -52,11 +55,18 @@
       r.q.set(q.magnitude);
       r.phi.set(q.angleDeg);
       draw(known, q, theta);
+      // Equal masses m: E_k = p^2 / 2m, so the kinetic energy after over before is (p_P^2 + p_Q^2) / p_before^2.
+      var kept = (p * p + q.magnitude * q.magnitude) / (pIn * pIn);
+      var gains = kept > 1 + 1e-9;
+      energy.className = "ex-verdict ex-energy" + (gains ? " ex-refused" : "");
+      energy.textContent = "If P and Q had equal masses, the kinetic energy after would be " + fmt(100 * kept) + "% of that before: " +
+        (gains ? "more than there was, so no real collision could end like this." :
+          kept > 1 - 1e-9 ? "all of it, an elastic collision (P and Q move off at right angles)." : "possible, an inelastic collision.");
       description.set(
         "Along the line: " + fmt(pIn) + " = " + fmt(known[0]) + " + " + fmt(q.along) + ", so Q has " + fmt(q.along) + " " + NS +
         " along it. Across the line: 0 = " + fmt(known[1]) + " \u2212 " + fmt(q.across) + ", so Q has " + fmt(q.across) + " " + NS +
         " across it, on the other side. Q's momentum is " + fmt(q.magnitude) + " " + NS + " at " + fmt(q.angleDeg) +
-        "\u00b0 to the line. Drawn tip to tail, P's and Q's arrows end where the arrow before ends."
+        "\u00b0 to the line. Drawn tip to tail, P's and Q's arrows end where the arrow before ends: it is their resultant. " + energy.textContent
       );
     }
 

@@ -23,11 +23,16 @@ from .collisions import (
     velocity_after_collision,
 )
 from .drag import (
+    OPENING_STEPS,
     WITHIN_TERMINAL,
+    CanopyOpening,
     Skydive,
     ThrowUp,
+    canopy_drag_constant,
     drag_constant_for_terminal_velocity,
     drag_force,
+    earliest_opening,
+    open_canopy,
     skydive,
     terminal_velocity,
     thrown_upwards,
@@ -73,7 +78,9 @@ from .two_d import (
 )
 
 __all__ = [
+    "OPENING_STEPS",
     "WITHIN_TERMINAL",
+    "CanopyOpening",
     "GlancingCollision",
     "MissingMomentum",
     "MomentumHistory",
@@ -86,8 +93,10 @@ __all__ = [
     "change_in_momentum",
     "collision_with_energy_kept",
     "components",
+    "canopy_drag_constant",
     "drag_constant_for_terminal_velocity",
     "drag_force",
+    "earliest_opening",
     "elastic_collision",
     "explosion_from_rest",
     "from_components",
@@ -104,6 +113,7 @@ __all__ = [
     "momentum",
     "momentum_change_between_directions",
     "oblique_bounce_momentum_change",
+    "open_canopy",
     "percentage_kinetic_energy_lost",
     "relative_speed",
     "skydive",

@@ -181,7 +181,7 @@ def collision_lab(kind, *, m1, m2, u1=0.0, u2=0.0, velocity_a_after=None, percen
 def earliest_parachute_opening(mass, body_drag, parachute_drag, *, g=G_EARTH):
     """Earliest time the explorable lets the parachute open.
 
-    The skydiver must be falling faster than 1.01 × the parachute's terminal velocity,
+    The skydiver must be falling faster than 1.01 x the parachute's terminal velocity,
     so that the parachute slows them down to it (models.earliest_opening):
     t = (v_t1 / g) artanh(1.01 v_t2 / v_t1) with v_t = sqrt(m g / k). It may be before C.
     mass: kg (> 0); body_drag, parachute_drag: drag constants k, kg m^-1 (> 0, the

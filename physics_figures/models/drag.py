@@ -213,7 +213,7 @@ class CanopyOpening:
     """The fall while the canopy opens, integrated with classic fixed-step RK4.
 
     Arrays (read-only, OPENING_STEPS + 1 long): time_since_opening s (step i is
-    i × step), velocity m s^-1 (down positive), distance m (fallen since the opening),
+    i x step), velocity m s^-1 (down positive), distance m (fallen since the opening),
     acceleration m s^-2 (= g - k(s) v² / m).
     """
 
@@ -413,7 +413,7 @@ def skydive(mass, *, terminal_velocity_freefall, terminal_velocity_parachute,
 
     mass: kg (> 0); terminal_velocity_freefall, terminal_velocity_parachute: m s^-1
     (> 0, parachute one lower); parachute_opens_at: s, once the skydiver is faster than
-    1.01 × the parachute's terminal velocity (earliest_opening), before the end;
+    1.01 x the parachute's terminal velocity (earliest_opening), before the end;
     opening_duration τ: s (> 0); duration: s, the length of the record, long enough to
     reach the second terminal velocity (point E); g: m s^-2 (> 0); samples: points in
     each closed-form phase (>= 10; the opening adds every tenth integration step).

@@ -1,13 +1,14 @@
 """What the browser explorables need from the models: their starting data and rules.
 
 The explorables (book/_ext/explorables) run in the reader's browser, from a small
-JavaScript port of the closed-form models (static/explorables/models.js). This module
+JavaScript port of the models (static/explorables/models.js: the closed forms, and the
+same fixed-step Runge-Kutta as models.drag.open_canopy while a parachute opens). This module
 
 * serialises each explorable's starting situation from ``scenarios`` into plain data
   (``explorable_data``), which the ``explorable`` directive writes into the page as JSON;
 * holds the Python twins of the few rules the explorables add on top of ``models``
-  (``collision_lab``, ``earliest_parachute_opening``), so that the tests can check
-  the JavaScript against Python on many random inputs.
+  (``collision_lab``, ``earliest_parachute_opening``, ``UNREALISTIC_DECELERATION_IN_G``),
+  so that the tests can check the JavaScript against Python on many random inputs.
 
 SI units throughout; velocities are signed, positive to the right (collisions) or
 downwards (the skydiver).

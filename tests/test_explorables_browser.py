@@ -254,8 +254,8 @@ def test_skydiver_says_why_more_than_15_g_is_unrealistic(visit):
     # Issue 12: at any setting the explorer never shows more than 15 g without saying why.
     box = explorable(visit("skydiver").page, "skydiver")
     set_slider(box, "Mass of the skydiver", "End")  # 120 kg
-    set_slider(box, "Body’s drag constant k (drag = k v²)", "Home")  # fastest freefall
-    set_slider(box, "Parachute’s drag constant k", "End")  # biggest canopy
+    set_slider(box, "Body\u2019s drag constant k (drag = k v\u00b2)", "Home")  # fastest freefall
+    set_slider(box, "Parachute\u2019s drag constant k", "End")  # biggest canopy
     set_slider(box, "Parachute opens at time", "End")
     set_slider(box, "Time the parachute takes to open", "Home")  # quickest opening
     assert value_of(box, "decelG") > 15

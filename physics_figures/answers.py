@@ -146,16 +146,30 @@ def weight_and_lift() -> Answers:
 
 
 def terminal_velocity() -> Answers:
-    """Notes, Understand it > Friction, drag and terminal velocity: the 80 kg skydiver at C."""
+    """Notes, Understand it > Friction, drag and terminal velocity: the 80 kg skydiver at C,
+    the parachute opening (D, the model's largest deceleration) and the ball thrown up."""
     jump = scenarios.SKYDIVER
     # At terminal velocity the drag k v_t^2 has grown to equal the weight.
     drag = drag_force(jump.drag_constant_freefall, jump.terminal_velocity_freefall)
-    # The model opens the parachute instantly: at 50 m/s its drag is (v_t1 / v_t2)^2 weights.
-    opening_drag = drag_force(jump.drag_constant_parachute, jump.terminal_velocity_freefall)
-    opening_drag_in_weights = opening_drag / jump.weight
+    # Were the parachute to open instantly, at 50 m/s its drag would be (v_t1 / v_t2)^2 weights.
+    instant_drag = drag_force(jump.drag_constant_parachute, jump.terminal_velocity_freefall)
+    # The model's canopy fills over opening_duration; D is where the deceleration peaks.
+    t_d, _ = jump.points["D"]
+    peak_drag, peak_deceleration = jump.point_drag["D"], -jump.point_acceleration["D"]
+    ball, vacuum = scenarios.THROWN_BALL, scenarios.THROWN_BALL_IN_VACUUM
     return {
         "skydiver_drag_at_terminal": Value(drag, unit="N", sig_figs=3),
-        "skydiver_opening_drag_in_weights": Value(opening_drag_in_weights, unit="", sig_figs=3),
+        "skydiver_instant_opening_drag_in_weights": Value(instant_drag / jump.weight, unit="",
+                                                          sig_figs=3),
+        "skydiver_opening_duration": Value(jump.opening_duration, unit="s", sig_figs=2),
+        "skydiver_peak_after_opening": Value(t_d - jump.parachute_opens_at, unit="s", sig_figs=1),
+        "skydiver_peak_drag_in_weights": Value(peak_drag / jump.weight, unit="", sig_figs=2),
+        "skydiver_peak_deceleration": Value(peak_deceleration, unit="m s^-2", sig_figs=3),
+        "skydiver_peak_deceleration_in_g": Value(peak_deceleration / jump.g, unit="", sig_figs=2),
+        # The ball thrown up with drag: longer coming down than going up.
+        "ball_time_up": Value(ball.time_to_top, unit="s", sig_figs=3),
+        "ball_time_down": Value(ball.time_of_flight - ball.time_to_top, unit="s", sig_figs=3),
+        "ball_time_up_in_vacuum": Value(vacuum.time_to_top, unit="s", sig_figs=3),
     }
 
 

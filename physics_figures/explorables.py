@@ -1,13 +1,14 @@
 """What the browser explorables need from the models: their starting data and rules.
 
 The explorables (book/_ext/explorables) run in the reader's browser, from a small
-JavaScript port of the closed-form models (static/explorables/models.js). This module
+JavaScript port of the models (static/explorables/models.js: the closed forms, and the
+same fixed-step Runge-Kutta as models.drag.open_canopy while a parachute opens). This module
 
 * serialises each explorable's starting situation from ``scenarios`` into plain data
   (``explorable_data``), which the ``explorable`` directive writes into the page as JSON;
 * holds the Python twins of the few rules the explorables add on top of ``models``
-  (``collision_lab``, ``earliest_parachute_opening``), so that the tests can check
-  the JavaScript against Python on many random inputs.
+  (``collision_lab``, ``earliest_parachute_opening``, ``UNREALISTIC_DECELERATION_IN_G``),
+  so that the tests can check the JavaScript against Python on many random inputs.
 
 SI units throughout; velocities are signed, positive to the right (collisions) or
 downwards (the skydiver).
@@ -22,13 +23,13 @@ from .constants import G_EARTH
 from .models import (
     WITHIN_TERMINAL,
     collision_with_energy_kept,
+    earliest_opening,
     elastic_collision,
     explosion_from_rest,
     percentage_kinetic_energy_lost,
     relative_speed,
     stick_together,
     terminal_velocity,
-    time_to_terminal_velocity,
     total_kinetic_energy,
     total_momentum,
 )
@@ -178,15 +179,22 @@ def collision_lab(kind, *, m1, m2, u1=0.0, u2=0.0, velocity_a_after=None, percen
     )
 
 
-def earliest_parachute_opening(mass, body_drag, *, g=G_EARTH):
-    """Earliest time the explorable lets the parachute open: point C, terminal velocity reached.
+def earliest_parachute_opening(mass, body_drag, parachute_drag, *, g=G_EARTH):
+    """Earliest time the explorable lets the parachute open.
 
-    t_C = (v_t / g) artanh(1 - 0.01) with v_t = sqrt(m g / k) (models.skydive needs the
-    parachute to open at or after C). mass: kg (> 0); body_drag: drag constant k,
-    kg m^-1 (> 0). Returns t_C in s.
+    The skydiver must be falling faster than 1.01 x the parachute's terminal velocity,
+    so that the parachute slows them down to it (models.earliest_opening):
+    t = (v_t1 / g) artanh(1.01 v_t2 / v_t1) with v_t = sqrt(m g / k). It may be before C.
+    mass: kg (> 0); body_drag, parachute_drag: drag constants k, kg m^-1 (> 0, the
+    parachute's larger). Returns t in s.
     """
-    return time_to_terminal_velocity(terminal_velocity(mass, body_drag, g=g), g=g,
-                                     within=WITHIN_TERMINAL)
+    return earliest_opening(terminal_velocity(mass, body_drag, g=g),
+                            terminal_velocity(mass, parachute_drag, g=g), g=g)
+
+
+#: Above this peak deceleration (in g) the skydiver explorer says why the number is
+#: unrealistic: a canopy that opens that hard would injure the skydiver.
+UNREALISTIC_DECELERATION_IN_G = 15.0
 
 
 def explorable_data(name):
@@ -204,6 +212,8 @@ def explorable_data(name):
             "bodyDrag": dive.drag_constant_freefall,
             "parachuteDrag": dive.drag_constant_parachute,
             "parachuteOpensAt": dive.parachute_opens_at,
+            "openingDuration": dive.opening_duration,
+            "unrealisticDecelerationInG": UNREALISTIC_DECELERATION_IN_G,
         }
     if name == "collision-lab":
         # starts on the notes' sticking trolleys; an explosion starts on the spring trolleys

@@ -35,14 +35,17 @@ LIFT_ACCELERATION = 1.5  # m s^-2
 # Understand it > Friction, drag and terminal velocity: an 80 kg skydiver, terminal
 # velocity 50 m s^-1 in freefall and 5.0 m s^-1 with the parachute open.
 # CHOSEN (the notes give no times): the parachute opens at 20 s, well after terminal
-# velocity is reached (point C, 13.5 s), and the record lasts 30 s, so the second
-# terminal velocity (point E, 21.3 s) is followed by a long flat stretch.
+# velocity is reached (point C, 13.5 s), and the canopy takes 2.5 s to fill (a real one
+# takes two or three seconds), which keeps the largest deceleration (D, 0.78 s after the
+# opening) to about 4 g. The record lasts 30 s, so the second terminal velocity (point E,
+# 23.2 s) is followed by a flat stretch.
 SKYDIVER_MASS = 80.0  # kg
 SKYDIVER = skydive(
     SKYDIVER_MASS,
     terminal_velocity_freefall=50.0,
     terminal_velocity_parachute=5.0,
     parachute_opens_at=20.0,
+    opening_duration=2.5,
     duration=30.0,
 )
 

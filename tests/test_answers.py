@@ -38,7 +38,19 @@ PRINTED_IN_NOTES = {
     "terminal_velocity": {
         "skydiver_drag_at_terminal": ("785", "Understand it > Friction, drag: C, 80 x 9.81"),
         # Added note on the model: the notes' terminal velocities give (50 / 5.0)^2 = 100.
-        "skydiver_opening_drag_in_weights": ("100", "Understand it > Friction, drag: D, (50/5.0)²"),
+        "skydiver_instant_opening_drag_in_weights": ("100", "Understand it > Friction, drag: D, (50/5.0)²"),
+        # Not in the notes: the model's canopy opening over 2.5 s (issue 12, CLARIFICATIONS
+        # Physics: D is the peak deceleration, about 4 g, about 0.8 s after the opening).
+        "skydiver_opening_duration": ("2.5", "CLARIFICATIONS, Physics: default opening duration"),
+        "skydiver_peak_after_opening": ("0.8", "CLARIFICATIONS, Physics: about 0.8 s after opening"),
+        "skydiver_peak_drag_in_weights": ("5.0", "model: drag at D, 3960 N / 785 N"),
+        "skydiver_peak_deceleration": ("39.7", "model: (3960 - 785) / 80"),
+        "skydiver_peak_deceleration_in_g": ("4.0", "CLARIFICATIONS, Physics: about 4 g"),
+        # Not in the notes: issue 12 item 15, the model's ball thrown up at 20 m/s with
+        # v_t = 20 m/s: 1.60 s up, 1.80 s down (2.04 s each way in a vacuum).
+        "ball_time_up": ("1.60", "issue 12 (15): (v_t / g) atan(u / v_t)"),
+        "ball_time_down": ("1.80", "issue 12 (15): (v_t / g) asinh(u / v_t)"),
+        "ball_time_up_in_vacuum": ("2.04", "Notes' vacuum throw: u / g = 20 / 9.81"),
     },
     "conservation_of_momentum": {
         "trolleys_common_velocity": ("3.0", "Understand it > Conservation: 3.0 x 4.0 = 4.0v"),

@@ -120,10 +120,24 @@ def test_bad_lab_input_is_refused_with_a_named_argument(kwargs, message):
         collision_lab(**kwargs)
 
 
-def test_earliest_parachute_opening_is_point_c_of_the_notes_skydiver():
-    # Notes' skydiver (80 kg, 50 m/s): C, terminal velocity reached, at 13.5 s.
+def test_earliest_parachute_opening_is_once_the_skydiver_beats_the_parachutes_terminal_velocity():
+    # Issue 12: the parachute may open at any time while the skydiver is faster than the
+    # new terminal velocity, not only after C (13.5 s for the notes' skydiver): here once
+    # the speed from rest passes 1.01 x 5.0 m/s, at 0.517 s.
     dive = scenarios.SKYDIVER
-    assert earliest_parachute_opening(dive.mass, dive.drag_constant_freefall) == pytest.approx(dive.points["C"][0])
+    earliest = earliest_parachute_opening(dive.mass, dive.drag_constant_freefall, dive.drag_constant_parachute)
+    assert round(earliest, 3) == 0.517
+    assert earliest < dive.points["C"][0]
+    assert models.velocity_from_rest(earliest, 50.0) == pytest.approx(5.05)
+    models.skydive(dive.mass, terminal_velocity_freefall=50.0, terminal_velocity_parachute=5.0,
+                   parachute_opens_at=earliest + 1e-6, opening_duration=2.5, duration=30.0)
+
+
+def test_skydiver_page_data_carry_the_opening_duration_and_the_15_g_limit():
+    # CLARIFICATIONS (Physics): an opening-duration slider, default 2.5 s.
+    data = explorable_data("skydiver")
+    assert data["openingDuration"] == scenarios.SKYDIVER.opening_duration == 2.5
+    assert data["unrealisticDecelerationInG"] == 15
 
 
 def test_page_data_are_the_notes_scenarios():

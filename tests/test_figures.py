@@ -181,8 +181,49 @@ def test_each_force_on_the_book_has_an_equal_and_opposite_partner():
 
 def test_velocity_time_alt_text_has_the_key_values():
     alt = book.skydiver_velocity_time(SKYDIVER).alt
-    for value in ("80 kg", "levels at 50 m/s (C", "parachute opens at D", "5.0 m/s (E"):
+    for value in ("80 kg", "levels at 50 m/s (C", "parachute opens at 20 s", "takes 2.5 s to fill",
+                  "The deceleration is largest at D", "5.0 m/s (E"):
         assert value in alt
+
+
+def test_skydiver_words_give_the_peak_deceleration_in_g():
+    # Issue 12: the figures and the free-body diagram show a peak deceleration of a few g
+    # (about 4 g for the notes' skydiver; the instant opening gave 99 g and "78 400 N").
+    in_g = -SKYDIVER.point_acceleration["D"] / SKYDIVER.g
+    assert 2 < in_g < 6
+    for figure in (book.skydiver_velocity_time(SKYDIVER), book.skydiver_resultant_force(SKYDIVER),
+                   book.free_body_skydiver(SKYDIVER)):
+        assert f"about {sig(in_g, 2)} g" in figure.caption
+        assert "4.0 g" in figure.alt
+    free_body = book.free_body_skydiver(SKYDIVER)
+    assert "39.7 m s⁻²" in free_body.caption and "(3960 N)" in free_body.caption
+
+
+def test_resultant_force_graph_shows_the_dip_at_d_on_the_scale():
+    # The canopy fills over 2.5 s: the largest upward force, at D, is about 4 weights and
+    # fits on the graph (the instant opening went off the scale at -77 600 N).
+    graph = plot_resultant_force(SKYDIVER)
+    d = list(SKYDIVER.points).index("D")
+    f_d = SKYDIVER.point_resultant_force["D"]
+    assert graph.markers.get_ydata()[d] == f_d == SKYDIVER.resultant_force.min()
+    assert -6 * SKYDIVER.weight < f_d < -2 * SKYDIVER.weight
+    assert graph.axes.get_ylim()[0] < f_d
+    texts = [t.get_text() for t in graph.axes.texts]
+    assert not any("off the scale" in t for t in texts)
+
+
+def test_the_opening_is_marked_before_d_on_both_graphs():
+    for graph in (plot_velocity_time(SKYDIVER), plot_resultant_force(SKYDIVER)):
+        line, label = graph.opening
+        assert set(line.get_xdata()) == {SKYDIVER.parachute_opens_at}
+        assert SKYDIVER.parachute_opens_at < SKYDIVER.points["D"][0]
+        assert label.get_text() == "parachute opens"
+
+
+def test_thrown_upwards_caption_says_the_ball_takes_longer_to_come_down():
+    # Issue 12 (15): 1.60 s up, 1.80 s down for the ball thrown at 20 m/s with v_t = 20 m/s.
+    caption = book.thrown_upwards(scenarios.THROWN_BALL, scenarios.THROWN_BALL_IN_VACUUM).caption
+    assert "It takes longer to come down (1.80 s) than to go up (1.60 s)." in caption
 
 
 def test_collision_words_give_the_notes_totals():

@@ -12,6 +12,7 @@ from physics_figures import models
 from physics_figures.models import (
     MomentumHistory,
     average_force,
+    canopy_drag_constant,
     collision_with_energy_kept,
     drag_constant_for_terminal_velocity,
     drag_force,
@@ -24,6 +25,7 @@ from physics_figures.models import (
     momentum,
     momentum_change_between_directions,
     oblique_bounce_momentum_change,
+    open_canopy,
     percentage_kinetic_energy_lost,
     skydive,
     stick_together,
@@ -39,7 +41,7 @@ from physics_figures.models import (
 )
 
 NOTES_SKYDIVE = {"terminal_velocity_freefall": 50.0, "terminal_velocity_parachute": 5.0,
-                 "parachute_opens_at": 20.0, "duration": 30.0}
+                 "parachute_opens_at": 20.0, "opening_duration": 2.5, "duration": 30.0}
 
 
 @pytest.mark.parametrize("bad_mass", [-2.0, 0.0])
@@ -214,17 +216,37 @@ def test_parachute_cannot_open_after_the_end_of_the_record():
         skydive(80.0, **arguments)
 
 
-def test_parachute_must_open_after_terminal_velocity_is_reached():
-    arguments = NOTES_SKYDIVE | {"parachute_opens_at": 5.0}
-    with pytest.raises(ValueError, match=r"^parachute_opens_at must be at or after point C, when "
-                                         r"terminal velocity is reached \(13\.5 s\)"):
+def test_parachute_must_open_once_the_skydiver_is_faster_than_its_terminal_velocity():
+    # It may open before C, but not before the speed passes 1.01 x 5.0 m/s (at 0.517 s),
+    # or it could not slow the skydiver down to 5.0 m/s.
+    arguments = NOTES_SKYDIVE | {"parachute_opens_at": 0.5}
+    with pytest.raises(ValueError, match=r"^parachute_opens_at must be after 0\.517 s, when the "
+                                         r"skydiver first falls faster than the parachute's terminal "
+                                         r"velocity \(\+1 %\), so that it slows them down "
+                                         r"\(got parachute_opens_at=0\.5 s\)$"):
         skydive(80.0, **arguments)
+    skydive(80.0, **NOTES_SKYDIVE | {"parachute_opens_at": 0.52})  # just after is fine
+
+
+@pytest.mark.parametrize("tau", [0.0, -1.0])
+def test_the_canopy_must_take_some_time_to_open(tau):
+    arguments = NOTES_SKYDIVE | {"opening_duration": tau}
+    with pytest.raises(ValueError, match=rf"^opening_duration must be positive "
+                                         rf"\(got opening_duration={tau!r} s\)$"):
+        skydive(80.0, **arguments)
+
+
+def test_the_canopy_cannot_have_less_drag_than_the_body():
+    with pytest.raises(ValueError, match=r"^canopy_drag must be at least body_drag=1\.0 kg m\^-1"):
+        canopy_drag_constant(1.0, 1.0, 0.5, 2.5)
+    with pytest.raises(ValueError, match=r"^initial_velocity must not be negative"):
+        open_canopy(80.0, -1.0, body_drag=0.3, canopy_drag=30.0, opening_duration=2.5)
 
 
 def test_record_must_last_until_the_second_terminal_velocity():
     arguments = NOTES_SKYDIVE | {"duration": 20.5}
     with pytest.raises(ValueError, match=r"^duration must reach point E, the parachute terminal "
-                                         r"velocity \(21\.3 s\) \(got duration=20\.5 s\)$"):
+                                         r"velocity \(23\.2 s\) \(got duration=20\.5 s\)$"):
         skydive(80.0, **arguments)
 
 

@@ -49,13 +49,16 @@ def test_skydiver_is_the_notes_skydiver():
 
 
 def test_skydiver_chosen_times_put_every_point_inside_the_record():
-    # The comment in scenarios.py promises C at 13.5 s and E at 21.3 s, with the
-    # parachute opening at 20 s and a 30 s record.
+    # The comment in scenarios.py promises C at 13.5 s, the parachute opening at 20 s and
+    # filling over 2.5 s, the largest deceleration (D) 0.78 s after the opening at about
+    # 4 g, E at 23.2 s and a 30 s record.
     dive = scenarios.SKYDIVER
     times = {label: t for label, (t, _) in dive.points.items()}
     assert_rounds_to(times["C"], 13.5, 3)
-    assert times["D"] == dive.parachute_opens_at == 20.0
-    assert_rounds_to(times["E"], 21.3, 3)
+    assert (dive.parachute_opens_at, dive.opening_duration) == (20.0, 2.5)
+    assert_rounds_to(times["D"] - dive.parachute_opens_at, 0.78, 2)
+    assert_rounds_to(-dive.point_acceleration["D"] / dive.g, 4, 1)
+    assert_rounds_to(times["E"], 23.2, 3)
     assert times["A"] < times["B"] < times["C"] < times["D"] < times["E"] < dive.duration == 30.0
     assert dive.time[0] == 0.0 and dive.time[-1] == 30.0
 

@@ -161,7 +161,9 @@ def thrown_upwards_caption(with_drag: ThrowUp, without_drag: ThrowUp) -> str:
         f"on the way up, reaches {sig(with_drag.max_height, 3)} m instead of "
         f"{sig(without_drag.max_height, 3)} m, sooner, and comes back at "
         f"{sig(with_drag.return_speed, 3)} {VELOCITY_UNIT} instead of "
-        f"{sig(without_drag.return_speed)} {VELOCITY_UNIT}."
+        f"{sig(without_drag.return_speed)} {VELOCITY_UNIT}. It takes longer to come down "
+        f"({sig(with_drag.time_of_flight - with_drag.time_to_top, 3)} s) than to go up "
+        f"({sig(with_drag.time_to_top, 3)} s)."
     )
 
 

@@ -16,7 +16,7 @@ from matplotlib.patches import Circle, Rectangle
 from matplotlib.text import Annotation
 
 from ..models.drag import Skydive
-from ._text import VELOCITY_UNIT, plain, sig
+from ._text import ACCELERATION_UNIT, VELOCITY_UNIT, plain, sig
 from .style import FORCE_COLOURS, book_style, styled
 
 #: Line style of each kind of force, so pairs match in greyscale too.
@@ -134,8 +134,20 @@ def skydiver_free_bodies_caption(skydive: Skydive, points=("A", "C", "D")) -> st
         f"Forces on the {sig(skydive.mass)} kg skydiver at "
         + ", ".join(points[:-1])
         + f" and {points[-1]}, arrow lengths in proportion to the forces (down positive). "
-        "At A there is no drag; at C the drag equals the weight; just after the parachute "
-        "opens (D) the drag is far bigger than the weight."
+        "At A there is no drag; at C the drag equals the weight; "
+        + _at_d(skydive)
+        + "."
+    )
+
+
+def _at_d(skydive: Skydive) -> str:
+    """D in words: the drag, the resultant force and the deceleration, in g too."""
+    drag, decel = skydive.point_drag["D"], -skydive.point_acceleration["D"]
+    return (
+        f"at D, just after the parachute opens, where the deceleration is largest, the drag "
+        f"({sig(drag, 3)} N) is {sig(drag / skydive.weight, 2)} times the weight, so the "
+        f"resultant force is {sig(drag - skydive.weight, 3)} N upwards: a deceleration of "
+        f"{sig(decel, 3)} {ACCELERATION_UNIT}, about {sig(decel / skydive.g, 2)} g"
     )
 
 
@@ -156,7 +168,8 @@ def skydiver_free_bodies_alt(skydive: Skydive, points=("A", "C", "D")) -> str:
         )
     return plain(
         f"Three free-body diagrams of the {sig(skydive.mass)} kg skydiver, a circle with "
-        "vertical arrows: " + "; ".join(parts) + "."
+        "vertical arrows: " + "; ".join(parts) + ". "
+        + (_at_d(skydive)[0].upper() + _at_d(skydive)[1:] + "." if "D" in points else "")
     )
 
 

@@ -2,7 +2,9 @@
 terminal velocity"), drawn from a :class:`physics_figures.models.drag.Skydive`.
 
 Down is positive, as in the notes. Points A to E sit where the model puts them
-(``Skydive.points``); the two terminal velocities are dashed lines.
+(``Skydive.points``); the two terminal velocities are dashed lines. The parachute opens
+over a few seconds, so D, the largest deceleration, comes a little after the opening,
+which is marked with a dotted vertical line.
 """
 
 from __future__ import annotations
@@ -19,7 +21,7 @@ from .style import GUIDE, MAIN, new_axes, styled, unit_label
 
 POINT_LABELS = ("A", "B", "C", "D", "E")
 # Where each letter sits relative to its marker (points), so letters never sit on the curve.
-_LABEL_OFFSETS = {"A": (8, 4), "B": (8, -14), "C": (-4, 8), "D": (-16, -16), "E": (6, -16)}
+_LABEL_OFFSETS = {"A": (8, 4), "B": (8, -14), "C": (-4, 8), "D": (7, 2), "E": (6, -16)}
 
 
 class SkydiveGraph(NamedTuple):
@@ -27,15 +29,17 @@ class SkydiveGraph(NamedTuple):
 
     axes: Axes
     curve: Line2D
-    markers: Line2D  # the points A to E, in that order
+    markers: Line2D  # the model's points of A to E, in that order
     point_labels: dict[str, Text]
     guides: tuple[Line2D, ...]  # reference lines: terminal velocities, or zero and weight
+    opening: tuple[Line2D, Text]  # dotted line and label at the time the parachute opens
 
 
 def _mark_points(ax: Axes, xy: dict[str, tuple[float, float]]) -> tuple[Line2D, dict[str, Text]]:
+    labels = [p for p in POINT_LABELS if p in xy]  # B and C only if reached before opening
     (markers,) = ax.plot(
-        [xy[p][0] for p in POINT_LABELS],
-        [xy[p][1] for p in POINT_LABELS],
+        [xy[p][0] for p in labels],
+        [xy[p][1] for p in labels],
         linestyle="none",
         marker="o",
         markerfacecolor="white",
@@ -43,7 +47,7 @@ def _mark_points(ax: Axes, xy: dict[str, tuple[float, float]]) -> tuple[Line2D, 
         markeredgewidth=1.6,
         zorder=4,
     )
-    labels = {
+    texts = {
         p: ax.annotate(
             p,
             xy=xy[p],
@@ -52,9 +56,9 @@ def _mark_points(ax: Axes, xy: dict[str, tuple[float, float]]) -> tuple[Line2D, 
             fontweight="bold",
             zorder=5,
         )
-        for p in POINT_LABELS
+        for p in labels
     }
-    return markers, labels
+    return markers, texts
 
 
 @styled
@@ -65,10 +69,10 @@ def plot_velocity_time(skydive: Skydive, *, ax: Axes | None = None) -> SkydiveGr
     guides = []
     # labels sit above each dashed line where the curve is far away: the first at the
     # right end (the curve is down at the second terminal velocity there), the second
-    # a fifth of the way in (the curve is high above it there)
+    # from 15 % of the way in (the curve is high above it there, up to the opening)
     for v_t, name, x, ha in (
         (skydive.terminal_velocity_freefall, "terminal velocity", skydive.duration, "right"),
-        (skydive.terminal_velocity_parachute, "with parachute", 0.2 * skydive.duration, "left"),
+        (skydive.terminal_velocity_parachute, "with parachute", 0.15 * skydive.duration, "left"),
     ):
         guides.append(ax.axhline(v_t, color=GUIDE, linestyle="--", linewidth=1.3, zorder=2))
         ax.annotate(
@@ -84,27 +88,49 @@ def plot_velocity_time(skydive: Skydive, *, ax: Axes | None = None) -> SkydiveGr
     markers, labels = _mark_points(ax, dict(skydive.points))
     ax.set_xlim(0, skydive.duration)
     ax.set_ylim(0, skydive.terminal_velocity_freefall * 1.18)
+    opening = _mark_opening(ax, skydive, skydive.velocity_at(skydive.parachute_opens_at))
     ax.set_xlabel(unit_label("time t", "s"))
     ax.set_ylabel(unit_label("velocity v (down)", VELOCITY_UNIT))
-    return SkydiveGraph(ax, curve, markers, labels, tuple(guides))
+    return SkydiveGraph(ax, curve, markers, labels, tuple(guides), opening)
+
+
+def _mark_opening(ax: Axes, skydive: Skydive, curve_at_opening: float) -> tuple[Line2D, Text]:
+    """A dotted line from the time axis up to the curve at the opening, labelled along it,
+    so that D is seen to come after it. Call after the y-limits are set."""
+    t_open = skydive.parachute_opens_at
+    (line,) = ax.plot([t_open, t_open], [ax.get_ylim()[0], curve_at_opening], color=GUIDE,
+                      linestyle=":", linewidth=1.1, zorder=1)
+    label = ax.annotate(
+        "parachute opens",
+        xy=(skydive.parachute_opens_at, 0.03),
+        xycoords=("data", "axes fraction"),
+        xytext=(-3, 0),
+        textcoords="offset points",
+        rotation=90,
+        ha="right",
+        va="bottom",
+        fontsize="small",
+        color=GUIDE,
+    )
+    return line, label
 
 
 @styled
 def plot_resultant_force(
-    skydive: Skydive, *, ax: Axes | None = None, clip_at_weights: float = 2.0
+    skydive: Skydive, *, ax: Axes | None = None, clip_at_weights: float = 5.0
 ) -> SkydiveGraph:
     """Resultant force (down positive) against time, with A-E at the model's points.
 
-    The force just after the parachute opens is many weights upwards, so the
-    axis stops at ``clip_at_weights`` weights and the off-scale value is written
-    next to D.
+    The force just after the parachute opens is several weights upwards (about four for
+    the notes' skydiver, at D). The axis stops at ``clip_at_weights`` weights; a harder
+    opening that goes further has its off-scale value written next to D.
     """
     ax = new_axes(ax)
     (curve,) = ax.plot(skydive.time, skydive.resultant_force, color=MAIN, zorder=3)
     zero = ax.axhline(0, color=GUIDE, linestyle="--", linewidth=1.3, zorder=2)
     w = skydive.weight
     bottom = -clip_at_weights * w
-    points = {p: (skydive.points[p][0], _resultant_at(skydive, p)) for p in POINT_LABELS}
+    points = {p: (t, _resultant_at(skydive, p)) for p, (t, _) in skydive.points.items()}
     shown = {p: (t, max(f, bottom)) for p, (t, f) in points.items()}
     markers, labels = _mark_points(ax, shown)
     f_d = points["D"][1]
@@ -131,9 +157,10 @@ def plot_resultant_force(
     )
     ax.set_xlim(0, skydive.duration)
     ax.set_ylim(bottom * 1.08, w * 1.35)
+    opening = _mark_opening(ax, skydive, w - skydive.drag_at(skydive.parachute_opens_at))
     ax.set_xlabel(unit_label("time t", "s"))
     ax.set_ylabel(unit_label("resultant force (down)", "N"))
-    return SkydiveGraph(ax, curve, markers, labels, (zero, weight_line))
+    return SkydiveGraph(ax, curve, markers, labels, (zero, weight_line), opening)
 
 
 def _resultant_at(skydive: Skydive, point: str) -> float:
@@ -145,13 +172,26 @@ def _time(skydive: Skydive, point: str) -> str:
     return sig(skydive.points[point][0], 2)
 
 
+def _opening(skydive: Skydive) -> str:
+    """How the parachute opens and where D is, in words shared by captions and alt text."""
+    t_open = skydive.parachute_opens_at
+    decel = -skydive.point_acceleration["D"]
+    return (
+        f"The parachute opens at {sig(t_open, 2)} s (dotted line) and takes "
+        f"{sig(skydive.opening_duration, 2)} s to fill. The deceleration is largest at D, "
+        f"{sig(skydive.points['D'][0] - t_open, 2)} s after the opening, where the curve is "
+        f"steepest: {sig(decel, 3)} {ACCELERATION_UNIT}, about {sig(decel / skydive.g, 2)} g"
+    )
+
+
 def velocity_time_caption(skydive: Skydive) -> str:
     v1, v2 = skydive.terminal_velocity_freefall, skydive.terminal_velocity_parachute
     return (
         f"Velocity–time graph of {a_or_an(sig(skydive.mass))} {sig(skydive.mass)} kg skydiver, down positive. "  # noqa: RUF001 (typography)
-        f"The velocity levels off at the terminal velocity {sig(v1)} {VELOCITY_UNIT} (C); "
-        f"the parachute opens at D and the velocity falls to a new terminal velocity of "
-        f"{sig(v2)} {VELOCITY_UNIT} (E). Dashed lines: the two terminal velocities."
+        f"The velocity levels off at the terminal velocity {sig(v1)} {VELOCITY_UNIT} (C). "
+        f"{_opening(skydive)}. The velocity falls steeply, then less and less steeply, to a new "
+        f"terminal velocity of {sig(v2)} {VELOCITY_UNIT} (E). Dashed lines: the two terminal "
+        "velocities."
     )
 
 
@@ -163,7 +203,8 @@ def velocity_time_alt(skydive: Skydive) -> str:
         f"{ACCELERATION_UNIT}, rises ever less steeply through B ({sig(p['B'][1])} "
         f"{VELOCITY_UNIT} at {_time(skydive, 'B')} s) and levels at "
         f"{sig(skydive.terminal_velocity_freefall)} {VELOCITY_UNIT} (C, reached at about "
-        f"{_time(skydive, 'C')} s). The parachute opens at D, t = {_time(skydive, 'D')} s: the "
+        f"{_time(skydive, 'C')} s). {_opening(skydive)} (D is at t = "
+        f"{sig(skydive.points['D'][0], 3)} s, {sig(skydive.points['D'][1], 2)} {VELOCITY_UNIT}). The "
         f"velocity falls steeply, then less and less steeply, and levels at "
         f"{sig(skydive.terminal_velocity_parachute)} {VELOCITY_UNIT} (E, at about "
         f"{_time(skydive, 'E')} s). Dashed horizontal lines mark the two terminal velocities."
@@ -174,9 +215,10 @@ def velocity_time_alt(skydive: Skydive) -> str:
 def resultant_force_caption(skydive: Skydive) -> str:
     return (
         f"Resultant force on the {sig(skydive.mass)} kg skydiver against time, down positive. "
-        f"It starts at the weight, {sig(skydive.weight, 3)} N (A), falls to zero at terminal "
-        f"velocity (C), jumps to a large upward value when the parachute opens (D) and "
-        f"returns to zero (E)."
+        f"It starts at the weight, {sig(skydive.weight, 3)} N (A), and falls to zero at terminal "
+        f"velocity (C). As the parachute fills it swings quickly to a large upward value, "
+        f"largest at D ({sig(_resultant_at(skydive, 'D'), 3)} N, about "
+        f"{sig(-skydive.point_acceleration['D'] / skydive.g, 2)} g), and returns to zero (E)."
     )
 
 
@@ -186,9 +228,12 @@ def resultant_force_alt(skydive: Skydive) -> str:
         f"down positive. At A the resultant force is the whole weight, "
         f"{sig(skydive.weight, 3)} N. It decreases through B "
         f"({sig(_resultant_at(skydive, 'B'), 3)} N) to zero at C, when the drag equals the "
-        f"weight. When the parachute opens at D, t = {_time(skydive, 'D')} s, it jumps to "
-        f"{sig(_resultant_at(skydive, 'D'), 3, group='')} N, that is upwards (off the scale of the "
-        f"graph), then shrinks back to zero at E as the skydiver slows to "
+        f"weight. The parachute opens at t = {sig(skydive.parachute_opens_at, 2)} s and takes "
+        f"{sig(skydive.opening_duration, 2)} s to fill: the resultant force swings within a second "
+        f"to its largest upward value at D, t = {sig(skydive.points['D'][0], 3)} s, "
+        f"{sig(_resultant_at(skydive, 'D'), 3, group='')} N (the minus sign: upwards), a "
+        f"deceleration of about {sig(-skydive.point_acceleration['D'] / skydive.g, 2)} g, then "
+        f"shrinks back to zero at E as the skydiver slows to "
         f"{sig(skydive.terminal_velocity_parachute)} {VELOCITY_UNIT}."
     )
     return plain(text)

@@ -7,9 +7,13 @@ fluid) the terminal velocity is reached when k v_t² = m g - U, and
 
     m dv/dt = m g - U - k v²   (falling, down positive),
 
-which has closed-form solutions (tanh, coth, tan) used here.
+which has closed-form solutions (tanh, coth, tan) used here. The one exception is the
+few seconds while a parachute opens: its drag constant grows with time, so that stretch is
+integrated numerically (classic fixed-step Runge-Kutta, open_canopy), and the closed forms
+are the tests of that integrator.
 """
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
@@ -164,23 +168,132 @@ def _log_cosh(x):
     return x + np.log1p(np.exp(-2 * x)) - np.log(2)
 
 
+def canopy_drag_constant(time_since_opening, body_drag, canopy_drag, opening_duration):
+    """Drag constant while the parachute opens: k = k_body + (k_canopy - k_body) min(1, s / τ)².
+
+    The canopy fills over the opening duration τ: the drag constant grows smoothly (no
+    jump) from the body's value at s = 0 to the canopy's at s = τ, and stays there.
+    time_since_opening s: s (scalar or array; before the opening, s < 0, it is the
+    body's); body_drag, canopy_drag: kg m^-1 (> 0, canopy_drag >= body_drag);
+    opening_duration τ: s (> 0). Returns k in kg m^-1.
+    Raises ValueError for a drag constant or τ <= 0, a canopy drag below the body's, or
+    a value that is not finite.
+    """
+    s = check.number("time_since_opening", time_since_opening, unit="s")
+    k1, k2 = _drag_constants(body_drag, canopy_drag)
+    tau = check.positive("opening_duration", opening_duration, unit="s")
+    return _canopy_k(s, k1, k2, tau)
+
+
+def _drag_constants(body_drag, canopy_drag):
+    k1 = check.positive("body_drag", body_drag, unit="kg m^-1")
+    k2 = check.positive("canopy_drag", canopy_drag, unit="kg m^-1")
+    if k2 < k1:
+        check.fail("canopy_drag", k2, f"must be at least body_drag={k1!r} kg m^-1 (the "
+                   "canopy adds drag)", unit="kg m^-1")
+    return k1, k2
+
+
+def _canopy_k(s, k1, k2, tau):
+    """k(s) without checks; scalar s uses plain floats, in the same order as models.js."""
+    if np.ndim(s) == 0:
+        f = min(1.0, max(0.0, s / tau))
+        return k1 + (k2 - k1) * f * f
+    f = np.clip(np.asarray(s, dtype=float) / tau, 0.0, 1.0)
+    return k1 + (k2 - k1) * f * f
+
+
+#: Steps of the fixed-step Runge-Kutta integration over the opening duration. The
+#: explorer (models.js) takes the same steps, so the two agree to rounding.
+OPENING_STEPS = 2000
+
+
+@dataclass(frozen=True, eq=False)
+class CanopyOpening:
+    """The fall while the canopy opens, integrated with classic fixed-step RK4.
+
+    Arrays (read-only, OPENING_STEPS + 1 long): time_since_opening s (step i is
+    i x step), velocity m s^-1 (down positive), distance m (fallen since the opening),
+    acceleration m s^-2 (= g - k(s) v² / m).
+    """
+
+    step: float
+    time_since_opening: np.ndarray = field(repr=False)
+    velocity: np.ndarray = field(repr=False)
+    distance: np.ndarray = field(repr=False)
+    acceleration: np.ndarray = field(repr=False)
+
+
+def open_canopy(mass, initial_velocity, *, body_drag, canopy_drag, opening_duration, g=G_EARTH,
+                steps=OPENING_STEPS):
+    """Integrate m dv/dt = m g - k(s) v² over the opening, s from 0 to τ (down positive).
+
+    k(s) is canopy_drag_constant. Classic fourth-order Runge-Kutta with `steps` equal
+    steps of τ / steps, for v and the distance fallen together, in plain floats and in
+    the same order of operations as the explorer's JavaScript twin (models.js).
+    mass: kg (> 0); initial_velocity: m s^-1 (>= 0, down); body_drag, canopy_drag:
+    kg m^-1 (> 0, canopy_drag >= body_drag); opening_duration τ: s (> 0); g: m s^-2
+    (> 0); steps: a whole number >= 10. Returns a CanopyOpening.
+    Raises ValueError for values outside those ranges.
+    """
+    m = check.positive("mass", mass, unit="kg")
+    v = check.non_negative("initial_velocity", initial_velocity, unit="m s^-1")
+    k1, k2 = _drag_constants(body_drag, canopy_drag)
+    tau = check.positive("opening_duration", opening_duration, unit="s")
+    g = check.positive("g", g, unit="m s^-2")
+    _check_samples("steps", steps)
+    h = tau / steps
+
+    def rate(s, v):
+        f = min(1.0, s / tau)
+        k = k1 + (k2 - k1) * f * f
+        return g - k * v * v / m
+
+    x = 0.0
+    velocity, distance = [v], [x]
+    for i in range(steps):
+        s = i * h
+        a1 = rate(s, v)
+        v2 = v + h / 2 * a1
+        a2 = rate(s + h / 2, v2)
+        v3 = v + h / 2 * a2
+        a3 = rate(s + h / 2, v3)
+        v4 = v + h * a3
+        a4 = rate(s + h, v4)
+        x = x + h / 6 * (v + 2 * v2 + 2 * v3 + v4)
+        v = v + h / 6 * (a1 + 2 * a2 + 2 * a3 + a4)
+        velocity.append(v)
+        distance.append(x)
+    s = np.arange(steps + 1) * h
+    velocity = np.array(velocity)
+    return CanopyOpening(
+        step=h, time_since_opening=_read_only(s), velocity=_read_only(velocity),
+        distance=_read_only(distance),
+        acceleration=_read_only(g - _canopy_k(s, k1, k2, tau) * velocity * velocity / m))
+
+
 @dataclass(frozen=True, eq=False)
 class Skydive:
     """A skydiver falling from rest, then opening a parachute (Notes' skydiver, A to E).
 
     Down is positive. Quadratic drag D = k v², with k chosen so that the freefall and
-    parachute terminal velocities are the given ones (k = m g / v_t²). The parachute is
-    taken to open instantly, so `time` holds `parachute_opens_at` twice: the first sample
-    is just before the opening, the second just after, so that acceleration, drag and
-    resultant_force show their jump there (the velocity is the same at both).
+    parachute terminal velocities are the given ones (k = m g / v_t²). The canopy opens
+    over `opening_duration` τ from `parachute_opens_at`: the drag constant grows as
+    canopy_drag_constant, from the body's to the canopy's, and the fall over those τ
+    seconds is integrated numerically (open_canopy). Before the opening (tanh) and once
+    the canopy is fully open (coth) the closed forms hold.
 
     Arrays (read-only, same length): time s, velocity m s^-1, distance (fallen) m,
     acceleration m s^-2, drag N, resultant_force N (= weight - drag).
-    points: label -> (t in s, v in m s^-1), located from the model by POINT_RULES.
+    opening: the integration over the opening (a CanopyOpening).
+    points: label -> (t in s, v in m s^-1), located from the model by POINT_RULES; B and
+    C only if the parachute opens after them.
     point_acceleration, point_drag, point_resultant_force: label -> value at that point
-    (at D: just after the parachute opens, where the deceleration and the drag are largest).
+    (at D the deceleration is largest).
     terminal_drag: "C" and "E" -> the drag at exactly that terminal velocity (= the weight);
     the labelled points themselves sit where the velocity is within 1 % of it.
+    The methods velocity_at, drag_constant_at, drag_at and acceleration_at give the model at
+    any time (between steps of the opening by cubic Hermite interpolation, as models.js).
     """
 
     mass: float
@@ -188,10 +301,12 @@ class Skydive:
     terminal_velocity_freefall: float
     terminal_velocity_parachute: float
     parachute_opens_at: float
+    opening_duration: float
     duration: float
     weight: float
     drag_constant_freefall: float
     drag_constant_parachute: float
+    opening: CanopyOpening = field(repr=False)
     time: np.ndarray = field(repr=False)
     velocity: np.ndarray = field(repr=False)
     distance: np.ndarray = field(repr=False)
@@ -209,26 +324,100 @@ class Skydive:
         "A": "the jump: t = 0, v = 0, so no drag and the acceleration is g",
         "B": "on the rising curve, where the velocity is half the freefall terminal velocity",
         "C": "terminal velocity reached: the velocity is within 1 % of the freefall one",
-        "D": "the parachute opens: the drag, and so the deceleration, is largest",
+        "D": "just after the parachute opens, where the deceleration (and the drag) is largest",
         "E": "second terminal velocity reached: the velocity is within 1 % of the parachute one",
     })
 
+    @property
+    def parachute_open_at(self) -> float:
+        """Time the canopy is fully open, s: parachute_opens_at + opening_duration."""
+        return self.parachute_opens_at + self.opening_duration
+
+    def drag_constant_at(self, t):
+        """Drag constant k at time t (s, scalar or array), kg m^-1."""
+        return _scalar_or_array(_canopy_k(np.asarray(t, dtype=float) - self.parachute_opens_at,
+                                          self.drag_constant_freefall,
+                                          self.drag_constant_parachute, self.opening_duration))
+
+    def velocity_at(self, t):
+        """Velocity at time t (s, 0 <= t, scalar or array), m s^-1, down positive."""
+        t = check.non_negative("t", t, unit="s")
+        t_open, v_t1, v_t2, g = (self.parachute_opens_at, self.terminal_velocity_freefall,
+                                 self.terminal_velocity_parachute, self.g)
+        s = np.asarray(t, dtype=float) - t_open
+        opening = self.opening
+        steps = opening.velocity.size - 1
+        h = opening.step
+        # Hermite interpolation between the steps, from v and dv/dt at both ends
+        i = np.clip(np.floor(np.maximum(s, 0.0) / h), 0, steps - 1).astype(int)
+        theta = (s - i * h) / h
+        v0, v1 = opening.velocity[i], opening.velocity[i + 1]
+        a0, a1 = opening.acceleration[i], opening.acceleration[i + 1]
+        one_minus = 1 - theta
+        during = ((1 + 2 * theta) * one_minus * one_minus * v0
+                  + theta * one_minus * one_minus * h * a0
+                  + theta * theta * (3 - 2 * theta) * v1
+                  + theta * theta * (theta - 1) * h * a1)
+        with np.errstate(all="ignore"):  # each branch is only used where it holds
+            before = v_t1 * np.tanh(g * np.asarray(t, dtype=float) / v_t1)
+            after = v_t2 / np.tanh(g * (s - self.opening_duration) / v_t2
+                                   + np.arctanh(v_t2 / opening.velocity[-1]))
+        v = np.where(s < 0, before, np.where(s < self.opening_duration, during, after))
+        return _scalar_or_array(v)
+
+    def drag_at(self, t):
+        """Drag k v² at time t (s), N (up, against the motion)."""
+        v = self.velocity_at(t)
+        return self.drag_constant_at(t) * v * v
+
+    def acceleration_at(self, t):
+        """Acceleration (weight - drag) / m at time t (s), m s^-2, down positive."""
+        return (self.weight - self.drag_at(t)) / self.mass
+
+
+def _check_samples(name, samples):
+    if isinstance(samples, bool) or not isinstance(samples, int | np.integer) or samples < 10:
+        raise ValueError(f"{name} must be a whole number of at least 10 (got {name}={samples!r})")
+
+
+def earliest_opening(terminal_velocity_freefall, terminal_velocity_parachute, *, g=G_EARTH):
+    """Earliest time a parachute can open and still slow the skydiver to its terminal velocity.
+
+    The speed from rest must first pass (1 + WITHIN_TERMINAL) v_t2, so that the skydiver
+    slows down to v_t2 and reaches point E: t = (v_t1 / g) artanh(1.01 v_t2 / v_t1).
+    terminal_velocity_freefall v_t1, terminal_velocity_parachute v_t2: m s^-1 (> 0, with
+    1.01 v_t2 < v_t1); g: m s^-2 (> 0). Returns t in s; opening must be later than this.
+    Raises ValueError for values outside those ranges.
+    """
+    v_t1 = check.positive("terminal_velocity_freefall", terminal_velocity_freefall,
+                          unit="m s^-1")
+    v_t2 = check.positive("terminal_velocity_parachute", terminal_velocity_parachute,
+                          unit="m s^-1")
+    g = check.positive("g", g, unit="m s^-2")
+    if v_t2 * (1 + WITHIN_TERMINAL) >= v_t1:
+        check.fail("terminal_velocity_parachute", v_t2,
+                   f"must be less than terminal_velocity_freefall={v_t1!r} m s^-1 by more "
+                   "than 1 % (the parachute adds drag)", unit="m s^-1")
+    return float(v_t1 / g * np.arctanh(v_t2 * (1 + WITHIN_TERMINAL) / v_t1))
+
 
 def skydive(mass, *, terminal_velocity_freefall, terminal_velocity_parachute,
-            parachute_opens_at, duration, g=G_EARTH, samples=801):
-    """Model a skydive: freefall from rest, then an instant parachute opening.
+            parachute_opens_at, opening_duration, duration, g=G_EARTH, samples=801):
+    """Model a skydive: freefall from rest, then a parachute that opens over a time τ.
 
-    Freefall: v = v_t1 tanh(g t / v_t1). After opening at t_D with speed v_D > v_t2:
-    v = v_t2 coth(g (t - t_D) / v_t2 + arccoth(v_D / v_t2)). Distance fallen from
-    x = (v_t² / g) ln cosh(g t / v_t) and its coth counterpart.
+    Freefall: v = v_t1 tanh(g t / v_t1). From t_open the drag constant grows as
+    canopy_drag_constant and open_canopy integrates the motion over τ. Once the canopy is
+    fully open, at t_full = t_open + τ with speed v_full > v_t2:
+    v = v_t2 coth(g (t - t_full) / v_t2 + arccoth(v_full / v_t2)). Distance fallen from
+    x = (v_t² / g) ln cosh(g t / v_t), the integration, and the coth counterpart.
 
     mass: kg (> 0); terminal_velocity_freefall, terminal_velocity_parachute: m s^-1
-    (> 0, parachute one lower); parachute_opens_at: s, after the freefall terminal
-    velocity is reached (point C) and before the end; duration: s, the length of the
-    record, long enough to reach the second terminal velocity (point E); g: m s^-2 (> 0);
-    samples: points in each phase (>= 10; the parachute phase gets extra points where
-    the speed drops fast). Returns a Skydive.
-    Raises ValueError for any of those rules broken, naming the argument.
+    (> 0, parachute one lower); parachute_opens_at: s, once the skydiver is faster than
+    1.01 x the parachute's terminal velocity (earliest_opening), before the end;
+    opening_duration τ: s (> 0); duration: s, the length of the record, long enough to
+    reach the second terminal velocity (point E); g: m s^-2 (> 0); samples: points in
+    each closed-form phase (>= 10; the opening adds every tenth integration step).
+    Returns a Skydive. Raises ValueError for any of those rules broken, naming the argument.
     """
     mass = check.positive("mass", mass, unit="kg")
     g = check.positive("g", g, unit="m s^-2")
@@ -241,72 +430,85 @@ def skydive(mass, *, terminal_velocity_freefall, terminal_velocity_parachute,
                    f"must be less than terminal_velocity_freefall={v_t1!r} m s^-1 (the "
                    "parachute adds drag)", unit="m s^-1")
     t_open = check.positive("parachute_opens_at", parachute_opens_at, unit="s")
+    tau = check.positive("opening_duration", opening_duration, unit="s")
     duration = check.positive("duration", duration, unit="s")
     if t_open >= duration:
         check.fail("parachute_opens_at", t_open,
                    f"must be before the end of the record, duration={duration!r} s", unit="s")
-    if isinstance(samples, bool) or not isinstance(samples, int | np.integer) or samples < 10:
-        raise ValueError(f"samples must be a whole number of at least 10 (got samples={samples!r})")
-
-    t_c = time_to_terminal_velocity(v_t1, g=g)
-    if t_open < t_c:
+    _check_samples("samples", samples)
+    t_earliest = earliest_opening(v_t1, v_t2, g=g)
+    if t_open <= t_earliest:
         check.fail("parachute_opens_at", t_open,
-                   f"must be at or after point C, when terminal velocity is reached "
-                   f"({t_c:.3g} s)", unit="s")
-    v_open = float(velocity_from_rest(t_open, v_t1, g=g))
-    if v_open <= v_t2 * (1 + WITHIN_TERMINAL):
-        check.fail("terminal_velocity_parachute", v_t2,
-                   f"must be well below the speed when the parachute opens ({v_open:.4g} "
-                   "m s^-1), so that the skydiver slows down", unit="m s^-1")
-    t_e = t_open + time_to_slow_to_terminal(v_open, v_t2, g=g)
+                   f"must be after {t_earliest:.3g} s, when the skydiver first falls faster "
+                   f"than the parachute's terminal velocity (+1 %), so that it slows them down",
+                   unit="s")
+
+    weight = mass * g
+    k1, k2 = weight / v_t1**2, weight / v_t2**2
+    v_open = v_t1 * math.tanh(g * t_open / v_t1)
+    opening = open_canopy(mass, v_open, body_drag=k1, canopy_drag=k2, opening_duration=tau, g=g)
+    t_full, v_full = t_open + tau, float(opening.velocity[-1])
+    v_e = v_t2 * (1 + WITHIN_TERMINAL)
+    # E: the first time the velocity is within 1 % of v_t2, during the opening (between
+    # two steps, linearly) or, usually, on the coth curve after it
+    reached = np.flatnonzero(opening.velocity <= v_e)
+    if reached.size:
+        j = int(reached[0])
+        v_a, v_b = opening.velocity[j - 1], opening.velocity[j]
+        t_e = t_open + opening.time_since_opening[j - 1] + (v_a - v_e) / (v_a - v_b) * opening.step
+    else:
+        t_e = t_full + time_to_slow_to_terminal(v_full, v_t2, g=g)
+    t_e = float(t_e)
     if t_e > duration:
         check.fail("duration", duration,
                    f"must reach point E, the parachute terminal velocity ({t_e:.3g} s)",
                    unit="s")
 
-    # Freefall phase, 0 <= t <= t_open.
-    t_free = np.linspace(0, t_open, samples)
+    # Freefall phase, 0 <= t < t_open.
+    t_free = np.linspace(0, t_open, samples)[:-1]
     v_free = v_t1 * np.tanh(g * t_free / v_t1)
     x_free = v_t1**2 / g * _log_cosh(g * t_free / v_t1)
-    # Parachute phase, t_open <= t <= duration; extra points while the speed drops.
-    t_chute = np.unique(np.concatenate([np.linspace(t_open, duration, samples),
-                                        np.linspace(t_open, t_e, samples)]))
-    c = np.arctanh(v_t2 / v_open)  # arccoth(v_open / v_t2)
-    y = g * (t_chute - t_open) / v_t2 + c
+    x_open = v_t1**2 / g * float(_log_cosh(g * t_open / v_t1))
+    # Opening, t_open <= t < t_full: every tenth step, and the step of largest deceleration.
+    peak = int(np.argmin(opening.acceleration))
+    kept = np.union1d(np.arange(0, opening.velocity.size - 1, 10), [peak])
+    kept = kept[kept < opening.velocity.size - 1]
+    t_opening = t_open + opening.time_since_opening[kept]
+    v_opening = opening.velocity[kept]
+    x_opening = x_open + opening.distance[kept]
+    # Fully open, t_full <= t <= duration; extra points while the speed drops.
+    t_chute = np.unique(np.concatenate([np.linspace(t_full, duration, samples),
+                                        np.linspace(t_full, max(t_e, t_full), samples)]))
+    c = np.arctanh(v_t2 / v_full)  # arccoth(v_full / v_t2)
+    y = g * (t_chute - t_full) / v_t2 + c
     v_chute = v_t2 / np.tanh(y)
     # ln(sinh y / sinh c), written so that it cannot overflow
-    x_chute = x_free[-1] + v_t2**2 / g * (
+    x_chute = x_open + opening.distance[-1] + v_t2**2 / g * (
         (y - c) + np.log1p(-np.exp(-2 * y)) - np.log1p(-np.exp(-2 * c)))
 
-    weight = mass * g
-    k1, k2 = weight / v_t1**2, weight / v_t2**2
-    drag = np.concatenate([k1 * v_free**2, k2 * v_chute**2])
-    time = np.concatenate([t_free, t_chute])
-    velocity = np.concatenate([v_free, v_chute])
+    time = np.concatenate([t_free, t_opening, t_chute])
+    velocity = np.concatenate([v_free, v_opening, v_chute])
+    k = _canopy_k(time - t_open, k1, k2, tau)
+    drag = k * velocity * velocity
     resultant = weight - drag
 
-    t_b = v_t1 / g * np.arctanh(0.5)
-    v_e = v_t2 * (1 + WITHIN_TERMINAL)
-    points = {
-        "A": (0.0, 0.0),
-        "B": (float(t_b), v_t1 / 2),
-        "C": (t_c, v_t1 * (1 - WITHIN_TERMINAL)),
-        "D": (t_open, v_open),
-        "E": (float(t_e), v_e),
-    }
-    point_drag = {
-        "A": 0.0,
-        "B": k1 * (v_t1 / 2) ** 2,
-        "C": k1 * points["C"][1] ** 2,
-        "D": k2 * v_open**2,
-        "E": k2 * v_e**2,
-    }
+    t_b = float(v_t1 / g * np.arctanh(0.5))
+    t_c = time_to_terminal_velocity(v_t1, g=g)
+    points = {"A": (0.0, 0.0)}
+    if t_b < t_open:
+        points["B"] = (t_b, v_t1 / 2)
+    if t_c <= t_open:
+        points["C"] = (t_c, v_t1 * (1 - WITHIN_TERMINAL))
+    points["D"] = (t_open + float(opening.time_since_opening[peak]), float(opening.velocity[peak]))
+    points["E"] = (t_e, v_e)
+    point_drag = {label: float(_canopy_k(t - t_open, k1, k2, tau)) * v * v
+                  for label, (t, v) in points.items()}
     return Skydive(
         mass=mass, g=g, terminal_velocity_freefall=v_t1, terminal_velocity_parachute=v_t2,
-        parachute_opens_at=t_open, duration=duration, weight=weight,
-        drag_constant_freefall=k1, drag_constant_parachute=k2,
+        parachute_opens_at=t_open, opening_duration=tau, duration=duration, weight=weight,
+        drag_constant_freefall=k1, drag_constant_parachute=k2, opening=opening,
         time=_read_only(time), velocity=_read_only(velocity),
-        distance=_read_only(np.concatenate([x_free, x_chute])),
+        distance=_read_only(np.concatenate([x_free, x_opening, x_chute])),
         acceleration=_read_only(resultant / mass), drag=_read_only(drag),
         resultant_force=_read_only(resultant), points=MappingProxyType(points),
         point_acceleration=MappingProxyType(
@@ -359,8 +561,7 @@ def thrown_upwards(launch_speed, *, terminal_velocity=None, g=G_EARTH, samples=4
     """
     u = check.positive("launch_speed", launch_speed, unit="m s^-1")
     g = check.positive("g", g, unit="m s^-2")
-    if isinstance(samples, bool) or not isinstance(samples, int | np.integer) or samples < 10:
-        raise ValueError(f"samples must be a whole number of at least 10 (got samples={samples!r})")
+    _check_samples("samples", samples)
 
     if terminal_velocity is None:
         t_top = u / g

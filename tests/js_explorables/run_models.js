@@ -10,7 +10,7 @@ const models = require(path.join(__dirname, "..", "..", "book", "_ext", "explora
 function run(c) {
   if (c.call === "skydive") {
     const dive = models.skydive(c.opts);
-    const at = (f) => c.times.map((t, i) => f(t, i === c.justBeforeIndex));
+    const at = (f) => c.times.map((t) => f(t));
     return {
       weight: dive.weight,
       terminalVelocityFreefall: dive.terminalVelocityFreefall,
@@ -22,11 +22,15 @@ function run(c) {
       points: dive.points,
       pointDrag: dive.pointDrag,
       pointAcceleration: dive.pointAcceleration,
-      velocity: at((t) => dive.velocityAt(t)),
+      velocity: at(dive.velocityAt),
+      dragConstant: at(dive.dragConstantAt),
       drag: at(dive.dragAt),
       resultantForce: at(dive.resultantForceAt),
       acceleration: at(dive.accelerationAt),
     };
+  }
+  if (c.call === "openCanopy") {
+    return models.openCanopy.apply(null, c.args);
   }
   if (c.call === "momentumHistory") {
     const history = models.momentumHistory(c.times, c.momenta);

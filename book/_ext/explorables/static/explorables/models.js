@@ -1,8 +1,10 @@
-/* Closed-form physics for the explorables: a small port of physics_figures.models.
+/* Physics for the explorables: a small port of physics_figures.models (closed forms,
+ * and the same fixed-step RK4 for the few seconds a parachute takes to open).
  *
  * Every function here has a Python twin (physics_figures.models or
  * physics_figures.explorables) and tests/test_explorables_models.py runs this file
- * under node and checks it against the twin on many random inputs to 1e-9 relative.
+ * under node and checks it against the twin on many random inputs (to 1e-9 relative,
+ * 1e-6 for the integrated skydive).
  * SI units throughout; velocities are signed along a chosen positive direction.
  * Works as a browser global (window.ExplorableModels) and as a node module.
  */
@@ -49,55 +51,136 @@
     return Math.max(0, (vt / g) * (Math.atanh(1 / (1 + WITHIN_TERMINAL)) - Math.atanh(vt / v0)));
   }
 
-  /** Earliest opening the explorable allows: point C (twin: earliest_parachute_opening). */
-  function earliestParachuteOpening(mass, bodyDrag, g) {
-    return timeToTerminalVelocity(terminalVelocity(mass, bodyDrag, g), g);
+  /**
+   * Earliest opening that still slows the skydiver to the parachute's terminal velocity:
+   * the speed from rest must first pass 1.01 v_t2 (twin: models.earliest_opening).
+   */
+  function earliestOpening(vt1, vt2, g) {
+    return (vt1 / g) * Math.atanh((vt2 * (1 + WITHIN_TERMINAL)) / vt1);
+  }
+
+  /** The same from the explorer's sliders (twin: explorables.earliest_parachute_opening). */
+  function earliestParachuteOpening(mass, bodyDrag, parachuteDrag, g) {
+    return earliestOpening(terminalVelocity(mass, bodyDrag, g), terminalVelocity(mass, parachuteDrag, g), g);
+  }
+
+  /** k(s) = k1 + (k2 - k1) min(1, s / tau)^2: the canopy fills over tau (twin: canopy_drag_constant). */
+  function canopyDragConstant(s, k1, k2, tau) {
+    var f = Math.min(1, Math.max(0, s / tau));
+    return k1 + (k2 - k1) * f * f;
+  }
+
+  var OPENING_STEPS = 2000; // as physics_figures.models.drag.OPENING_STEPS
+
+  /**
+   * m dv/ds = m g - k(s) v^2 over the opening, s from 0 to tau, by classic fixed-step RK4
+   * (twin: models.open_canopy, the same steps in the same order, so the two agree to rounding).
+   */
+  function openCanopy(m, v0, k1, k2, tau, g, steps) {
+    var h = tau / steps;
+    function rate(s, v) {
+      var f = Math.min(1, s / tau);
+      var k = k1 + (k2 - k1) * f * f;
+      return g - (k * v * v) / m;
+    }
+    var v = v0, x = 0;
+    var velocity = [v], distance = [x], time = [0], acceleration = [];
+    for (var i = 0; i < steps; i++) {
+      var s = i * h;
+      var a1 = rate(s, v);
+      var v2 = v + (h / 2) * a1;
+      var a2 = rate(s + h / 2, v2);
+      var v3 = v + (h / 2) * a2;
+      var a3 = rate(s + h / 2, v3);
+      var v4 = v + h * a3;
+      var a4 = rate(s + h, v4);
+      x = x + (h / 6) * (v + 2 * v2 + 2 * v3 + v4);
+      v = v + (h / 6) * (a1 + 2 * a2 + 2 * a3 + a4);
+      velocity.push(v);
+      distance.push(x);
+      time.push((i + 1) * h);
+    }
+    for (var j = 0; j <= steps; j++) {
+      var sj = j * h;
+      acceleration.push(g - (canopyDragConstant(sj, k1, k2, tau) * velocity[j] * velocity[j]) / m);
+    }
+    return { step: h, timeSinceOpening: time, velocity: velocity, distance: distance, acceleration: acceleration };
   }
 
   /**
    * A skydive with quadratic drag (twin: physics_figures.models.skydive): free fall from
-   * rest with drag constant bodyDrag, then the parachute (parachuteDrag) opens at
-   * parachuteOpensAt, at or after point C. Down positive. At the opening instant the
-   * parachute's drag acts (point D), unless justBefore is asked for.
+   * rest with drag constant bodyDrag; from parachuteOpensAt the canopy fills over
+   * openingDuration and the drag constant grows to parachuteDrag. Down positive.
+   * Points A to E as the model puts them (B and C only if reached before the opening);
+   * D is where the deceleration is largest.
    */
   function skydive(opts) {
     var g = opts.g;
     var m = opts.mass;
     var tOpen = opts.parachuteOpensAt;
+    var tau = opts.openingDuration;
     var weight = m * g;
     var vt1 = terminalVelocity(m, opts.bodyDrag, g);
     var vt2 = terminalVelocity(m, opts.parachuteDrag, g);
     // the model's drag constants are k = m g / v_t^2, as in physics_figures
     var k1 = weight / (vt1 * vt1);
     var k2 = weight / (vt2 * vt2);
-    var vOpen = velocityFromRest(tOpen, vt1, g);
+    var vOpen = vt1 * Math.tanh((g * tOpen) / vt1);
+    var opening = openCanopy(m, vOpen, k1, k2, tau, g, OPENING_STEPS);
+    var h = opening.step;
+    var vFull = opening.velocity[OPENING_STEPS];
+    var c = Math.atanh(vt2 / vFull); // arcoth(vFull / vt2)
 
+    function dragConstantAt(t) {
+      return canopyDragConstant(t - tOpen, k1, k2, tau);
+    }
     function velocityAt(t) {
-      return t < tOpen ? velocityFromRest(t, vt1, g) : velocitySlowingToTerminal(t - tOpen, vOpen, vt2, g);
+      var s = t - tOpen;
+      if (s < 0) return vt1 * Math.tanh((g * t) / vt1);
+      if (s >= tau) return vt2 / Math.tanh((g * (s - tau)) / vt2 + c);
+      // Hermite interpolation between the steps, from v and dv/dt at both ends
+      var i = Math.min(OPENING_STEPS - 1, Math.max(0, Math.floor(Math.max(s, 0) / h)));
+      var th = (s - i * h) / h, om = 1 - th;
+      var v = opening.velocity, a = opening.acceleration;
+      return (1 + 2 * th) * om * om * v[i] + th * om * om * h * a[i] + th * th * (3 - 2 * th) * v[i + 1] + th * th * (th - 1) * h * a[i + 1];
     }
-    function dragAt(t, justBefore) {
+    function dragAt(t) {
       var v = velocityAt(t);
-      return (t < tOpen || (justBefore && t === tOpen) ? k1 : k2) * v * v;
+      return dragConstantAt(t) * v * v;
     }
-    function resultantForceAt(t, justBefore) {
-      return weight - dragAt(t, justBefore);
+    function resultantForceAt(t) {
+      return weight - dragAt(t);
     }
-    function accelerationAt(t, justBefore) {
-      return resultantForceAt(t, justBefore) / m;
+    function accelerationAt(t) {
+      return resultantForceAt(t) / m;
     }
 
+    // D: the step of largest deceleration (the first, if two are equal)
+    var peak = 0;
+    for (var j = 1; j <= OPENING_STEPS; j++) if (opening.acceleration[j] < opening.acceleration[peak]) peak = j;
+    // E: first within 1 % of v_t2, during the opening (linearly between steps) or on the coth curve
     var vE = vt2 * (1 + WITHIN_TERMINAL);
+    var tE = null;
+    for (var e = 0; e <= OPENING_STEPS; e++) {
+      if (opening.velocity[e] <= vE) {
+        var va = opening.velocity[e - 1], vb = opening.velocity[e];
+        tE = tOpen + opening.timeSinceOpening[e - 1] + ((va - vE) / (va - vb)) * h;
+        break;
+      }
+    }
+    if (tE === null) tE = tOpen + tau + timeToSlowToTerminal(vFull, vt2, g);
+
     var vC = vt1 * (1 - WITHIN_TERMINAL);
-    var points = {
-      A: [0, 0],
-      B: [(vt1 / g) * Math.atanh(0.5), vt1 / 2],
-      C: [timeToTerminalVelocity(vt1, g), vC],
-      D: [tOpen, vOpen],
-      E: [tOpen + timeToSlowToTerminal(vOpen, vt2, g), vE],
-    };
-    var pointDrag = { A: 0, B: k1 * (vt1 / 2) * (vt1 / 2), C: k1 * vC * vC, D: k2 * vOpen * vOpen, E: k2 * vE * vE };
-    var pointAcceleration = {};
-    Object.keys(pointDrag).forEach(function (label) {
+    var tB = (vt1 / g) * Math.atanh(0.5), tC = timeToTerminalVelocity(vt1, g);
+    var points = { A: [0, 0] };
+    if (tB < tOpen) points.B = [tB, vt1 / 2];
+    if (tC <= tOpen) points.C = [tC, vC];
+    points.D = [tOpen + opening.timeSinceOpening[peak], opening.velocity[peak]];
+    points.E = [tE, vE];
+    var pointDrag = {}, pointAcceleration = {};
+    Object.keys(points).forEach(function (label) {
+      var pt = points[label];
+      pointDrag[label] = canopyDragConstant(pt[0] - tOpen, k1, k2, tau) * pt[1] * pt[1];
       pointAcceleration[label] = (weight - pointDrag[label]) / m;
     });
     return {
@@ -105,6 +188,8 @@
       g: g,
       weight: weight,
       parachuteOpensAt: tOpen,
+      openingDuration: tau,
+      parachuteOpenAt: tOpen + tau,
       terminalVelocityFreefall: vt1,
       terminalVelocityParachute: vt2,
       dragConstantFreefall: k1,
@@ -116,6 +201,7 @@
       pointDrag: pointDrag,
       pointAcceleration: pointAcceleration,
       velocityAt: velocityAt,
+      dragConstantAt: dragConstantAt,
       dragAt: dragAt,
       resultantForceAt: resultantForceAt,
       accelerationAt: accelerationAt,
@@ -299,7 +385,11 @@
     velocitySlowingToTerminal: velocitySlowingToTerminal,
     timeToTerminalVelocity: timeToTerminalVelocity,
     timeToSlowToTerminal: timeToSlowToTerminal,
+    earliestOpening: earliestOpening,
     earliestParachuteOpening: earliestParachuteOpening,
+    canopyDragConstant: canopyDragConstant,
+    openCanopy: openCanopy,
+    OPENING_STEPS: OPENING_STEPS,
     skydive: skydive,
     totalMomentum: totalMomentum,
     totalKineticEnergy: totalKineticEnergy,

@@ -1,5 +1,6 @@
 /* Skydiver explorer: velocity-time and resultant force-time graphs with A to E, and a
- * free-body diagram that follows the time chosen on the graph. Down is positive.
+ * free-body diagram that follows the time chosen on the graph. Down is positive. The
+ * parachute opens at a chosen time and takes a chosen time to fill.
  * Physics: ExplorableModels.skydive (twin of physics_figures.models.skydive). */
 (function () {
   "use strict";
@@ -9,7 +10,7 @@
 
   var MS = "m s\u207b\u00b9", MS2 = "m s\u207b\u00b2";
   var LABELS = ["A", "B", "C", "D", "E"];
-  var FORCE_CLIP = 4; // the force graph shows down to -4 W; the spike at D runs off below
+  var FORCE_CLIP = 6; // the force graph shows down to -6 W; a harder opening runs off below
 
   function build(root, data) {
     var g = data.g;
@@ -20,14 +21,18 @@
     var mass = new X.Quantity({ label: "Mass of the skydiver", unit: "kg", unitSpoken: "kilograms", min: 40, max: 120, step: 1, value: data.mass, onChange: update });
     var bodyDrag = new X.Quantity({ label: "Body\u2019s drag constant k (drag = k v\u00b2)", unit: "kg m\u207b\u00b9", unitSpoken: "kilograms per metre", min: 0.15, max: 1, step: 0.01, value: data.bodyDrag, onChange: update });
     var chuteDrag = new X.Quantity({ label: "Parachute\u2019s drag constant k", unit: "kg m\u207b\u00b9", unitSpoken: "kilograms per metre", min: 8, max: 80, step: 0.5, value: data.parachuteDrag, onChange: update });
-    var opens = new X.Quantity({ label: "Parachute opens at time", unit: "s", unitSpoken: "seconds", min: 10, max: 60, step: 0.5, value: data.parachuteOpensAt, onChange: update });
+    var opens = new X.Quantity({ label: "Parachute opens at time", unit: "s", unitSpoken: "seconds", min: 0.5, max: 60, step: 0.5, value: data.parachuteOpensAt, onChange: update });
+    var fills = new X.Quantity({ label: "Time the parachute takes to open τ", unit: "s", unitSpoken: "seconds", min: 0.5, max: 5, step: 0.1, value: data.openingDuration, onChange: update });
     var time = new X.Quantity({ label: "Time along the graph", unit: "s", unitSpoken: "seconds", min: 0, max: 60, step: 0.1, value: 0, onChange: function (t) { state.t = t; showTime(); } });
     var note = el("p", { class: "ex-note", "aria-live": "polite" });
+    var warning = el("p", { class: "ex-note ex-warning", "aria-live": "polite" });
 
+    var buttons = {};
     var jumps = el("div", { class: "ex-jumps", role: "group", "aria-label": "Go to a point on the graph" },
       [el("span", { "aria-hidden": "true" }, "Go to: ")].concat(LABELS.map(function (label) {
         var button = el("button", { type: "button", class: "ex-button" }, label);
         button.addEventListener("click", function () { time.set(dive.points[label][0]); });
+        buttons[label] = button;
         return button;
       })));
 
@@ -38,6 +43,7 @@
       d2: new X.Readout("Drag at that terminal velocity", "N"),
       weight: new X.Readout("Weight W = mg", "N"),
       decel: new X.Readout("Largest deceleration (at D, upwards)", MS2),
+      decelG: new X.Readout("Largest deceleration in g", "g", { sf: 2 }),
       t: new X.Readout("Time t", "s"),
       v: new X.Readout("Velocity (down)", MS),
       drag: new X.Readout("Drag (up)", "N"),
@@ -56,9 +62,10 @@
       el("section", { class: "ex-panel", "aria-labelledby": title.id }, [
         title,
         el("p", { class: "ex-hint" }, "Change the skydiver and the parachute, then move along the graph to see the forces. Down is positive."),
-        el("div", { class: "ex-controls" }, [mass.element, bodyDrag.element, chuteDrag.element, opens.element]),
+        el("div", { class: "ex-controls" }, [mass.element, bodyDrag.element, chuteDrag.element, opens.element, fills.element]),
         note,
-        el("div", { class: "ex-readouts" }, [r.weight.element, r.vt1.element, r.d1.element, r.vt2.element, r.d2.element, r.decel.element]),
+        el("div", { class: "ex-readouts" }, [r.weight.element, r.vt1.element, r.d1.element, r.vt2.element, r.d2.element, r.decel.element, r.decelG.element]),
+        warning,
         description.element,
         el("div", { class: "ex-figure-row" }, [
           el("div", { class: "ex-graphs" }, [vPlot.svg, fPlot.svg]),
@@ -73,15 +80,16 @@
     fPlot.scrub(function (t) { time.set(t); });
 
     function update() {
-      // the model opens the parachute at or after C (terminal velocity reached)
-      var earliest = Math.ceil(M.earliestParachuteOpening(mass.value, bodyDrag.value, g) * 2) / 2;
+      // the parachute can open once the skydiver falls faster than its terminal velocity
+      // (+1 %), so that it slows them down to it: the first half second after that
+      var earliest = Math.floor(M.earliestParachuteOpening(mass.value, bodyDrag.value, chuteDrag.value, g) * 2) / 2 + 0.5;
       opens.setRange(earliest);
       if (opens.value < earliest) {
         opens.value = earliest;
         opens.show();
-        note.textContent = "The parachute now opens at " + fmt(earliest) + " s: here it opens only after terminal velocity is reached (C).";
+        note.textContent = "The parachute now opens at " + fmt(earliest) + " s: it can open only once the skydiver is falling faster than the parachute’s terminal velocity.";
       } else note.textContent = "";
-      dive = M.skydive({ mass: mass.value, bodyDrag: bodyDrag.value, parachuteDrag: chuteDrag.value, parachuteOpensAt: opens.value, g: g });
+      dive = M.skydive({ mass: mass.value, bodyDrag: bodyDrag.value, parachuteDrag: chuteDrag.value, parachuteOpensAt: opens.value, openingDuration: fills.value, g: g });
       var p = dive.points;
       var duration = Math.max(p.E[0] + 4, dive.parachuteOpensAt * 1.25);
       time.setRange(0, duration);
@@ -94,16 +102,25 @@
       r.d1.set(dive.dragAtFreefallTerminal);
       r.vt2.set(dive.terminalVelocityParachute);
       r.d2.set(dive.dragAtParachuteTerminal);
-      r.decel.set(-dive.pointAcceleration.D);
+      var decel = -dive.pointAcceleration.D, inG = decel / g;
+      r.decel.set(decel);
+      r.decelG.set(inG);
+      LABELS.forEach(function (label) { buttons[label].hidden = !(label in p); });
+      warning.textContent = inG > data.unrealisticDecelerationInG
+        ? "Unrealistic: " + fmt(inG, { sf: 2 }) + " g would injure the skydiver. A canopy that fills in only " + fmt(dive.openingDuration, { sf: 2 }) +
+          " s at " + fmt(p.D[1]) + " " + MS + " jerks them to a stop far too hard; real parachutes are made to open over two or three seconds, which keeps the deceleration to a few g."
+        : "";
 
       drawGraphs(duration);
+      var rise = p.C
+        ? "The velocity rises from 0 with a gradient of g, less and less steeply, to a terminal velocity of " + fmt(dive.terminalVelocityFreefall) + " " + MS + " (C at " + fmt(p.C[0]) + " s). "
+        : "The velocity rises from 0 with a gradient of g, less and less steeply, towards a terminal velocity of " + fmt(dive.terminalVelocityFreefall) + " " + MS + ", but the parachute opens before it gets there. ";
       description.set(
-        "The velocity rises from 0 with a gradient of g, less and less steeply, to a terminal velocity of " +
-        fmt(dive.terminalVelocityFreefall) + " " + MS + " (C at " + fmt(p.C[0]) + " s). The parachute opens at " +
-        fmt(dive.parachuteOpensAt) + " s (D): the drag jumps to " + fmt(dive.pointDrag.D) + " N, " +
-        fmt(dive.pointDrag.D / dive.weight, { sf: 2 }) + " times the weight, so the resultant force is " +
-        fmt(-dive.pointAcceleration.D * dive.mass) + " N upwards and the deceleration, " + fmt(-dive.pointAcceleration.D) + " " + MS2 +
-        ", is the largest of the fall. The skydiver slows, still moving down, to a second terminal velocity of " +
+        rise + "The parachute opens at " + fmt(dive.parachuteOpensAt) + " s and takes " + fmt(dive.openingDuration, { sf: 2 }) +
+        " s to fill: its drag grows quickly to more than the weight, so the resultant force is upwards. The deceleration is largest at D, " +
+        fmt(p.D[0] - dive.parachuteOpensAt, { sf: 2 }) + " s after the opening: the drag is " + fmt(dive.pointDrag.D) + " N, " +
+        fmt(dive.pointDrag.D / dive.weight, { sf: 2 }) + " times the weight, the resultant force " + fmt(-dive.pointAcceleration.D * dive.mass) +
+        " N upwards and the deceleration " + fmt(decel) + " " + MS2 + " (" + fmt(inG, { sf: 2 }) + " g). The skydiver slows, still moving down, to a second terminal velocity of " +
         fmt(dive.terminalVelocityParachute) + " " + MS + " (E at " + fmt(p.E[0]) + " s). At both terminal velocities the drag equals the weight, " +
         fmt(dive.weight) + " N."
       );
@@ -111,11 +128,14 @@
     }
 
     function drawGraphs(duration) {
-      var tOpen = dive.parachuteOpensAt;
-      var n = 240, ts = [], before = [], after = [];
-      for (var i = 0; i <= n; i++) before.push((tOpen * i) / n);
-      for (var j = 0; j <= n; j++) after.push(tOpen + (duration - tOpen) * Math.pow(j / n, 2)); // dense where v drops fast
-      ts = before.concat(after);
+      var tOpen = dive.parachuteOpensAt, tFull = dive.parachuteOpenAt;
+      var n = 240, ts = [];
+      for (var i = 0; i < n; i++) ts.push((tOpen * i) / n);
+      for (var k = 0; k < n; k++) ts.push(tOpen + ((tFull - tOpen) * k) / n); // the opening
+      if (tFull < duration) for (var j = 0; j <= n; j++) ts.push(tFull + (duration - tFull) * Math.pow(j / n, 2)); // dense where v drops fast
+      ts.push(dive.points.D[0]);
+      ts.sort(function (a, b) { return a - b; });
+      ts = ts.filter(function (t) { return t <= duration; });
       var vs = ts.map(dive.velocityAt);
       var vMax = Math.max(100, dive.terminalVelocityFreefall * 1.1);
       vPlot.setDomain(0, duration, 0, vMax);
@@ -125,17 +145,16 @@
       [dive.terminalVelocityFreefall, dive.terminalVelocityParachute].forEach(function (vt) {
         vPlot.data.appendChild(svg("line", { class: "ex-guide", x1: vPlot.box.left, x2: vPlot.box.right, y1: vPlot.y(vt), y2: vPlot.y(vt) }));
       });
-      LABELS.forEach(function (label) {
+      LABELS.filter(function (label) { return label in dive.points; }).forEach(function (label) {
         var pt = dive.points[label], x = vPlot.x(pt[0]), y = vPlot.y(pt[1]);
         vPlot.marks.appendChild(svg("circle", { class: "ex-point", cx: x, cy: y, r: 4 }));
         var dy = label === "E" || label === "A" ? -8 : label === "D" ? -8 : 16;
         vPlot.marks.appendChild(svg("text", { class: "ex-point-label", x: x + (label === "D" ? 8 : label === "A" ? 6 : -4), y: y + dy, "text-anchor": label === "C" ? "end" : "start" }, label));
       });
 
-      // resultant force, down positive: W - D; the spike at D is clipped at -4 W
-      var forceTs = before.concat([tOpen]).concat(after.slice(1));
-      var forces = before.map(function (t) { return dive.resultantForceAt(t, true); })
-        .concat(after.map(function (t) { return dive.resultantForceAt(t); }));
+      // resultant force, down positive: W - D; a dip below -6 W is clipped
+      var forceTs = ts;
+      var forces = ts.map(dive.resultantForceAt);
       var fMin = Math.min.apply(null, forces);
       var low = Math.max(fMin, -FORCE_CLIP * dive.weight) * 1.05;
       fPlot.setDomain(0, duration, low, dive.weight * 1.15);
@@ -143,7 +162,7 @@
       X.clear(fPlot.marks);
       fPlot.data.appendChild(svg("path", { class: "ex-line ex-b", d: fPlot.path(forceTs, forces) }));
       if (fMin < low) {
-        var xd = fPlot.x(tOpen);
+        var xd = fPlot.x(dive.points.D[0]);
         // the label goes on whichever side of the spike has room
         var roomRight = fPlot.box.right - xd > 190, side = roomRight ? 1 : -1;
         fPlot.marks.appendChild(X.arrow(xd + 16 * side, fPlot.box.bottom - 34, xd + 16 * side, fPlot.box.bottom - 4, "ex-b"));
@@ -183,8 +202,11 @@
       var cx = 100, cy = 165, unit = 60; // unit: the weight arrow's length
       var open = t >= dive.parachuteOpensAt;
       if (open) {
-        fbd.appendChild(svg("path", { class: "ex-canopy", d: "M52 70 Q100 20 148 70 Z" }));
-        fbd.appendChild(svg("path", { class: "ex-lines", d: "M52 70L92 148M148 70L108 148M100 70L100 148" }));
+        // the canopy fills over the opening duration: drawn growing to full width
+        var half = 48 * Math.min(1, Math.max(0.25, (t - dive.parachuteOpensAt) / dive.openingDuration));
+        var left = 100 - half, right = 100 + half;
+        fbd.appendChild(svg("path", { class: "ex-canopy", d: "M" + left + " 70 Q100 " + (70 - half) + " " + right + " 70 Z" }));
+        fbd.appendChild(svg("path", { class: "ex-lines", d: "M" + left + " 70L92 148M" + right + " 70L108 148M100 70L100 148" }));
       }
       fbd.appendChild(svg("rect", { class: "ex-body", x: cx - 14, y: cy - 18, width: 28, height: 36, rx: 10 }));
       fbd.appendChild(X.arrow(cx + 22, cy, cx + 22, cy + unit, "ex-weight", 11));

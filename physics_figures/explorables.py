@@ -34,6 +34,7 @@ from .models import (
     total_momentum,
 )
 from .models import _checks as check
+from .notation import format_number
 
 #: The explorables a page can show, by the name the directive takes.
 EXPLORABLES = ("skydiver", "collision-lab", "momentum-triangle", "momentum-time-reader")
@@ -41,11 +42,12 @@ EXPLORABLES = ("skydiver", "collision-lab", "momentum-triangle", "momentum-time-
 #: Kinds of interaction in the collision lab.
 COLLISION_KINDS = ("elastic", "stick", "explosion", "loss")
 
-#: Why the collision lab refuses a set-up; {placeholders} are filled with the numbers.
+#: Why the collision lab refuses a set-up; {placeholders} are filled with the numbers to 3 s.f.
+#: (physics_figures.notation here, notation.js in the browser).
 REFUSALS = {
     "never-meet": (
         "They never meet: A starts on the left, so it must move to the right faster than B "
-        "(u_A > u_B) to catch it up. Here u_A = {u1:.3g} m/s and u_B = {u2:.3g} m/s."
+        "(u_A > u_B) to catch it up. Here u_A = {u1} m/s and u_B = {u2} m/s."
     ),
     "energy-created": (
         "Not possible: a collision cannot create kinetic energy, so the total after cannot be "
@@ -53,8 +55,8 @@ REFUSALS = {
         "can give out more kinetic energy than went in."
     ),
     "more-than-sticking": (
-        "Not possible: the momentum must still be {momentum:.3g} kg m/s afterwards, and that "
-        "carries kinetic energy. Even sticking together loses only {most:.3g}% here."
+        "Not possible: the momentum must still be {momentum} kg m/s afterwards, and that "
+        "carries kinetic energy. Even sticking together loses only {most}% here."
     ),
     "explosion-wrong-way": (
         "Not possible: A is on the left of B, so when they are pushed apart A moves to the "
@@ -143,7 +145,8 @@ def collision_lab(kind, *, m1, m2, u1=0.0, u2=0.0, velocity_a_after=None, percen
 
     def refused(code, **numbers):
         return CollisionLab(
-            kind, masses, (u1, u2), None, code, REFUSALS[code].format(**numbers), p_before,
+            kind, masses, (u1, u2), None, code,
+            REFUSALS[code].format(**{name: format_number(x, 3) for name, x in numbers.items()}), p_before,
             e_before, None, None, relative_speed(u1, u2), None, None, most)
 
     if kind == "explosion":

@@ -9,12 +9,12 @@ import pytest
 
 from physics_figures import scenarios
 from physics_figures.figures import book
-from physics_figures.figures._text import sig
 from physics_figures.figures.drag import plot_drag_against_speed, plot_thrown_upwards
 from physics_figures.figures.free_body import plot_book_on_table, plot_skydiver_free_body
 from physics_figures.figures.momentum_graphs import plot_force_time_area, plot_momentum_time
 from physics_figures.figures.skydiver import plot_resultant_force, plot_velocity_time
 from physics_figures.figures.vectors import plot_momentum_triangle
+from physics_figures.notation import format_number
 
 SKYDIVER = scenarios.SKYDIVER
 
@@ -84,7 +84,7 @@ def test_an_arrow_too_long_to_draw_says_so():
     _, ax = plt.subplots()
     panel = plot_skydiver_free_body(SKYDIVER, "D", ax=ax, max_length=2.4)
     assert "not to scale" in panel.arrows["drag"].label.get_text()
-    assert sig(SKYDIVER.point_drag["D"], 3) in panel.arrows["drag"].label.get_text()
+    assert format_number(SKYDIVER.point_drag["D"], 3) in panel.arrows["drag"].label.get_text()
 
 
 def test_drag_curve_starts_at_the_origin_and_crosses_the_weight_at_terminal_velocity():
@@ -193,7 +193,7 @@ def test_skydiver_words_give_the_peak_deceleration_in_g():
     assert 2 < in_g < 6
     for figure in (book.skydiver_velocity_time(SKYDIVER), book.skydiver_resultant_force(SKYDIVER),
                    book.free_body_skydiver(SKYDIVER)):
-        assert f"about {sig(in_g, 2)} g" in figure.caption
+        assert f"about {format_number(in_g, 2)} g" in figure.caption
         assert "4.0 g" in figure.alt
     free_body = book.free_body_skydiver(SKYDIVER)
     assert "39.7 m s⁻²" in free_body.caption and "(3960 N)" in free_body.caption

@@ -2,6 +2,7 @@
 table that the browser's twin (notation.js) also runs: tests/js/notation.test.js."""
 
 import json
+import re
 from pathlib import Path
 
 import pytest
@@ -39,3 +40,23 @@ def test_a_bad_precision_is_refused_with_the_rule(kwargs, message):
 def test_a_value_that_is_not_finite_is_refused():
     with pytest.raises(ValueError, match=r"value must be a finite number \(got value=nan\)"):
         format_number(float("nan"), 2)
+
+
+def test_no_other_code_rounds_a_number_for_print():
+    """notation.py and notation.js are the only number writers: no other module formats with
+    a precision of its own (f"{x:.2f}", round(x, n), toPrecision, toFixed for text)."""
+    root = Path(__file__).resolve().parents[1]
+    python = re.compile(r"\{[^{}]*:[^{}]*\.\d+[fge]\}|\bround\([^()]*,\s*\w+\)|Decimal\(")
+    offenders = [path.relative_to(root).as_posix()
+                 for path in sorted((root / "physics_figures").rglob("*.py"))
+                 # models/ may import only constants: its error messages use Python's own format
+                 if path.name != "notation.py" and "models" not in path.parts
+                 and python.search(path.read_text())]
+    javascript = re.compile(r"toPrecision\(|toFixed\(")
+    for path in sorted((root / "book" / "_ext").rglob("*.js")):
+        lines = [line for line in path.read_text().splitlines() if javascript.search(line)
+                 # an input's own value and an SVG path's coordinates are not printed numbers
+                 and not re.search(r"\.value = Number\(|self\.[xy]\(", line)]
+        if lines and path.name != "notation.js":
+            offenders.append(path.relative_to(root).as_posix())
+    assert not offenders, f"format numbers with physics_figures.notation / notation.js: {offenders}"

@@ -13,7 +13,8 @@ from matplotlib.lines import Line2D
 
 from ..models import drag_force
 from ..models.drag import Skydive, ThrowUp
-from ._text import VELOCITY_UNIT, plain, sig
+from ..notation import format_number
+from ._text import VELOCITY_UNIT, plain
 from .style import FIGSIZE, GUIDE, MAIN, SECOND, book_style, new_axes, styled, unit_label
 
 
@@ -53,7 +54,7 @@ def plot_drag_against_speed(
         zorder=4,
     )
     ax.annotate(
-        f"terminal velocity\n{sig(v_t)} {VELOCITY_UNIT}: drag = weight",
+        f"terminal velocity\n{format_number(v_t, 2)} {VELOCITY_UNIT}: drag = weight",
         xy=(v_t, skydive.weight),
         xytext=(-12, 14),
         textcoords="offset points",
@@ -61,7 +62,7 @@ def plot_drag_against_speed(
         va="bottom",
     )
     ax.annotate(
-        f"weight {sig(skydive.weight, 3)} N",
+        f"weight {format_number(skydive.weight, 3)} N",
         xy=(0, skydive.weight),
         xytext=(6, -6),
         textcoords="offset points",
@@ -86,9 +87,9 @@ def plot_drag_against_speed(
 
 def drag_against_speed_caption(skydive: Skydive) -> str:
     return (
-        f"Drag on the {sig(skydive.mass)} kg skydiver against speed. The drag grows from zero "
-        f"as the speed grows; where it reaches the weight, {sig(skydive.weight, 3)} N, the "
-        f"resultant force is zero: that speed, {sig(skydive.terminal_velocity_freefall)} "
+        f"Drag on the {format_number(skydive.mass, 2)} kg skydiver against speed. The drag grows from zero "
+        f"as the speed grows; where it reaches the weight, {format_number(skydive.weight, 3)} N, the "
+        f"resultant force is zero: that speed, {format_number(skydive.terminal_velocity_freefall, 2)} "
         f"{VELOCITY_UNIT}, is the terminal velocity."
     )
 
@@ -96,9 +97,9 @@ def drag_against_speed_caption(skydive: Skydive) -> str:
 def drag_against_speed_alt(skydive: Skydive) -> str:
     return plain(
         f"Graph of force against speed. The drag curve starts at the origin and rises ever "
-        f"more steeply. A dashed horizontal line marks the weight of the {sig(skydive.mass)} "
-        f"kg skydiver, {sig(skydive.weight, 3)} N. The curve crosses the line at "
-        f"{sig(skydive.terminal_velocity_freefall)} {VELOCITY_UNIT}, the terminal velocity, "
+        f"more steeply. A dashed horizontal line marks the weight of the {format_number(skydive.mass, 2)} "
+        f"kg skydiver, {format_number(skydive.weight, 3)} N. The curve crosses the line at "
+        f"{format_number(skydive.terminal_velocity_freefall, 2)} {VELOCITY_UNIT}, the terminal velocity, "
         f"where drag equals weight."
     )
 
@@ -156,28 +157,28 @@ def plot_thrown_upwards(
 
 def thrown_upwards_caption(with_drag: ThrowUp, without_drag: ThrowUp) -> str:
     return (
-        f"A ball thrown straight up at {sig(with_drag.launch_speed)} {VELOCITY_UNIT}, with air "
+        f"A ball thrown straight up at {format_number(with_drag.launch_speed, 2)} {VELOCITY_UNIT}, with air "
         f"resistance (solid) and in a vacuum (dashed), up positive. With drag it slows faster "
-        f"on the way up, reaches {sig(with_drag.max_height, 3)} m instead of "
-        f"{sig(without_drag.max_height, 3)} m, sooner, and comes back at "
-        f"{sig(with_drag.return_speed, 3)} {VELOCITY_UNIT} instead of "
-        f"{sig(without_drag.return_speed)} {VELOCITY_UNIT}. It takes longer to come down "
-        f"({sig(with_drag.time_of_flight - with_drag.time_to_top, 3)} s) than to go up "
-        f"({sig(with_drag.time_to_top, 3)} s)."
+        f"on the way up, reaches {format_number(with_drag.max_height, 3)} m instead of "
+        f"{format_number(without_drag.max_height, 3)} m, sooner, and comes back at "
+        f"{format_number(with_drag.return_speed, 3)} {VELOCITY_UNIT} instead of "
+        f"{format_number(without_drag.return_speed, 2)} {VELOCITY_UNIT}. It takes longer to come down "
+        f"({format_number(with_drag.time_of_flight - with_drag.time_to_top, 3)} s) than to go up "
+        f"({format_number(with_drag.time_to_top, 3)} s)."
     )
 
 
 def thrown_upwards_alt(with_drag: ThrowUp, without_drag: ThrowUp) -> str:
     return plain(
-        f"Two graphs against time for a ball thrown up at {sig(with_drag.launch_speed)} "
+        f"Two graphs against time for a ball thrown up at {format_number(with_drag.launch_speed, 2)} "
         f"{VELOCITY_UNIT}, each with two curves. Velocity, up positive: in a vacuum (dashed) "
-        f"a straight line from {sig(without_drag.launch_speed)} down to "
-        f"-{sig(without_drag.return_speed)} {VELOCITY_UNIT} at "
-        f"{sig(without_drag.time_of_flight, 2)} s; with air resistance (solid) a curve that "
+        f"a straight line from {format_number(without_drag.launch_speed, 2)} down to "
+        f"-{format_number(without_drag.return_speed, 2)} {VELOCITY_UNIT} at "
+        f"{format_number(without_drag.time_of_flight, 2)} s; with air resistance (solid) a curve that "
         f"falls more steeply at first, crosses zero earlier, at "
-        f"{sig(with_drag.time_to_top, 2)} s instead of {sig(without_drag.time_to_top, 2)} s, "
-        f"and ends at only -{sig(with_drag.return_speed, 3)} {VELOCITY_UNIT} at "
-        f"{sig(with_drag.time_of_flight, 2)} s. Height: both are hump-shaped; with air "
-        f"resistance the top is {sig(with_drag.max_height, 3)} m instead of "
-        f"{sig(without_drag.max_height, 3)} m."
+        f"{format_number(with_drag.time_to_top, 2)} s instead of {format_number(without_drag.time_to_top, 2)} s, "
+        f"and ends at only -{format_number(with_drag.return_speed, 3)} {VELOCITY_UNIT} at "
+        f"{format_number(with_drag.time_of_flight, 2)} s. Height: both are hump-shaped; with air "
+        f"resistance the top is {format_number(with_drag.max_height, 3)} m instead of "
+        f"{format_number(without_drag.max_height, 3)} m."
     )

@@ -16,7 +16,8 @@ from matplotlib.patches import Circle, Rectangle
 from matplotlib.text import Annotation
 
 from ..models.drag import Skydive
-from ._text import ACCELERATION_UNIT, VELOCITY_UNIT, plain, sig
+from ..notation import format_number
+from ._text import ACCELERATION_UNIT, VELOCITY_UNIT, plain
 from .style import FORCE_COLOURS, book_style, styled
 
 #: Line style of each kind of force, so pairs match in greyscale too.
@@ -85,7 +86,7 @@ def plot_skydiver_free_body(
     ax.add_patch(Circle((0, 0), body, facecolor="white", edgecolor="#111111", linewidth=1.6))
     arrows = {
         "weight": _draw_arrow(
-            ax, (0, -body), (0, -body - 1.0), kind="weight", text=f"W = {sig(w, 3)} N"
+            ax, (0, -body), (0, -body - 1.0), kind="weight", text=f"W = {format_number(w, 3)} N"
         )
     }
     if d > 0:
@@ -96,7 +97,7 @@ def plot_skydiver_free_body(
             (0, body),
             (0, body + shown),
             kind="drag",
-            text=f"D = {sig(d, 3)} N" + ("\n(not to scale)" if length > max_length else ""),
+            text=f"D = {format_number(d, 3)} N" + ("\n(not to scale)" if length > max_length else ""),
         )
         if length > max_length:  # a white gap across the shaft marks the break
             y = body + shown * 0.45
@@ -131,7 +132,7 @@ def plot_skydiver_free_bodies(
 
 def skydiver_free_bodies_caption(skydive: Skydive, points=("A", "C", "D")) -> str:
     return (
-        f"Forces on the {sig(skydive.mass)} kg skydiver at "
+        f"Forces on the {format_number(skydive.mass, 2)} kg skydiver at "
         + ", ".join(points[:-1])
         + f" and {points[-1]}, arrow lengths in proportion to the forces (down positive). "
         "At A there is no drag; at C the drag equals the weight; "
@@ -145,9 +146,9 @@ def _at_d(skydive: Skydive) -> str:
     drag, decel = skydive.point_drag["D"], -skydive.point_acceleration["D"]
     return (
         f"at D, just after the parachute opens, where the deceleration is largest, the drag "
-        f"({sig(drag, 3)} N) is {sig(drag / skydive.weight, 2)} times the weight, so the "
-        f"resultant force is {sig(drag - skydive.weight, 3)} N upwards: a deceleration of "
-        f"{sig(decel, 3)} {ACCELERATION_UNIT}, about {sig(decel / skydive.g, 2)} g"
+        f"({format_number(drag, 3)} N) is {format_number(drag / skydive.weight, 2)} times the weight, so the "
+        f"resultant force is {format_number(drag - skydive.weight, 3)} N upwards: a deceleration of "
+        f"{format_number(decel, 3)} {ACCELERATION_UNIT}, about {format_number(decel / skydive.g, 2)} g"
     )
 
 
@@ -159,15 +160,15 @@ def skydiver_free_bodies_alt(skydive: Skydive, points=("A", "C", "D")) -> str:
         drag = (
             "no drag arrow"
             if d == 0
-            else f"drag {sig(d, 3, group='')} N upwards"
+            else f"drag {format_number(d, 3)} N upwards"
             + (" (drawn broken, too long to fit)" if d > 2.4 * skydive.weight else "")
         )
         parts.append(
-            f"at {p} (speed {sig(v, 2)} {VELOCITY_UNIT}): weight "
-            f"{sig(skydive.weight, 3)} N downwards and {drag}"
+            f"at {p} (speed {format_number(v, 2)} {VELOCITY_UNIT}): weight "
+            f"{format_number(skydive.weight, 3)} N downwards and {drag}"
         )
     return plain(
-        f"Three free-body diagrams of the {sig(skydive.mass)} kg skydiver, a circle with "
+        f"Three free-body diagrams of the {format_number(skydive.mass, 2)} kg skydiver, a circle with "
         "vertical arrows: " + "; ".join(parts) + ". "
         + (_at_d(skydive)[0].upper() + _at_d(skydive)[1:] + "." if "D" in points else "")
     )

@@ -16,7 +16,8 @@ from matplotlib.lines import Line2D
 from matplotlib.text import Text
 
 from ..models.drag import Skydive
-from ._text import ACCELERATION_UNIT, VELOCITY_UNIT, a_or_an, plain, sig
+from ..notation import format_number
+from ._text import ACCELERATION_UNIT, VELOCITY_UNIT, a_or_an, plain
 from .style import GUIDE, MAIN, new_axes, styled, unit_label
 
 POINT_LABELS = ("A", "B", "C", "D", "E")
@@ -76,7 +77,7 @@ def plot_velocity_time(skydive: Skydive, *, ax: Axes | None = None) -> SkydiveGr
     ):
         guides.append(ax.axhline(v_t, color=GUIDE, linestyle="--", linewidth=1.3, zorder=2))
         ax.annotate(
-            f"{name} {sig(v_t)} {VELOCITY_UNIT}",
+            f"{name} {format_number(v_t, 2)} {VELOCITY_UNIT}",
             xy=(x, v_t),
             xytext=(0, 4),
             textcoords="offset points",
@@ -136,7 +137,7 @@ def plot_resultant_force(
     f_d = points["D"][1]
     if f_d < bottom:
         ax.annotate(
-            f"{sig(f_d, 3)} N at D\n(off the scale)",
+            f"{format_number(f_d, 3)} N at D\n(off the scale)",
             xy=shown["D"],
             xytext=(-12, 0),
             textcoords="offset points",
@@ -146,7 +147,7 @@ def plot_resultant_force(
         )
     weight_line = ax.axhline(w, color=GUIDE, linestyle=":", linewidth=1.3, zorder=2)
     ax.annotate(
-        f"weight {sig(w, 3)} N",
+        f"weight {format_number(w, 3)} N",
         xy=(skydive.duration, w),
         xytext=(0, -4),
         textcoords="offset points",
@@ -169,7 +170,7 @@ def _resultant_at(skydive: Skydive, point: str) -> float:
 
 
 def _time(skydive: Skydive, point: str) -> str:
-    return sig(skydive.points[point][0], 2)
+    return format_number(skydive.points[point][0], 2)
 
 
 def _opening(skydive: Skydive) -> str:
@@ -177,20 +178,20 @@ def _opening(skydive: Skydive) -> str:
     t_open = skydive.parachute_opens_at
     decel = -skydive.point_acceleration["D"]
     return (
-        f"The parachute opens at {sig(t_open, 2)} s (dotted line) and takes "
-        f"{sig(skydive.opening_duration, 2)} s to fill. The deceleration is largest at D, "
-        f"{sig(skydive.points['D'][0] - t_open, 2)} s after the opening, where the curve is "
-        f"steepest: {sig(decel, 3)} {ACCELERATION_UNIT}, about {sig(decel / skydive.g, 2)} g"
+        f"The parachute opens at {format_number(t_open, 2)} s (dotted line) and takes "
+        f"{format_number(skydive.opening_duration, 2)} s to fill. The deceleration is largest at D, "
+        f"{format_number(skydive.points['D'][0] - t_open, 2)} s after the opening, where the curve is "
+        f"steepest: {format_number(decel, 3)} {ACCELERATION_UNIT}, about {format_number(decel / skydive.g, 2)} g"
     )
 
 
 def velocity_time_caption(skydive: Skydive) -> str:
     v1, v2 = skydive.terminal_velocity_freefall, skydive.terminal_velocity_parachute
     return (
-        f"Velocity–time graph of {a_or_an(sig(skydive.mass))} {sig(skydive.mass)} kg skydiver, down positive. "  # noqa: RUF001 (typography)
-        f"The velocity levels off at the terminal velocity {sig(v1)} {VELOCITY_UNIT} (C). "
+        f"Velocity–time graph of {a_or_an(format_number(skydive.mass, 2))} {format_number(skydive.mass, 2)} kg skydiver, down positive. "  # noqa: RUF001 (typography)
+        f"The velocity levels off at the terminal velocity {format_number(v1, 2)} {VELOCITY_UNIT} (C). "
         f"{_opening(skydive)}. The velocity falls steeply, then less and less steeply, to a new "
-        f"terminal velocity of {sig(v2)} {VELOCITY_UNIT} (E). Dashed lines: the two terminal "
+        f"terminal velocity of {format_number(v2, 2)} {VELOCITY_UNIT} (E). Dashed lines: the two terminal "
         "velocities."
     )
 
@@ -198,15 +199,15 @@ def velocity_time_caption(skydive: Skydive) -> str:
 def velocity_time_alt(skydive: Skydive) -> str:
     p = skydive.points
     text = (
-        f"Velocity-time graph of {a_or_an(sig(skydive.mass))} {sig(skydive.mass)} kg skydiver, taking down as positive. "
-        f"The velocity starts at 0 at A with a gradient of g = {sig(skydive.g, 3)} "
-        f"{ACCELERATION_UNIT}, rises ever less steeply through B ({sig(p['B'][1])} "
+        f"Velocity-time graph of {a_or_an(format_number(skydive.mass, 2))} {format_number(skydive.mass, 2)} kg skydiver, taking down as positive. "
+        f"The velocity starts at 0 at A with a gradient of g = {format_number(skydive.g, 3)} "
+        f"{ACCELERATION_UNIT}, rises ever less steeply through B ({format_number(p['B'][1], 2)} "
         f"{VELOCITY_UNIT} at {_time(skydive, 'B')} s) and levels at "
-        f"{sig(skydive.terminal_velocity_freefall)} {VELOCITY_UNIT} (C, reached at about "
+        f"{format_number(skydive.terminal_velocity_freefall, 2)} {VELOCITY_UNIT} (C, reached at about "
         f"{_time(skydive, 'C')} s). {_opening(skydive)} (D is at t = "
-        f"{sig(skydive.points['D'][0], 3)} s, {sig(skydive.points['D'][1], 2)} {VELOCITY_UNIT}). The "
+        f"{format_number(skydive.points['D'][0], 3)} s, {format_number(skydive.points['D'][1], 2)} {VELOCITY_UNIT}). The "
         f"velocity falls steeply, then less and less steeply, and levels at "
-        f"{sig(skydive.terminal_velocity_parachute)} {VELOCITY_UNIT} (E, at about "
+        f"{format_number(skydive.terminal_velocity_parachute, 2)} {VELOCITY_UNIT} (E, at about "
         f"{_time(skydive, 'E')} s). Dashed horizontal lines mark the two terminal velocities."
     )
     return plain(text)
@@ -214,26 +215,26 @@ def velocity_time_alt(skydive: Skydive) -> str:
 
 def resultant_force_caption(skydive: Skydive) -> str:
     return (
-        f"Resultant force on the {sig(skydive.mass)} kg skydiver against time, down positive. "
-        f"It starts at the weight, {sig(skydive.weight, 3)} N (A), and falls to zero at terminal "
+        f"Resultant force on the {format_number(skydive.mass, 2)} kg skydiver against time, down positive. "
+        f"It starts at the weight, {format_number(skydive.weight, 3)} N (A), and falls to zero at terminal "
         f"velocity (C). As the parachute fills it swings quickly to a large upward value, "
-        f"largest at D ({sig(_resultant_at(skydive, 'D'), 3)} N, about "
-        f"{sig(-skydive.point_acceleration['D'] / skydive.g, 2)} g), and returns to zero (E)."
+        f"largest at D ({format_number(_resultant_at(skydive, 'D'), 3)} N, about "
+        f"{format_number(-skydive.point_acceleration['D'] / skydive.g, 2)} g), and returns to zero (E)."
     )
 
 
 def resultant_force_alt(skydive: Skydive) -> str:
     text = (
-        f"Graph of resultant force against time for {a_or_an(sig(skydive.mass))} {sig(skydive.mass)} kg skydiver, "
+        f"Graph of resultant force against time for {a_or_an(format_number(skydive.mass, 2))} {format_number(skydive.mass, 2)} kg skydiver, "
         f"down positive. At A the resultant force is the whole weight, "
-        f"{sig(skydive.weight, 3)} N. It decreases through B "
-        f"({sig(_resultant_at(skydive, 'B'), 3)} N) to zero at C, when the drag equals the "
-        f"weight. The parachute opens at t = {sig(skydive.parachute_opens_at, 2)} s and takes "
-        f"{sig(skydive.opening_duration, 2)} s to fill: the resultant force swings within a second "
-        f"to its largest upward value at D, t = {sig(skydive.points['D'][0], 3)} s, "
-        f"{sig(_resultant_at(skydive, 'D'), 3, group='')} N (the minus sign: upwards), a "
-        f"deceleration of about {sig(-skydive.point_acceleration['D'] / skydive.g, 2)} g, then "
+        f"{format_number(skydive.weight, 3)} N. It decreases through B "
+        f"({format_number(_resultant_at(skydive, 'B'), 3)} N) to zero at C, when the drag equals the "
+        f"weight. The parachute opens at t = {format_number(skydive.parachute_opens_at, 2)} s and takes "
+        f"{format_number(skydive.opening_duration, 2)} s to fill: the resultant force swings within a second "
+        f"to its largest upward value at D, t = {format_number(skydive.points['D'][0], 3)} s, "
+        f"{format_number(_resultant_at(skydive, 'D'), 3)} N (the minus sign: upwards), a "
+        f"deceleration of about {format_number(-skydive.point_acceleration['D'] / skydive.g, 2)} g, then "
         f"shrinks back to zero at E as the skydiver slows to "
-        f"{sig(skydive.terminal_velocity_parachute)} {VELOCITY_UNIT}."
+        f"{format_number(skydive.terminal_velocity_parachute, 2)} {VELOCITY_UNIT}."
     )
     return plain(text)

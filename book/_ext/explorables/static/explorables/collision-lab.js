@@ -14,9 +14,9 @@
     explosion: "Explosion from rest (pushed apart)",
   };
 
-  /** Fill a Python-style template "{name:.3g}" from physics_figures.explorables.REFUSALS. */
+  /** Fill a template "{name}" from physics_figures.explorables.REFUSALS (3 s.f., as Python does). */
   function fill(template, numbers) {
-    return template.replace(/\{(\w+)(:[^}]*)?\}/g, function (all, name) {
+    return template.replace(/\{(\w+)\}/g, function (all, name) {
       return fmt(numbers[name]);
     });
   }

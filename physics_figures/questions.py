@@ -26,16 +26,18 @@ from __future__ import annotations
 import itertools
 import math
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import KW_ONLY, dataclass, field
 
+import sympy
+
+from . import textformat
 from .constants import G_EARTH, G_MOON
 from .models import (
     acceleration,
     change_in_momentum,
     elastic_collision,
     explosion_from_rest,
-    impulse,
     kinetic_energy,
     lift_contact_force,
     mass_from_weight,
@@ -70,6 +72,10 @@ PART_WAY_SIG_FIGS = (2, 3)
 G_TEN, G_NINE_EIGHT = 10.0, 9.8
 
 _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+#: A question's parts are (a), (b), ...; an ecf formula names earlier answers by these ids.
+PART_IDS = tuple("abcdefghij")
 
 
 def number(value: float, sig_figs: int) -> str:
@@ -146,6 +152,41 @@ class Step:
         _require(math.isfinite(self.value), "value", self.value, "must be a finite number")
 
 
+@dataclass(frozen=True)
+class Ecf:
+    """How a later part follows from earlier ones, for error carried forward.
+
+    formula: a sympy expression of the givens (symbols named as in ``values``) and of
+    earlier parts' answers (symbols named by part id: a, b, ...), in SI units. Python
+    evaluates it; sympy's JavaScript printer writes the same formula for the browser,
+    which marks a later part against the student's own earlier answer.
+    """
+
+    formula: sympy.Expr
+    values: Mapping[str, float]
+
+    def __post_init__(self):
+        names = {symbol.name for symbol in self.formula.free_symbols}
+        _require(bool(names & set(PART_IDS)), "formula", self.formula,
+                 "must use an earlier part's answer (a, b, ...): else no error is carried")
+        unknown = names - set(self.values) - set(PART_IDS)
+        _require(not unknown, "formula", self.formula, f"uses {sorted(unknown)}, which are not in values")
+
+    @property
+    def uses(self) -> tuple[str, ...]:
+        """The earlier parts the formula reads."""
+        return tuple(sorted(s.name for s in self.formula.free_symbols if s.name in PART_IDS))
+
+    def evaluate(self, answers: Mapping[str, float]) -> float:
+        known = {**self.values, **{part: answers[part] for part in self.uses}}
+        return float(self.formula.subs({sympy.Symbol(name): value for name, value in known.items()}))
+
+    def browser_data(self) -> dict:
+        symbols = sorted(s.name for s in self.formula.free_symbols)
+        return {"js": sympy.jscode(self.formula), "args": symbols, "uses": list(self.uses),
+                "values": {name: self.values[name] for name in symbols if name not in PART_IDS}}
+
+
 def _round_sf(value: float, sig_figs: int) -> float:
     return float(round_number(value, sig_figs))
 
@@ -188,6 +229,7 @@ class Part:
     working: tuple[Step, ...] = ()
     answer_from: Callable[..., float] | None = field(default=None, compare=False, repr=False)
     answer_for_g: Callable[[float], float] | None = field(default=None, compare=False, repr=False)
+    ecf: Ecf | None = None
 
     def __post_init__(self):
         object.__setattr__(self, "value", float(self.value))
@@ -299,6 +341,7 @@ class Part:
             ],
             "gNineEight": self.g_nine_eight,
             "roundedPartWay": [{"value": value, "rounded": what} for value, what in self.rounded_part_way],
+            "ecf": self.ecf.browser_data() if self.ecf else None,
         }
 
 
@@ -330,6 +373,9 @@ class Question:
     givens: tuple[Given, ...]
     parts: tuple[Part, ...]
     mark_scheme: tuple[Mark, ...]
+    #: The question as the student reads it (physics_figures.textformat), for a template;
+    #: empty when the page states it (worked examples' try-first parts).
+    text: str = ""
 
     def __post_init__(self):
         _require(re.fullmatch(r"[a-z0-9]+(-[a-z0-9]+)*", self.key) is not None, "key", self.key,
@@ -338,6 +384,23 @@ class Question:
         _require(any(m.code for m in self.mark_scheme), "mark_scheme", self.mark_scheme,
                  "must award at least one mark")
         self._check_mark_codes()
+        self._check_ecf()
+        if self.text:
+            textformat.parse(self.text)  # raises ValueError naming a bad tag
+
+    def _check_ecf(self) -> None:
+        """A later part's formula must give its key from the earlier keys: one source."""
+        answers = dict(zip(self.part_ids, (p.value for p in self.parts), strict=True))
+        for index, part in enumerate(self.parts):
+            if part.ecf is None:
+                continue
+            _require(all(PART_IDS.index(u) < index for u in part.ecf.uses), "ecf", part.ecf.formula,
+                     f"may use only earlier parts than ({self.part_ids[index]}) in {self.key}")
+            worked = part.ecf.evaluate(answers)
+            if part.direction != "signed":
+                worked = abs(worked)
+            _require(math.isclose(worked, part.value, rel_tol=1e-9, abs_tol=1e-12), "ecf", part.ecf.formula,
+                     f"must give ({self.part_ids[index]})'s key {part.value!r} in {self.key}, not {worked!r}")
 
     def _check_mark_codes(self) -> None:
         """9702's codes: M1 only where a part asks to show, explain or state; every A1
@@ -373,7 +436,7 @@ class Question:
     @property
     def part_ids(self) -> tuple[str, ...]:
         """"a", "b", ... (one part alone has the id "a" too)."""
-        return tuple("abcdefghij"[i] for i in range(len(self.parts)))
+        return PART_IDS[:len(self.parts)]
 
     def label(self, index: int) -> str:
         """"(a) " before a part's prompt when there are several parts, else ""."""
@@ -384,8 +447,37 @@ class Question:
         return sum(1 for m in self.mark_scheme if m.code)
 
     def browser_data(self) -> dict:
+        """What the marking script needs: the parts and, per mark line, its part(s) and code."""
         return {"id": self.key,
-                "parts": [p.browser_data(i) for i, p in zip(self.part_ids, self.parts, strict=True)]}
+                "parts": [p.browser_data(i) for i, p in zip(self.part_ids, self.parts, strict=True)],
+                "marks": [{"parts": list(self.parts_of(m)), "code": m.code}
+                          for m in self.mark_scheme if m.code]}
+
+    def variant_data(self) -> dict:
+        """One variant for the browser's New numbers: its text, mark scheme and marking data."""
+        return {"text": self.text_html(), "scheme": self.mark_scheme_html(), **self.browser_data()}
+
+    def mark_lines(self) -> list[tuple[str, str, str]]:
+        """(part label, text, code) per mark-scheme line; the label only when the part changes."""
+        lines, last = [], ""
+        for mark in self.mark_scheme:
+            label = ""
+            if len(self.parts) > 1 and mark.part and mark.part != last:
+                label, last = f"({', '.join(mark.part)})", mark.part
+            lines.append((label, mark.text, mark.code))
+        return lines
+
+    def text_html(self) -> str:
+        """The question's text as HTML (from physics_figures.textformat)."""
+        return textformat.to_html(self.text)
+
+    def mark_scheme_html(self) -> str:
+        """The mark scheme as an HTML list, for a question written in the text format."""
+        items = "".join(
+            f"<li><p>{f'<strong>{label}</strong> ' if label else ''}"
+            f"{textformat.to_html(text, paragraphs=False)}{f' <strong>{code}</strong>' if code else ''}</p></li>"
+            for label, text, code in self.mark_lines())
+        return f"<ul>{items}</ul>"
 
     def mark_scheme_markdown(self) -> str:
         """One bullet a line; with several parts, a line opens with its part(s) when they change."""
@@ -411,50 +503,10 @@ _M_S2 = "m s^-2 (m/s^2)"
 
 
 def quick_check_1() -> Question:
-    """Notes, Quick check 1: 5.0 N for 3.0 s on a 2.0 kg trolley from rest -> 15 N s, 7.5 m s^-1."""
-    force, mass, duration = 5.0, 2.0, 3.0
-    p = impulse(force, duration)  # from rest, so the final momentum is the change
-    v = velocity_from_momentum(p, mass)
-    return Question(
-        key="quick-check-1",
-        givens=(Given("force", force, "N", 2), Given("mass", mass, "kg", 2),
-                Given("duration", duration, "s", 2)),
-        parts=(
-            Part("final momentum", p, "N s", "momentum", units=_N_S, shown_sig_figs=2,
-                 revisit="Force × time = change in momentum (F Δt = Δp), and the trolley starts at rest.",
-                 mistakes=(
-                     Mistake("force divided by time", force / duration,
-                             "You divided the force by the time. Force is the rate of change of "
-                             "momentum, so the change in momentum is force × time: Δp = F Δt."),
-                     Mistake("force times mass", force * mass,
-                             "You multiplied the force by the mass. The change in momentum is "
-                             "force × time; the mass is only needed for the speed."),
-                     Mistake("acceleration given as momentum", acceleration(force, mass),
-                             "That is the acceleration, F/m. Momentum is found from Δp = F Δt."),
-                     Mistake("kinetic energy instead of momentum", kinetic_energy(mass, v),
-                             "That is the kinetic energy, ½mv², in J. Momentum is mass × velocity "
-                             "(here force × time), in N s.", unit="J"),
-                 )),
-            Part("speed", v, "m s^-1", "speed", units=_M_S, shown_sig_figs=2,
-                 revisit="Momentum = mass × velocity, so v = p / m.",
-                 mistakes=(
-                     Mistake("momentum times mass", p * mass,
-                             "You multiplied the momentum by the mass. p = mv, so v = p / m."),
-                     Mistake("mass over momentum", mass / p,
-                             "That is m / p, upside down. p = mv, so v = p / m."),
-                     Mistake("acceleration given as speed", acceleration(force, mass),
-                             "That is the acceleration, F/m, in m s⁻². The speed after 3.0 s is "
-                             "p / m (or u + at)."),
-                 )),
-        ),
-        mark_scheme=(
-            Mark(rf"$\Delta p = F \Delta t = {_f(force, 2)} \times {_f(duration, 2)}$", "C1", "a"),
-            Mark(f"$= {_f(p, 2)}$ N s, so the final momentum is {_f(p, 2)} kg m s$^{{-1}}$ "
-                 "(it started at rest)", "A1", "a"),
-            Mark(rf"Speed $= \frac{{p}}{{m}} = \frac{{{_f(p, 2)}}}{{{_f(mass, 2)}}}$", "C1", "b"),
-            Mark(f"$= {_f(v, 2)}$ m s$^{{-1}}$", "A1", "b"),
-        ),
-    )
+    """Quick check 1 is a template of the bank (physics_figures/bank/force_momentum.py)."""
+    from .bank import TEMPLATES  # the bank builds on this module
+
+    return TEMPLATES["quick-check-1"].variant(0)
 
 
 def quick_check_2() -> Question:

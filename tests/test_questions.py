@@ -15,6 +15,7 @@ from pathlib import Path
 
 import pytest
 
+from physics_figures import bank
 from physics_figures import questions as q
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -187,8 +188,11 @@ def test_an_a1_with_no_mark_before_it_in_its_part_is_refused():
 
 
 def test_each_mark_line_names_its_part_in_the_scheme():
-    scheme = q.quick_check_1().mark_scheme_markdown()
-    assert scheme.startswith("- **(a)** ") and "- **(b)** Speed" in scheme
+    scheme = q.quick_check_4().mark_scheme_markdown()
+    assert scheme.startswith("- **(a, b)** ") and "- **(b)** " in scheme
+    # a template's scheme is in the text format: the same labels, where the part changes
+    labels = [label for label, _, _ in q.quick_check_1().mark_lines()]
+    assert labels == ["(a)", "", "(b)", ""]
 
 
 def test_the_answer_key_prints_the_number_its_mark_scheme_gives():
@@ -346,9 +350,12 @@ def test_an_answer_that_cannot_be_loaded_is_an_error(tmp_path):
 def test_the_books_question_pages_name_real_questions_whose_givens_they_state():
     """Every {question} in book/exam names a Question and states the numbers it uses."""
     pattern = re.compile(r"```\{question\}[^\n]*\n:answer: ([\w.]+:\w+)\n(.*?)```", re.DOTALL)
+    templated = re.compile(r"```\{question\} ([a-z0-9-]+)\n```")
     asked = []
     for page in ("quick-check.md", "practice.md"):
-        for reference, text in pattern.findall((ROOT / "book" / "exam" / page).read_text()):
+        source = (ROOT / "book" / "exam" / page).read_text()
+        asked += [bank.TEMPLATES[key].variant(0).key for key in templated.findall(source)]
+        for reference, text in pattern.findall(source):
             module, _, name = reference.partition(":")
             question = getattr(sys.modules[module], name)()
             asked.append(question.key)

@@ -93,20 +93,33 @@ class QuestionDirective(SphinxDirective):
     option_spec: ClassVar = {"answer": directives.unchanged_required}
 
     def run(self):
-        reference = self.options.get("answer", "")
-        try:
-            data, sources = load_question(reference)
-        except (ImportError, AttributeError, ValueError) as error:
-            raise self.error(f"question: cannot load its answer ({error})") from error
+        template = None
+        if "answer" in self.options:  # a fixed question whose text is the page's
+            try:
+                data, sources = load_question(self.options["answer"])
+            except (ImportError, AttributeError, ValueError) as error:
+                raise self.error(f"question: cannot load its answer ({error})") from error
+            self._check_givens(data)
+            title = self.arguments[0] if self.arguments else data.key
+        else:  # a template of the bank, named by its key; its text comes with its numbers
+            template, sources = self._template()
+            data, title = template.variant(0), template.title
+            if self.content:
+                raise self.error(f"question {template.key}: a template writes its own text; "
+                                 "leave the directive empty")
         for source in sources:  # an edit to physics_figures re-reads this page
             self.env.note_dependency(str(source))
-        self._check_givens(data)
-        title = self.arguments[0] if self.arguments else data.key
+        if template is not None:
+            _templates_used(self.env).setdefault(self.env.docname, []).append(template.key)
 
-        node = question(qid=data.key, data=data.browser_data(), ids=[f"question-{data.key}"])
+        node = question(qid=data.key, data=data.browser_data(), ids=[f"question-{data.key}"],
+                        template=_template_data(template))
         self.set_source_info(node)
         node += nodes.paragraph("", "", nodes.strong(text=title), classes=["q-title"])
-        node += self.parse_content_to_nodes()
+        if template is None:
+            node += self.parse_content_to_nodes()
+        else:
+            node += nodes.container("", *text_nodes(data.text), classes=["q-text"])
         lines = nodes.container(classes=["q-answer-lines"])
         for index, part in enumerate(data.parts):
             line = f"{data.label(index)}{part.prompt} = " + "." * 28
@@ -114,15 +127,29 @@ class QuestionDirective(SphinxDirective):
                 line += " direction: " + "." * 16
             lines += nodes.paragraph(text=line)
         node += lines
-        node += question_form(data=node["data"],
+        node += question_form(data=node["data"], template=node["template"],
                               legends=[data.label(i) + p.prompt[:1].upper() + p.prompt[1:]
                                        for i, p in enumerate(data.parts)])
         worked = worked_answer()
-        worked += self.parse_text_to_nodes(data.mark_scheme_markdown())
+        if template is None:
+            worked += self.parse_text_to_nodes(data.mark_scheme_markdown())
+        else:
+            worked += mark_scheme_nodes(data)
         node += worked
 
         self._record(data, title, worked)
         return [node]
+
+    def _template(self):
+        if not self.arguments:
+            raise self.error("question: name a template of physics_figures.bank (or give :answer:)")
+        from physics_figures import bank  # imported here: the bank is slow to build
+
+        key = self.arguments[0]
+        if key not in bank.TEMPLATES:
+            raise self.error(f"question: no template {key!r} in physics_figures.bank")
+        package = Path(bank.__file__).parents[1]
+        return bank.TEMPLATES[key], sorted(package.rglob("*.py"))
 
     def _check_givens(self, data) -> None:
         """Every number the data uses must be the one the page's text states."""
@@ -145,6 +172,50 @@ class QuestionDirective(SphinxDirective):
         })
 
 
+def _template_data(template) -> dict | None:
+    if template is None:
+        return None
+    return {"key": template.key, "type": template.type, "kinds": list(template.kinds),
+            "variants": len(template.values)}
+
+
+_TAG_NODES = {"sup": nodes.superscript, "sub": nodes.subscript, "em": nodes.emphasis,
+              "strong": nodes.strong}
+
+
+def _inline_nodes(spans) -> list[nodes.Node]:
+    out = []
+    for span in spans:
+        node = nodes.Text(span.text)
+        for tag in reversed(span.tags):
+            node = _TAG_NODES[tag]("", "", node)
+        out.append(node)
+    return out
+
+
+def text_nodes(source: str) -> list[nodes.Node]:
+    """Paragraphs of docutils nodes from physics_figures.textformat (HTML, LaTeX, text alike)."""
+    from physics_figures import textformat
+
+    return [nodes.paragraph("", "", *_inline_nodes(spans)) for spans in textformat.parse(source)]
+
+
+def mark_scheme_nodes(data) -> list[nodes.Node]:
+    from physics_figures import textformat
+
+    items = nodes.bullet_list(classes=["q-scheme"])
+    for label, text, code in data.mark_lines():
+        line = nodes.paragraph()
+        if label:
+            line += [nodes.strong(text=label), nodes.Text(" ")]
+        for spans in textformat.parse(text):
+            line += _inline_nodes(spans)
+        if code:
+            line += [nodes.Text(" "), nodes.strong(text=code)]
+        items += nodes.list_item("", line)
+    return [items]
+
+
 class AnswerKeyDirective(SphinxDirective):
     """Where the answer key goes: every question of the book, filled in later."""
 
@@ -158,6 +229,7 @@ class AnswerKeyDirective(SphinxDirective):
 
 def purge(app, env, docname):
     _questions(env).pop(docname, None)
+    _templates_used(env).pop(docname, None)
     _answer_key_docs(env).discard(docname)
 
 
@@ -167,6 +239,8 @@ def merge(app, env, docnames, other):
             _questions(env)[docname] = _questions(other)[docname]
         if docname in _answer_key_docs(other):
             _answer_key_docs(env).add(docname)
+        if docname in _templates_used(other):
+            _templates_used(env)[docname] = _templates_used(other)[docname]
 
 
 def refresh_answer_keys(app, env, added, changed, removed):
@@ -245,6 +319,35 @@ def add_assets(app, pagename, templatename, context, doctree):
         app.add_js_file("questions.js", loading_method="defer")
 
 
+VARIANTS_DIR = "questions"  # under the site's _static/: one file of variants per template
+
+
+def write_variants(app, exception):
+    """Each template's variants as a small script, loaded only when New numbers is pressed (a
+    <script> element, so it works from file:// too, where fetch() does not)."""
+    if exception or app.builder.format != "html":
+        return
+    keys = sorted({key for keys in _templates_used(app.env).values() for key in keys})
+    if not keys:
+        return
+    from physics_figures import bank
+
+    folder = Path(app.outdir) / "_static" / VARIANTS_DIR
+    folder.mkdir(parents=True, exist_ok=True)
+    for key in keys:
+        variants = [question.variant_data() for question in bank.TEMPLATES[key].variants]
+        payload = json.dumps(variants, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
+        (folder / f"{key}.js").write_text(
+            f"(window.QuestionVariants = window.QuestionVariants || {{}})[{json.dumps(key)}] = {payload};\n",
+            encoding="utf-8")
+
+
+def _templates_used(env) -> dict[str, list[str]]:
+    if not hasattr(env, "question_templates"):
+        env.question_templates = {}
+    return env.question_templates
+
+
 def add_static_path(app, config):
     config.html_static_path.append(str(STATIC))
 
@@ -269,7 +372,13 @@ def _input(cls: str, ident: str, label: str, described_by: str) -> str:
 
 
 def visit_question_form(self, node):
-    data, html = node["data"], ['<form class="q-form" hidden novalidate>']
+    data, template = node["data"], node.get("template")
+    attributes = ""
+    if template:  # the interface outside tests and the progress page read
+        attributes = (f' data-question="{escape(template["key"])}" data-type="{escape(template["type"])}"'
+                      f' data-variant="0" data-kind="{escape(" ".join(template["kinds"]))}"'
+                      f' data-variants="{template["variants"]}"')
+    html = [f'<form class="q-form"{attributes} hidden novalidate>']
     for part, legend in zip(data["parts"], node["legends"], strict=True):
         base = f"q-{data['id']}-{part['id']}"
         feedback = f"{base}-feedback"
@@ -287,9 +396,13 @@ def visit_question_form(self, node):
                         f'<select class="q-direction" id="{base}-direction" aria-describedby="{feedback}">'
                         f'<option value="">Choose…</option>{options}</select></label>')
         html.append("</div>")
-        html.append(f'<p class="q-feedback" id="{base}-feedback" role="status"></p></fieldset>')
+        html.append(f'<p class="q-feedback" id="{base}-feedback" role="status"></p>'
+                    '<p class="q-part-marks"></p></fieldset>')
+    new = ('<button type="button" class="q-new">New numbers</button>'
+           if template and template["variants"] > 1 else "")
     html.append('<div class="q-buttons"><button type="submit" class="q-check">Check</button>'
-                '<button type="reset" class="q-clear">Clear my answers</button></div></form>\n')
+                f'{new}<button type="reset" class="q-clear">Clear my answers</button></div>'
+                '<p class="q-score" aria-live="polite"></p></form>\n')
     self.body.append("".join(html))
     raise nodes.SkipNode
 
@@ -325,5 +438,6 @@ def setup(app):
     app.connect("doctree-read", answer_key_has_maths)
     app.connect("doctree-resolved", resolve)
     app.connect("html-page-context", add_assets)
+    app.connect("build-finished", write_variants)
     return {"version": __version__, "parallel_read_safe": True, "parallel_write_safe": True,
             "env_version": 1}

@@ -312,6 +312,14 @@
     }
     var reading = fitting.filter(function (r) { return against(target, r.scale).match; })[0] ||
       fitting[0] || readings[0];
+    // Every outcome carries the answer in SI (for error carried forward) when its unit fits.
+    var si = sameDims(reading.dims, expected.dims) ? size * reading.scale : null;
+    function out(code, message, extra) {
+      var result = outcome(code, message, extra);
+      result.si = si;
+      result.valueRight = against(target, reading.scale).match || against(target, 1).match;
+      return result;
+    }
 
     function namedMistake(dims, scale) {
       var mistakes = part.mistakes || [];
@@ -322,7 +330,7 @@
         if (mistake.direction && mistake.direction !== direction) continue;
         var value = mode === "signed" ? mistake.value : Math.abs(mistake.value);
         if ((number.sfMax >= 2 || value === 0) && against(value, scale).match) {
-          return outcome("mistake", mistake.feedback, { mistake: mistake.name });
+          return out("mistake", mistake.feedback, { mistake: mistake.name });
         }
       }
       return null;
@@ -332,7 +340,7 @@
       var found = namedMistake(reading.dims, reading.scale);
       if (found) return found;
       var other = quantityOf(reading.dims);
-      return outcome("wrong-unit", (against(target, 1).match ? "The number is right, but " : "") +
+      return out("wrong-unit", (against(target, 1).match ? "The number is right, but " : "") +
         superscript(normalise(unitText)) + (other && other !== quantity ?
           " is a unit of " + other + ", not of " + quantity + "." : " is not a unit of " + quantity + ".") +
         " Give " + quantity + " in " + units + ".");
@@ -345,64 +353,156 @@
     var directionRight = mode !== "choice" || direction === part.answerDirection;
 
     if (result.match && !sign && directionRight) {
-      if (unit.empty) return outcome("missing-unit", "The number is right. Now give the unit: " + units + ".");
-      return outcome("correct", signed ? "Correct: the minus sign says " + part.signMeans + "." : "Correct.");
+      if (unit.empty) return out("missing-unit", "The number is right. Now give the unit: " + units + ".");
+      return out("correct", signed ? "Correct: the minus sign says " + part.signMeans + "." : "Correct.");
     }
     if (result.match && !sign && mode === "choice" && !direction) {
-      return outcome("missing-direction", "The size is right. Now give the direction.");
+      return out("missing-direction", "The size is right. Now give the direction.");
     }
 
     var named = namedMistake(reading.dims, reading.scale);
     if (named) return named;
 
     if (!unit.empty && reading.scale !== 1 && against(target, 1).match && sameDims(expected.dims, [0, 0, 0, 1])) {
-      return outcome("angle-unit", "That number is right in degrees, but " + superscript(normalise(unitText)) +
+      return out("angle-unit", "That number is right in degrees, but " + superscript(normalise(unitText)) +
         " is not degrees: 1 rad = 57.3°. Give the angle in ° (degrees).");
     }
     if (!unit.empty && reading.scale !== 1 && against(target, 1).match) {
-      return outcome("prefix", "Check the prefix: " + Notation.formatNumber(typed, number.sfMax) + " " + superscript(part.unit) +
+      return out("prefix", "Check the prefix: " + Notation.formatNumber(typed, number.sfMax) + " " + superscript(part.unit) +
         " would be right, but 1 " + superscript(normalise(unitText)) + " = " + Notation.formatNumber(reading.scale, 1) + " " +
         superscript(part.unit) + ". Convert g to kg, ms to s, cm to m.");
     }
 
     if (sign && result.match) {
-      return outcome("sign", mode === "choice" ?
+      return out("sign", mode === "choice" ?
         "The size is right. Give it as a positive number and choose the direction from the list." :
         "The size is right, but a " + quantity + " here is a size with no sign: leave out the minus sign.");
     }
     if (mode === "signed" && target !== 0 && compare(
       { value: -typed, sfMin: number.sfMin, sfMax: number.sfMax, lead: number.lead },
       target / reading.scale, minSf, checkSf).match) {
-      return outcome("sign", "The size is right but the sign is wrong. Positive is " + part.positive +
+      return out("sign", "The size is right but the sign is wrong. Positive is " + part.positive +
         (target < 0 ? ", and this points the other way, so it is negative." :
           ", and this points that way, so it is positive."));
     }
     if (result.match && !directionRight) {
-      return outcome("direction", "The size is right but the direction is wrong." +
+      return out("direction", "The size is right but the direction is wrong." +
         (part.directionHint ? " " + part.directionHint : ""));
     }
     if (result.matchFewSf) {
-      return outcome("more-sf", "Right value, but give more significant figures: at least " + minSf +
+      return out("more-sf", "Right value, but give more significant figures: at least " + minSf +
         (number.sfMin < number.sfMax ? " (zeros at the end of a whole number may not count: write 7.0 × 10², not 700)." : "."));
     }
     // Slips computed from the working (physics_figures.questions): nothing else is called rounding.
     if (number.sfMax >= 2 && typeof part.gNineEight === "number" && against(part.gNineEight, reading.scale).match) {
-      return outcome("g-9.8", "That is the answer with g = 9.8 m s⁻². The data give g = 9.81 m s⁻²: use it, " +
+      return out("g-9.8", "That is the answer with g = 9.8 m s⁻². The data give g = 9.81 m s⁻²: use it, " +
         "and keep every figure until the end.");
     }
     var partWay = part.roundedPartWay || [];
     for (var i = 0; i < partWay.length; i++) {
       if (number.sfMax >= 2 && against(partWay[i].value, reading.scale).match) {
-        return outcome("rounded-part-way", "Close, but that is what rounding " + partWay[i].rounded +
+        return out("rounded-part-way", "Close, but that is what rounding " + partWay[i].rounded +
           " part-way through gives. Keep the full calculator value until the end, then round only the answer.");
       }
     }
-    return outcome("wrong", "Not right. " + (part.revisit || "Check your method and your arithmetic."));
+    return out("wrong", "Not right. " + (part.revisit || "Check your method and your arithmetic."));
+  }
+
+  // ------------------------------------------------------------ marks, as an exam awards them
+
+  // Outcomes that earn every mark of the part but the A1: the value is right, but its unit
+  // is missing or wrong, it has too few s.f., or it was rounded or used g = 9.8 part-way.
+  var ALL_BUT_A1 = ["missing-unit", "prefix", "angle-unit", "more-sf", "g-9.8", "rounded-part-way"];
+  var WRONG_WAY = ["direction", "sign", "missing-direction"];
+  // An earlier answer this good is not an error, so nothing is carried forward from it.
+  var NOT_AN_ERROR = ["correct", "missing-unit", "more-sf", "prefix", "angle-unit"];
+
+  /* Which mark lines a part's outcome loses: "none", "all", "A1", "direction" or a count kept. */
+  function lost(result, part) {
+    if (result.code === "correct" || result.code === "ecf") return { lose: "none" };
+    if (ALL_BUT_A1.indexOf(result.code) >= 0 || (result.code === "wrong-unit" && result.valueRight)) {
+      return { lose: "A1" };
+    }
+    if (WRONG_WAY.indexOf(result.code) >= 0) return { lose: "direction" };
+    if (result.code === "mistake") {
+      var named = (part.mistakes || []).filter(function (m) { return m.name === result.mistake; })[0];
+      return { lose: "all", keep: (named && named.earns) || 0 };
+    }
+    return { lose: "all", keep: 0 };
+  }
+
+  /* The marks earned: each mark line of data.marks ({parts, code}) is earned unless a part it
+   * belongs to loses it. Returns {earned, available, byPart: {id: [earned, available]}}. */
+  function award(data, results) {
+    var byPart = {}, earned = 0;
+    data.parts.forEach(function (part) { byPart[part.id] = [0, 0]; });
+    var kept = {};
+    data.marks.forEach(function (line) {
+      var ok = line.parts.every(function (id) {
+        var part = data.parts.filter(function (p) { return p.id === id; })[0];
+        var loss = lost(results[id] || { code: "wrong" }, part);
+        var lines = data.marks.filter(function (m) { return m.parts.indexOf(id) >= 0; });
+        var isDirection = line.code === "B1" && part.direction !== "none" &&
+          lines.filter(function (m) { return m.code === "B1"; }).slice(-1)[0] === line;
+        var hasDirectionMark = part.direction !== "none" && lines.some(function (m) { return m.code === "B1"; });
+        if (loss.lose === "none") return true;
+        if (loss.lose === "A1") return line.code !== "A1";
+        if (loss.lose === "direction") return hasDirectionMark ? !isDirection : line.code !== "A1";
+        kept[id] = (kept[id] || 0) + 1; // a named mistake keeps the first lines it earns
+        return kept[id] <= loss.keep;
+      });
+      var owner = line.parts[line.parts.length - 1];
+      byPart[owner][1] += 1;
+      if (ok) { byPart[owner][0] += 1; earned += 1; }
+    });
+    return { earned: earned, available: data.marks.length, byPart: byPart };
+  }
+
+  /* Mark every part of a question, carrying an error forward: a later part with an ecf
+   * formula (physics_figures.questions.Ecf, printed by sympy) is also marked against the
+   * student's own earlier answers, and earns its marks if it follows from them. */
+  function markQuestion(data, answers) {
+    var results = {};
+    data.parts.forEach(function (part) {
+      var result = mark(part, answers[part.id] || {});
+      if (result.code !== "correct" && part.ecf) result = carried(part, answers[part.id] || {}, results) || result;
+      results[part.id] = result;
+    });
+    return { results: results, marks: award(data, results) };
+  }
+
+  function carried(part, answer, earlier) {
+    var uses = part.ecf.uses, known = {};
+    for (var i = 0; i < uses.length; i++) {
+      var before = earlier[uses[i]];
+      if (!before || before.si === null || before.si === undefined) return null;
+      known[uses[i]] = before.si;
+    }
+    if (uses.every(function (id) { return NOT_AN_ERROR.indexOf(earlier[id].code) >= 0; })) return null;
+    var args = part.ecf.args.map(function (name) { return name in known ? known[name] : part.ecf.values[name]; });
+    var value = formula(part.ecf).apply(null, args);
+    if (!isFinite(value)) return null;
+    var own = {}; Object.keys(part).forEach(function (k) { own[k] = part[k]; });
+    own.value = part.direction === "signed" ? value : Math.abs(value);
+    own.mistakes = []; own.gNineEight = null; own.roundedPartWay = [];
+    var result = mark(own, answer);
+    if (result.code === "correct") {
+      return outcome("ecf", "Follows correctly from your answer to (" + uses.join("), (") +
+        "): error carried forward (ecf), so this part earns its marks.", { si: result.si });
+    }
+    return ALL_BUT_A1.indexOf(result.code) >= 0 ? result : null;
+  }
+
+  var formulas = {};
+  function formula(ecf) {
+    var key = ecf.args.join(",") + ":" + ecf.js;
+    if (!formulas[key]) formulas[key] = new Function(ecf.args.join(","), "return " + ecf.js + ";");
+    return formulas[key];
   }
 
   var engine = {
     parseNumber: parseNumber, parseUnit: parseUnit, splitValueAndUnit: splitValueAndUnit,
-    mark: mark, superscript: superscript
+    mark: mark, markQuestion: markQuestion, award: award, superscript: superscript
   };
 
   if (typeof module === "object" && module.exports) module.exports = engine;
@@ -413,6 +513,7 @@
   if (typeof document === "undefined") return;
 
   var STORE = "dynamics-questions:";
+  var markQuestion = engine.markQuestion;
 
   function load(id) {
     try { return JSON.parse(localStorage.getItem(STORE + id)) || null; } catch (e) { return null; }
@@ -426,63 +527,172 @@
     try { localStorage.removeItem(STORE + id); } catch (e) { /* nothing stored */ }
   }
 
+  // Every checked attempt, for the "Your practice" page (versioned: a later build reads it).
+  var PROGRESS = "dynamics-progress-v1";
+
+  function recordAttempt(attempt) {
+    try {
+      var progress = JSON.parse(localStorage.getItem(PROGRESS)) || { version: 1, attempts: [] };
+      progress.attempts.push(attempt);
+      localStorage.setItem(PROGRESS, JSON.stringify(progress));
+    } catch (e) { /* private mode: progress is not kept */ }
+  }
+
+  function marksText(earned, available) {
+    return earned + "/" + available + " mark" + (available === 1 ? "" : "s");
+  }
+
+  /* New numbers: each template's variants come in one small script (loaded on the first
+   * press, so a first visit carries only variant 0). They are shown in a shuffled order that
+   * shows every variant once before any comes again. */
+  function contentRoot() {
+    return document.documentElement.getAttribute("data-content_root") || "";
+  }
+
+  function loadVariants(key, done) {
+    var all = root.QuestionVariants || {};
+    if (all[key]) return done(all[key]);
+    var script = document.createElement("script");
+    script.src = contentRoot() + "_static/questions/" + key + ".js";
+    script.onload = function () { done((root.QuestionVariants || {})[key] || null); };
+    script.onerror = function () { done(null); };
+    document.head.appendChild(script);
+  }
+
+  function nextVariant(key, count, current) {
+    var state = load("order:" + key) || {};
+    var order = state.order || [];
+    if (!order.length) {
+      order = [];
+      for (var i = 0; i < count; i++) if (i !== current) order.push(i);
+      for (var j = order.length - 1; j > 0; j--) { // Fisher-Yates
+        var k = Math.floor(Math.random() * (j + 1)), t = order[j]; order[j] = order[k]; order[k] = t;
+      }
+      order.push(current); // the one on screen comes last in the round
+    }
+    var next = order.shift();
+    save("order:" + key, { order: order });
+    return next;
+  }
+
   function setUp(section) {
     var data = JSON.parse(section.querySelector("script.q-data").textContent);
     var form = section.querySelector("form.q-form");
     var worked = section.querySelector(".q-worked");
+    var score = form.querySelector(".q-score");
+    var newButton = form.querySelector("button.q-new");
+    var key = form.getAttribute("data-question");
     form.hidden = false;
+
+    function storeId() { return data.id + (key ? "@" + form.getAttribute("data-variant") : ""); }
 
     function fields(part) {
       var box = form.querySelector("[data-part=\"" + part.id + "\"]");
       return {
         value: box.querySelector(".q-value"), unit: box.querySelector(".q-unit"),
-        direction: box.querySelector(".q-direction"), feedback: box.querySelector(".q-feedback")
+        direction: box.querySelector(".q-direction"), feedback: box.querySelector(".q-feedback"),
+        marks: box.querySelector(".q-part-marks")
       };
     }
 
-    function state(checked) {
-      var answers = {};
+    function answers() {
+      var out = {};
       data.parts.forEach(function (part) {
         var f = fields(part);
-        answers[part.id] = { value: f.value.value, unit: f.unit.value, direction: f.direction ? f.direction.value : "" };
+        out[part.id] = { value: f.value.value, unit: f.unit.value, direction: f.direction ? f.direction.value : "" };
       });
-      return { answers: answers, checked: checked };
+      return out;
     }
 
-    function check() {
+    function check(record) {
+      var marked = markQuestion(data, answers());
       data.parts.forEach(function (part) {
-        var f = fields(part), result = mark(part, {
-          value: f.value.value, unit: f.unit.value, direction: f.direction ? f.direction.value : ""
-        });
-        f.feedback.textContent = (result.correct ? "✓ " : "✗ ") + result.message;
-        f.feedback.className = "q-feedback " + (result.correct ? "q-right" : "q-wrong");
+        var f = fields(part), result = marked.results[part.id], got = marked.marks.byPart[part.id];
+        var right = result.code === "correct" || result.code === "ecf";
+        f.feedback.textContent = (right ? "✓ " : "✗ ") + result.message;
+        if (f.marks) f.marks.textContent = marksText(got[0], got[1]) + (result.code === "ecf" ? " (ecf)" : "");
+        f.feedback.className = "q-feedback " + (right ? "q-right" : "q-wrong");
         f.feedback.setAttribute("data-code", result.code);
       });
+      if (score) score.textContent = marksText(marked.marks.earned, marked.marks.available);
       if (worked) worked.hidden = false;
-      save(data.id, state(true));
+      save(storeId(), { answers: answers(), checked: true });
+      if (record && key) {
+        recordAttempt({
+          question: key, type: form.getAttribute("data-type"), variant: Number(form.getAttribute("data-variant")),
+          earned: marked.marks.earned, available: marked.marks.available, at: Date.now(),
+          mistakes: data.parts.map(function (p) { return marked.results[p.id].mistake; }).filter(Boolean)
+        });
+      }
     }
 
-    form.addEventListener("submit", function (event) { event.preventDefault(); check(); });
-    form.addEventListener("input", function () { save(data.id, state(!!(load(data.id) || {}).checked)); });
-    form.addEventListener("reset", function () {
-      forget(data.id);
+    function clear() {
       data.parts.forEach(function (part) {
         var f = fields(part);
+        f.value.value = ""; f.unit.value = "";
+        if (f.direction) f.direction.value = "";
         f.feedback.textContent = "";
         f.feedback.className = "q-feedback";
+        if (f.marks) f.marks.textContent = "";
       });
+      if (score) score.textContent = "";
       if (worked) { worked.open = false; worked.hidden = true; }
-    });
+    }
 
-    var saved = load(data.id);
-    if (saved && saved.answers) {
+    function restore() {
+      var saved = load(storeId());
+      if (!saved || !saved.answers) return;
       data.parts.forEach(function (part) {
         var f = fields(part), a = saved.answers[part.id] || {};
         f.value.value = a.value || "";
         f.unit.value = a.unit || "";
         if (f.direction) f.direction.value = a.direction || "";
       });
-      if (saved.checked) check();
+      if (saved.checked) check(false);
+    }
+
+    function show(index, variant) {
+      data = { id: data.id, parts: variant.parts, marks: variant.marks };
+      section.querySelector(".q-text").innerHTML = variant.text;
+      var scheme = worked && worked.querySelector(".q-scheme");
+      if (scheme) scheme.outerHTML = variant.scheme.replace("<ul>", '<ul class="' + scheme.className + '">');
+      form.setAttribute("data-variant", String(index));
+      save("variant:" + key, { variant: index });
+      clear();
+      restore();
+    }
+
+    form.addEventListener("submit", function (event) { event.preventDefault(); check(true); });
+    form.addEventListener("input", function () { save(storeId(), { answers: answers(), checked: !!(load(storeId()) || {}).checked }); });
+    form.addEventListener("reset", function (event) {
+      event.preventDefault();
+      forget(storeId());
+      clear();
+    });
+    if (newButton) {
+      newButton.addEventListener("click", function () {
+        newButton.disabled = true;
+        loadVariants(key, function (variants) {
+          newButton.disabled = false;
+          if (!variants) { score.textContent = "New numbers could not be loaded."; return; }
+          var index = nextVariant(key, variants.length, Number(form.getAttribute("data-variant")));
+          show(index, variants[index]);
+          section.querySelector(".q-text").focus();
+        });
+      });
+    }
+    var text = section.querySelector(".q-text");
+    if (text) text.setAttribute("tabindex", "-1"); // New numbers moves focus to the new text
+
+    // A student who had new numbers comes back to the same numbers.
+    var last = key && load("variant:" + key);
+    if (last && last.variant) {
+      loadVariants(key, function (variants) {
+        if (variants && variants[last.variant]) show(last.variant, variants[last.variant]);
+        else restore();
+      });
+    } else {
+      restore();
     }
   }
 

@@ -1,0 +1,28 @@
+"""The question bank: one module per question type of the notes, each a list of templates.
+
+Adding a question touches one file: write its ``build`` function and its ``Template`` in
+the module of its type, and add it to that module's ``TEMPLATES``. Pages place a template
+with the ``question`` directive by its key::
+
+    ```{question} quick-check-1
+    ```
+"""
+
+from __future__ import annotations
+
+from ..variants import QUESTION_TYPES, Template
+from . import force_momentum
+
+#: Every template of the book, by key, in the order of the notes' types.
+TEMPLATES: dict[str, Template] = {}
+for _module in (force_momentum,):
+    for _template in _module.TEMPLATES:
+        if _template.key in TEMPLATES:
+            raise ValueError(f"template key {_template.key!r} is used twice")
+        TEMPLATES[_template.key] = _template
+
+
+def by_type(question_type: str) -> list[Template]:
+    if question_type not in QUESTION_TYPES:
+        raise ValueError(f"question_type must be one of {QUESTION_TYPES} (got {question_type!r})")
+    return [t for t in TEMPLATES.values() if t.type == question_type]

@@ -1,0 +1,150 @@
+"""Question templates and their variants: fresh numbers, drawn the way an exam writes them.
+
+A ``Template`` is a question with its givens left open: ``build(**values)`` makes the
+``Question`` (text, parts, keys from the models, mark scheme) for one set of values.
+Variant 0 is the printed version (the notes' numbers); the others are drawn from each
+given's ``Draw`` with a seed fixed by the template's key, so every build gives the same
+variants. A draw is refused when the physics refuses it (the models raise ValueError),
+when it repeats an earlier variant, or when a named mistake would land inside the band
+that the key accepts at 2 significant figures (then the marker could not tell them apart).
+"""
+
+from __future__ import annotations
+
+import math
+import random
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from functools import cached_property
+
+from .notation import round_number
+from .questions import Question
+
+#: The notes' seven question types (the ids outside tests use for data-type).
+QUESTION_TYPES = ("newton", "drag", "force-momentum", "definitions", "momentum-line", "elastic",
+                  "two-d")
+#: What a template asks for (data-kind): a number, a choice of four, a reading of a graph,
+#: a written explanation.
+KINDS = ("numeric", "mcq", "graph", "explain")
+#: Fresh-number templates give at least this many variants; templates that vary their
+#: situation instead (conceptual, multiple choice, explain) at least MIN_SITUATIONS.
+MIN_VARIANTS = 10
+MIN_SITUATIONS = 4
+_MAX_TRIES = 2000
+
+
+def _require(ok: bool, name: str, value, rule: str) -> None:
+    if not ok:
+        raise ValueError(f"{name} {rule} (got {name}={value!r})")
+
+
+@dataclass(frozen=True)
+class Draw:
+    """A given: the value the printed version states, and the grid fresh values come from
+    (low to high in steps of ``step``, at the precision an exam prints)."""
+
+    printed: float
+    low: float
+    high: float
+    step: float
+
+    def __post_init__(self):
+        _require(self.step > 0, "step", self.step, "must be positive")
+        _require(self.low <= self.high, "low", self.low, f"must not be above high={self.high}")
+        count = (self.high - self.low) / self.step
+        _require(abs(count - round(count)) < 1e-6, "step", self.step,
+                 f"must divide high - low = {self.high - self.low} into whole steps")
+
+    @property
+    def grid(self) -> tuple[float, ...]:
+        count = round((self.high - self.low) / self.step)
+        # rounded to the step's own places, so 0.1 steps give 2.3, not 2.3000000000000003
+        places = max(0, -math.floor(math.log10(self.step)) + 2)
+        return tuple(float(round_number(self.low + i * self.step, decimals=places))
+                     for i in range(count + 1))
+
+
+def accepted_band(key: float, sig_figs: int = 2) -> tuple[float, float]:
+    """The values a marker takes as the key at ``sig_figs`` s.f.: those that round to it."""
+    rounded = float(round_number(key, sig_figs))
+    if rounded == 0:
+        return (0.0, 0.0)
+    half = 10 ** (math.floor(math.log10(abs(rounded))) - sig_figs + 1) / 2
+    return (rounded - half, rounded + half)
+
+
+def confusable_mistakes(question: Question) -> list[str]:
+    """Named mistakes whose value the key's 2 s.f. band accepts (the marker could not tell)."""
+    found = []
+    for part in question.parts:
+        low, high = accepted_band(part.value)
+        for mistake in part.mistakes:
+            same_kind = mistake.unit is None and mistake.direction is None
+            if same_kind and low <= mistake.value <= high:
+                found.append(f"{part.prompt}: {mistake.name}")
+    return found
+
+
+@dataclass(frozen=True)
+class Template:
+    """A question whose numbers are drawn afresh. ``build(**values)`` gives its Question.
+
+    key: the stable id (data-question); type: one of QUESTION_TYPES; kinds: from KINDS.
+    draws: the givens that vary; a template with none has one variant (a try-first part
+    of a worked example keeps the printed numbers). variant_count: how many to make.
+    """
+
+    key: str
+    type: str
+    kinds: tuple[str, ...]
+    title: str
+    build: Callable[..., Question] = field(repr=False)
+    draws: Mapping[str, Draw] = field(default_factory=dict)
+    variant_count: int = MIN_VARIANTS
+
+    def __post_init__(self):
+        _require(self.type in QUESTION_TYPES, "type", self.type, f"must be one of {QUESTION_TYPES}")
+        _require(bool(self.kinds) and set(self.kinds) <= set(KINDS), "kinds", self.kinds,
+                 f"must be some of {KINDS}")
+        if self.draws:
+            least = MIN_VARIANTS if "numeric" in self.kinds or "graph" in self.kinds else MIN_SITUATIONS
+            _require(self.variant_count >= least, "variant_count", self.variant_count,
+                     f"must be at least {least} for a {'/'.join(self.kinds)} template")
+
+    @cached_property
+    def values(self) -> tuple[dict[str, float], ...]:
+        """The givens of every variant; variant 0 is the printed one."""
+        printed = {name: draw.printed for name, draw in self.draws.items()}
+        chosen = [printed]
+        self._check(printed, printed=True)
+        if not self.draws:
+            return tuple(chosen)
+        rng = random.Random(self.key)  # the same variants in every build
+        for _ in range(_MAX_TRIES):
+            if len(chosen) == self.variant_count:
+                return tuple(chosen)
+            values = {name: rng.choice(draw.grid) for name, draw in self.draws.items()}
+            if values not in chosen and self._check(values):
+                chosen.append(values)
+        raise ValueError(f"template {self.key} found only {len(chosen)} of {self.variant_count} "
+                         f"variants in {_MAX_TRIES} draws: widen its draws")
+
+    def _check(self, values: dict[str, float], *, printed: bool = False) -> bool:
+        try:
+            question = self.build(**values)
+        except ValueError:
+            if printed:
+                raise
+            return False
+        confused = confusable_mistakes(question)
+        if printed:
+            _require(not confused, "printed", values,
+                     f"gives named mistakes inside the key's 2 s.f. band in {self.key}: {confused}")
+        return not confused
+
+    def variant(self, index: int) -> Question:
+        return self.build(**self.values[index])
+
+    @property
+    def variants(self) -> tuple[Question, ...]:
+        return tuple(self.build(**values) for values in self.values)

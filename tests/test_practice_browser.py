@@ -1,0 +1,109 @@
+"""Practice as a student meets it, in Chromium: fresh numbers, marks as an exam awards
+them, and error carried forward from a wrong earlier part."""
+
+from __future__ import annotations
+
+import pytest
+from browser import open_browser, serve_site
+
+from physics_figures import bank
+from physics_figures.notation import format_number
+
+pytestmark = [pytest.mark.site, pytest.mark.browser]
+
+PAGE = "/book/exam/quick-check.html"
+KEY = "quick-check-1"
+
+
+@pytest.fixture(scope="module")
+def page_url(site_dir):
+    with serve_site(site_dir) as base_url, open_browser() as browser:
+        yield browser, base_url + PAGE
+
+
+@pytest.fixture
+def page(page_url):
+    browser, url = page_url
+    context = browser.new_context()
+    page = context.new_page()
+    errors = []
+    page.on("pageerror", lambda error: errors.append(str(error)))
+    page.goto(url, wait_until="load")
+    yield page
+    assert not errors
+    context.close()
+
+
+def _form(page):
+    return page.locator(f'form.q-form[data-question="{KEY}"]')
+
+
+def _answer(page, part: str, value: str, unit: str):
+    form = _form(page)
+    form.locator(f'[data-part="{part}"] input.q-value').fill(value)
+    form.locator(f'[data-part="{part}"] input.q-unit').fill(unit)
+
+
+def _check(page):
+    _form(page).locator("button.q-check").click()
+
+
+def test_a_first_visit_shows_the_printed_numbers_as_variant_0(page):
+    form = _form(page)
+    assert form.get_attribute("data-variant") == "0"
+    assert form.get_attribute("data-type") == "force-momentum"
+    assert form.get_attribute("data-kind") == "numeric"
+    assert "5.0 N acts on a 2.0 kg trolley" in page.locator(f"#question-{KEY} .q-text").inner_text()
+
+
+def test_right_answers_earn_every_mark_and_a_missing_unit_loses_only_the_a1(page):
+    _answer(page, "a", "15", "N s")
+    _answer(page, "b", "7.5", "m/s")
+    _check(page)
+    assert _form(page).locator(".q-score").inner_text() == "4/4 marks"
+    _answer(page, "a", "15", "")
+    _check(page)
+    assert _form(page).locator(".q-score").inner_text() == "3/4 marks"
+    assert _form(page).locator('[data-part="a"] .q-part-marks').inner_text() == "1/2 marks"
+
+
+def test_a_wrong_part_a_carries_forward_into_part_b(page):
+    # (a) wrong: 5.0 / 3.0 = 1.7 N s (force divided by time); (b) follows from it: 1.7 / 2.0 = 0.85
+    _answer(page, "a", "1.7", "N s")
+    _answer(page, "b", "0.85", "m s^-1")
+    _check(page)
+    b = _form(page).locator('[data-part="b"]')
+    assert b.locator(".q-feedback").get_attribute("data-code") == "ecf"
+    assert b.locator(".q-part-marks").inner_text() == "2/2 marks (ecf)"
+    assert _form(page).locator(".q-score").inner_text() == "2/4 marks"
+    # a (b) that does not follow from (a) earns nothing
+    _answer(page, "b", "0.50", "m s^-1")
+    _check(page)
+    assert b.locator(".q-feedback").get_attribute("data-code") != "ecf"
+    assert _form(page).locator(".q-score").inner_text() == "0/4 marks"
+
+
+def test_new_numbers_show_every_variant_once_before_any_repeats(page):
+    template = bank.TEMPLATES[KEY]
+    count = len(template.values)
+    seen = [0]
+    for _ in range(count - 1):
+        _form(page).locator("button.q-new").click()
+        page.wait_for_function(f"document.querySelector('form[data-question=\"{KEY}\"]')"
+                               f".getAttribute('data-variant') !== '{seen[-1]}'")
+        seen.append(int(_form(page).get_attribute("data-variant")))
+    assert sorted(seen) == list(range(count)), seen
+    # The text, the key and the marks follow the variant on screen.
+    question = template.variant(seen[-1])
+    assert page.locator(f"#question-{KEY} .q-text").inner_text().strip() == \
+        question.text.replace("\n", " ").strip()
+    a, b = question.parts
+    _answer(page, "a", format_number(a.value, 3), "N s")
+    _answer(page, "b", format_number(b.value, 3), "m s^-1")
+    _check(page)
+    assert _form(page).locator(".q-score").inner_text() == "4/4 marks"
+    # and the student keeps those numbers after a reload
+    page.reload(wait_until="load")
+    page.wait_for_function(f"document.querySelector('form[data-question=\"{KEY}\"]')"
+                           f".getAttribute('data-variant') === '{seen[-1]}'")
+    assert _form(page).locator(".q-score").inner_text() == "4/4 marks"

@@ -1,0 +1,115 @@
+"""Question templates: fresh numbers that are sensible, distinct and tell every named mistake
+apart from the key; one formula per later part, the same in Python and in the browser."""
+
+from __future__ import annotations
+
+import json
+import math
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from physics_figures import bank, textformat
+from physics_figures.questions import Question
+from physics_figures.variants import (
+    KINDS,
+    MIN_SITUATIONS,
+    MIN_VARIANTS,
+    QUESTION_TYPES,
+    Draw,
+    Template,
+    accepted_band,
+    confusable_mistakes,
+)
+
+ROOT = Path(__file__).resolve().parents[1]
+TEMPLATES = list(bank.TEMPLATES.values())
+VARIANTS = [pytest.param(t, i, id=f"{t.key}-{i}") for t in TEMPLATES for i in range(len(t.values))]
+
+
+@pytest.mark.parametrize("template", TEMPLATES, ids=lambda t: t.key)
+def test_each_template_has_enough_distinct_variants(template):
+    least = MIN_VARIANTS if {"numeric", "graph"} & set(template.kinds) else MIN_SITUATIONS
+    assert len(template.values) >= least
+    assert len({json.dumps(v, sort_keys=True) for v in template.values}) == len(template.values)
+    texts = {q.text for q in template.variants}
+    assert len(texts) == len(template.values), "two variants print the same text"
+    assert template.type in QUESTION_TYPES and set(template.kinds) <= set(KINDS)
+
+
+@pytest.mark.parametrize(("template", "index"), VARIANTS)
+def test_every_variant_is_sensible_and_tells_its_mistakes_apart(template, index):
+    question = template.variant(index)
+    assert isinstance(question, Question) and question.key == template.key
+    textformat.parse(question.text)
+    for given in question.givens:  # printed at the precision the exam gives
+        assert given.text in textformat.to_plain(question.text), (given.name, given.text)
+    for part in question.parts:
+        assert math.isfinite(part.value)
+        assert part.direction == "signed" or part.value > 0, f"{part.prompt} is {part.value}"
+        values = [m.value for m in part.mistakes if m.unit is None and m.direction is None]
+        assert len(values) == len(set(values)), f"{part.prompt}: two named mistakes give one value"
+    assert not confusable_mistakes(question)
+
+
+@pytest.mark.parametrize(("template", "index"), VARIANTS)
+def test_a_later_parts_formula_gives_its_key_in_python(template, index):
+    question = template.variant(index)
+    answers = {pid: p.value for pid, p in zip(question.part_ids, question.parts, strict=True)}
+    for part in question.parts:
+        if part.ecf:
+            assert part.ecf.evaluate(answers) == pytest.approx(part.value, rel=1e-12)
+
+
+def test_the_browser_evaluates_every_ecf_formula_as_python_does():
+    """sympy's JavaScript printer writes the formula the browser runs: run it in node on
+    every variant's numbers and compare with the key physics_figures computes."""
+    node = shutil.which("node")
+    assert node, "node is missing: scripts/ensure-debian-packages html installs it"
+    cases = []
+    for template in TEMPLATES:
+        for question in template.variants:
+            answers = {pid: p.value for pid, p in zip(question.part_ids, question.parts, strict=True)}
+            for pid, part in zip(question.part_ids, question.parts, strict=True):
+                if part.ecf:
+                    data = part.ecf.browser_data()
+                    args = [answers[a] if a in answers else data["values"][a] for a in data["args"]]
+                    cases.append({"js": data["js"], "names": data["args"], "args": args,
+                                  "expected": part.value, "where": f"{question.key} ({pid})"})
+    assert cases, "no template has an ecf part yet"
+    script = ("const cases = JSON.parse(require('fs').readFileSync(0, 'utf8'));"
+              "console.log(JSON.stringify(cases.map(c => Function(...c.names, 'return ' + c.js)(...c.args))));")
+    got = json.loads(subprocess.run([node, "-e", script], input=json.dumps(cases), capture_output=True,
+                                    text=True, check=True).stdout)
+    for case, value in zip(cases, got, strict=True):
+        assert abs(value) == pytest.approx(abs(case["expected"]), rel=1e-12), case["where"]
+
+
+def test_the_accepted_band_is_what_rounds_to_the_key_at_2_sf():
+    assert accepted_band(686.7) == (685.0, 695.0)
+    assert accepted_band(0.0154) == pytest.approx((0.0145, 0.0155))
+
+
+def test_a_draw_grid_is_at_exam_precision_and_a_bad_grid_is_refused():
+    assert Draw(5.0, 2.0, 3.0, 0.5).grid == (2.0, 2.5, 3.0)
+    assert Draw(0.2, 0.1, 0.3, 0.1).grid == (0.1, 0.2, 0.3)
+    with pytest.raises(ValueError, match=r"step must divide high - low"):
+        Draw(1.0, 0.0, 1.0, 0.3)
+
+
+def test_a_template_that_cannot_find_its_variants_says_so():
+    original = bank.TEMPLATES["quick-check-1"]
+    narrow = Template("quick-check-1", "force-momentum", ("numeric",), "narrow", original.build,
+                      {"force": Draw(5.0, 5.0, 6.0, 1.0)})
+    with pytest.raises(ValueError, match=r"found only 2 of 10 variants .* widen its draws"):
+        narrow.values  # noqa: B018
+
+
+def test_a_template_names_a_real_type_and_kind():
+    build = bank.TEMPLATES["quick-check-1"].build
+    with pytest.raises(ValueError, match=r"type must be one of"):
+        Template("x", "kinematics", ("numeric",), "x", build)
+    with pytest.raises(ValueError, match=r"kinds must be some of"):
+        Template("x", "drag", ("essay",), "x", build)

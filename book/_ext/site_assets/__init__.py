@@ -16,6 +16,9 @@ What this extension does to the HTML build (the PDF build is untouched):
 - **No dead weight or errors.** Thebe (live code via Binder: not used, and its script is
   added twice) is removed; the search index is loaded on the search page only; myst-nb's
   code toggles and the navigation's toggles get names that match what they show.
+- **Menus that work.** ``static/site-menus.js`` binds the sidebar toggles a reader
+  sees (the themes bind hidden duplicates); the search page loads Sphinx's search
+  scripts deferred like the rest (``book/_templates/search.html``).
 - **Findable.** Each page gets a meta description (its first paragraph), the site a
   ``robots.txt``.
 
@@ -331,9 +334,31 @@ def _config_inited(app: Sphinx, config) -> None:
     templates = str(Path(app.confdir) / "book" / "_templates")
     if templates not in config.templates_path:
         config.templates_path.insert(0, templates)
+    static = str(HERE / "static")  # site-menus.js
+    if static not in config.html_static_path:
+        config.html_static_path.append(static)
     app._site_tex = TexToSvg(Path(app.confdir) / "node_modules" / "mathjax")
     app._site_theme_digest = theme_digest()
     app._site_bundles = {}
+
+
+def _static_changed(app: Sphinx, env, added, changed, removed) -> list[str]:
+    """Rebuild the root page when a static file (site.css, a script) changed alone.
+
+    Sphinx copies static files only when some page is written: an edit to a stylesheet
+    and nothing else would never reach the site (nor the bundle).
+    """
+    if app.builder.format != "html":
+        return []
+    out = Path(app.outdir) / "_static"
+    for folder in app.config.html_static_path:
+        source = Path(app.confdir, folder)
+        files = source.rglob("*") if source.is_dir() else []
+        for path in (p for p in files if p.is_file()):
+            target = out / path.relative_to(source)
+            if not target.exists() or target.stat().st_mtime < path.stat().st_mtime:
+                return [app.config.root_doc]
+    return []
 
 
 def _build_finished(app: Sphinx, exception) -> None:
@@ -356,6 +381,8 @@ def _build_finished(app: Sphinx, exception) -> None:
 def setup(app: Sphinx):
     app.add_html_math_renderer("svg", (visit_math, None), (visit_displaymath, None))
     app.connect("config-inited", _config_inited)
+    app.add_js_file("site-menus.js")  # deferred, like every script (_page_context)
     app.connect("html-page-context", _page_context, priority=900)
+    app.connect("env-get-outdated", _static_changed)
     app.connect("build-finished", _build_finished)
     return {"parallel_read_safe": True, "parallel_write_safe": False}

@@ -17,6 +17,7 @@ import contextlib
 import gzip
 import http.server
 import io
+import re
 import shutil
 import threading
 from collections.abc import Iterator
@@ -128,15 +129,20 @@ def open_browser():
 
 
 def site_pages(site: Path) -> list[str]:
-    """Every content page of the built site, as paths relative to its root."""
-    skip = {"genindex.html", "search.html"}
+    """Every page of the built site, as paths relative to its root: the content pages and
+    every page Sphinx or Jupyter Book generates (search.html, the root redirect). A page
+    that is not wanted is removed from the build, never left out here."""
     return sorted(
         p.relative_to(site).as_posix()
         for p in site.rglob("*.html")
-        if p.name not in skip
-        and not {"_static", "_sources", "_images"} & set(p.parts)
-        and 'http-equiv="Refresh"' not in p.read_text()[:500]  # the root redirect
+        if not {"_static", "_sources", "_images"} & set(p.parts)
     )
+
+
+def is_redirect(page: Path) -> bool:
+    """Whether the HTML file `page` is a redirect stub (Jupyter Book's root index.html)."""
+    head = page.read_text(encoding="utf-8")[:500]
+    return bool(re.search(r'<meta\s+http-equiv="refresh"', head, flags=re.IGNORECASE))
 
 
 @dataclass
@@ -155,9 +161,12 @@ class PageLoad:
         return sum(self.transferred.values())
 
 
-def load_page(context, url: str, *, scroll: bool = True, measure: bool = True) -> tuple[object, PageLoad]:
+def load_page(context, url: str, *, scroll: bool = True, measure: bool = True,
+              redirect: bool = False) -> tuple[object, PageLoad]:
     """Open `url` in a new page of `context`; record requests, failures and console errors.
 
+    With `redirect` (`url` is a redirect stub, see is_redirect), wait for the page it
+    leads to: that is the page a reader sees, and the one recorded.
     With `scroll`, the page is scrolled to the bottom so lazily loaded figures count too.
     With `measure`, each response's transferred size is recorded (slower).
     """
@@ -187,6 +196,8 @@ def load_page(context, url: str, *, scroll: bool = True, measure: bool = True) -
     page.on("console", lambda m: m.type == "error" and record.console_errors.append(m.text))
     page.on("pageerror", lambda e: record.console_errors.append(str(e)))
     page.goto(url, wait_until="load")
+    if redirect:
+        page.wait_for_url(lambda now: now != url)  # checks judge the page the reader lands on
     if scroll:
         page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
         page.wait_for_load_state("networkidle")
@@ -269,10 +280,14 @@ class PageVisitor:
             sizes = await request.sizes()
             record.transferred[request.url] = sizes["responseBodySize"] + sizes["responseHeadersSize"]
 
-    async def visit(self, url: str, *, scroll: bool = False) -> PageLoad:
-        """Load `url`; with `scroll`, scroll to the bottom so lazy content loads and counts."""
+    async def visit(self, url: str, *, scroll: bool = False, redirect: bool = False) -> PageLoad:
+        """Load `url`; with `scroll`, scroll to the bottom so lazy content loads and counts.
+        With `redirect` (`url` is a redirect stub), wait for the page it leads to (the
+        one a reader sees): both loads are recorded."""
         self.record = PageLoad(url)
         await self.page.goto(url, wait_until="load")
+        if redirect:
+            await self.page.wait_for_url(lambda now: now != url)
         if scroll:
             await self.page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
             await self.page.wait_for_load_state("networkidle")

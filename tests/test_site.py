@@ -30,6 +30,7 @@ from browser import (
     PageVisitor,
     axe_violations_async,
     chromium_path,
+    is_redirect,
     node_module,
     open_browser_async,
     serve_site,
@@ -113,7 +114,8 @@ async def _keyboard(page) -> dict:
     return {"first": first, "jumped": jumped, "stops": stops}
 
 
-async def _sweep_mode(browser, base: str, pages: list[str], viewport: str, scheme: str, reports) -> None:
+async def _sweep_mode(browser, base: str, pages: list[str], viewport: str, scheme: str, reports,
+                      redirects: frozenset[str] = frozenset()) -> None:
     mode = f"{viewport}/{scheme}"
     first = mode == "desktop/light"  # measures bytes and requests, reads the page's facts
     context = await browser.new_context(viewport=VIEWPORTS[viewport], color_scheme=scheme)
@@ -123,7 +125,8 @@ async def _sweep_mode(browser, base: str, pages: list[str], viewport: str, schem
     page = visitor.page
     for path in pages:
         report = reports[path]
-        load = await visitor.visit(f"{base}/{path}", scroll=first)
+        # A redirect stub (the root index.html) is judged by the page it lands on.
+        load = await visitor.visit(f"{base}/{path}", scroll=first, redirect=path in redirects)
         # Judge the styles' end state (colours, focus rings), not a frame of a transition.
         await page.add_style_tag(content=NO_TRANSITIONS)
         report.failed += [f"{mode}: {failure}" for failure in load.failed]
@@ -133,7 +136,7 @@ async def _sweep_mode(browser, base: str, pages: list[str], viewport: str, schem
             report.total_bytes = load.total_bytes
             report.facts.update(await page.evaluate(PAGE_FACTS))
             report.facts["keyboard"] = await _keyboard(page)
-            await visitor.visit(f"{base}/{path}")
+            await visitor.visit(f"{base}/{path}", redirect=path in redirects)
             await page.add_style_tag(content=NO_TRANSITIONS)
         if scheme == "dark":
             report.dark_images[viewport] = (await page.evaluate(PAGE_FACTS))["images"]
@@ -147,11 +150,12 @@ async def _sweep_mode(browser, base: str, pages: list[str], viewport: str, schem
 
 async def _sweep(site: Path) -> dict[str, PageReport]:
     pages = site_pages(site)
+    redirects = frozenset(path for path in pages if is_redirect(site / path))
     reports = {path: PageReport(path) for path in pages}
     with serve_site(site) as base:
         async with open_browser_async() as browser:
             # The four modes run side by side (two cores: about twice as fast).
-            await asyncio.gather(*(_sweep_mode(browser, base, pages, v, s, reports) for v, s in MODES))
+            await asyncio.gather(*(_sweep_mode(browser, base, pages, v, s, reports, redirects) for v, s in MODES))
     return reports
 
 

@@ -273,6 +273,12 @@ def _first_paragraph(body: str, limit: int = 155) -> str:
     return ""
 
 
+# Pages Sphinx writes with no text of their own to describe them.
+GENERATED_PAGE_DESCRIPTIONS = {
+    "search": "Search {title}: every page of the notes, the worked examples, the exam methods and the questions.",
+}
+
+
 def theme_digest() -> str:
     """The cache-busting digest the theme appends to its own CSS and JS links."""
     macros = (_theme_dirs()[0] / "static" / "webpack-macros.html").read_text()
@@ -321,7 +327,11 @@ def _page_context(app: Sphinx, pagename: str, templatename: str, context: dict[s
     if "generate_toctree_html" in context:
         generate = context["generate_toctree_html"]
         context["generate_toctree_html"] = lambda *args, **kwargs: _name_toggles(generate(*args, **kwargs))
-    description = _first_paragraph(context.get("body", "")) or app.config.html_title
+    description = (
+        _first_paragraph(context.get("body", ""))
+        or GENERATED_PAGE_DESCRIPTIONS.get(pagename, "").format(title=app.config.html_title)
+        or app.config.html_title
+    )
     context["metatags"] = context.get("metatags", "") + (
         f'\n    <meta name="description" content="{html.escape(description, quote=True)}" />'
     )

@@ -10,7 +10,7 @@ book/_ext/site_assets/static/site-menus.js passes the visible buttons' clicks on
 from __future__ import annotations
 
 import pytest
-from browser import open_browser, serve_site
+from browser import axe_violations, open_browser, serve_site
 from playwright.sync_api import TimeoutError as PlaywrightTimeout
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
@@ -45,10 +45,11 @@ def browser():
 class Reader:
     """One page at one width; taps on a touch screen below 992 px, clicks otherwise."""
 
-    def __init__(self, browser, base_url: str, width: int):
+    def __init__(self, browser, base_url: str, width: int, scheme: str = "light"):
         self.width = width
         self.touch = width < 992
-        self.context = browser.new_context(viewport={"width": width, "height": 800}, has_touch=self.touch)
+        self.context = browser.new_context(viewport={"width": width, "height": 800}, has_touch=self.touch,
+                                           color_scheme=scheme)
         self.page = self.context.new_page()
         self.errors: list[str] = []
         self.page.on("console", lambda m: m.type == "error" and self.errors.append(m.text))
@@ -97,8 +98,8 @@ class Reader:
 def reader(browser, base_url):
     opened = []
 
-    def open_reader(width: int) -> Reader:
-        opened.append(Reader(browser, base_url, width))
+    def open_reader(width: int, scheme: str = "light") -> Reader:
+        opened.append(Reader(browser, base_url, width, scheme))
         return opened[-1]
 
     yield open_reader
@@ -180,3 +181,19 @@ def test_laptop_shows_the_contents_beside_the_page(reader):
     me = reader(1280)
     assert me.page.locator(".secondary-toggle:visible").count() == 0, "a Contents button with the contents in sight"
     assert me.page.locator('#pst-secondary-sidebar nav.page-toc a[href="#in-a-lift"]').is_visible()
+
+
+@pytest.mark.parametrize("scheme", ["light", "dark"])
+def test_open_menus_pass_axe(reader, scheme):
+    """The panels as they are when open (the site sweep sees them closed): every axe rule."""
+    me = reader(390, scheme)
+    me.page.add_style_tag(content="*, *::before, *::after { transition: none !important; }")
+    found = {}
+    for kind, dialog in (("primary", CHAPTERS), ("secondary", CONTENTS)):
+        me.press(me.toggle(kind))
+        me.wait_on_top(dialog, dialog)
+        found[dialog] = [f"{v['id']} ({v['impact']}): {v['targets']}"
+                         for v in axe_violations(me.page, context_selector=dialog)]
+        me.page.keyboard.press("Escape")
+        me.page.wait_for_function(f"!document.querySelector('{dialog}').open")
+    assert not any(found.values()), found

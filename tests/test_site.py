@@ -175,7 +175,12 @@ def _fail_pages(rule: str, problems: dict[str, object]) -> None:
 
 
 def test_the_sweep_saw_every_page(sweep, site_dir):
+    """Every HTML page of the site, the generated ones too: a page that is not wanted is
+    removed from the build (an empty genindex.html was), never left out of the sweep."""
+    pages = {p.relative_to(site_dir).as_posix() for p in site_dir.rglob("*.html") if "_static" not in p.parts}
     assert len(sweep) >= 2, f"only {len(sweep)} page(s) in {site_dir}"
+    assert pages - set(sweep) == set(), f"pages left out of the sweep: {sorted(pages - set(sweep))}"
+    assert {"index.html", "search.html"} <= set(sweep)
 
 
 def test_private_no_request_leaves_the_site(sweep):

@@ -17,7 +17,6 @@ import contextlib
 import gzip
 import http.server
 import io
-import re
 import shutil
 import threading
 from collections.abc import Iterator
@@ -139,10 +138,29 @@ def site_pages(site: Path) -> list[str]:
     )
 
 
-def is_redirect(page: Path) -> bool:
-    """Whether the HTML file `page` is a redirect stub (Jupyter Book's root index.html)."""
-    head = page.read_text(encoding="utf-8")[:500]
-    return bool(re.search(r'<meta\s+http-equiv="refresh"', head, flags=re.IGNORECASE))
+# A redirect stub (Jupyter Book's root index.html) is judged by the page it leads to, the
+# one a reader sees. After the stub's load event its refresh may have begun already.
+HAS_REFRESH = "!!document.querySelector('meta[http-equiv=refresh i]')"
+# Polled across navigations: true once a page other than the stub has fully loaded.
+LANDED = "stub => location.href !== stub && document.readyState === 'complete'"
+
+
+def _redirects(page, url: str) -> bool:
+    from playwright.sync_api import Error
+
+    try:
+        return page.url != url or page.evaluate(HAS_REFRESH)
+    except Error:  # the page went on while asked: it redirected
+        return True
+
+
+async def _redirects_async(page, url: str) -> bool:
+    from playwright.async_api import Error
+
+    try:
+        return page.url != url or await page.evaluate(HAS_REFRESH)
+    except Error:
+        return True
 
 
 @dataclass
@@ -161,12 +179,10 @@ class PageLoad:
         return sum(self.transferred.values())
 
 
-def load_page(context, url: str, *, scroll: bool = True, measure: bool = True,
-              redirect: bool = False) -> tuple[object, PageLoad]:
+def load_page(context, url: str, *, scroll: bool = True, measure: bool = True) -> tuple[object, PageLoad]:
     """Open `url` in a new page of `context`; record requests, failures and console errors.
 
-    With `redirect` (`url` is a redirect stub, see is_redirect), wait for the page it
-    leads to: that is the page a reader sees, and the one recorded.
+    A redirect stub is followed to the page it leads to (HAS_REFRESH).
     With `scroll`, the page is scrolled to the bottom so lazily loaded figures count too.
     With `measure`, each response's transferred size is recorded (slower).
     """
@@ -196,8 +212,8 @@ def load_page(context, url: str, *, scroll: bool = True, measure: bool = True,
     page.on("console", lambda m: m.type == "error" and record.console_errors.append(m.text))
     page.on("pageerror", lambda e: record.console_errors.append(str(e)))
     page.goto(url, wait_until="load")
-    if redirect:
-        page.wait_for_url(lambda now: now != url)  # checks judge the page the reader lands on
+    if _redirects(page, url):
+        page.wait_for_function(LANDED, arg=url)
     if scroll:
         page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
         page.wait_for_load_state("networkidle")
@@ -280,14 +296,13 @@ class PageVisitor:
             sizes = await request.sizes()
             record.transferred[request.url] = sizes["responseBodySize"] + sizes["responseHeadersSize"]
 
-    async def visit(self, url: str, *, scroll: bool = False, redirect: bool = False) -> PageLoad:
-        """Load `url`; with `scroll`, scroll to the bottom so lazy content loads and counts.
-        With `redirect` (`url` is a redirect stub), wait for the page it leads to (the
-        one a reader sees): both loads are recorded."""
+    async def visit(self, url: str, *, scroll: bool = False) -> PageLoad:
+        """Load `url` (a redirect stub: and the page it leads to, both recorded); with
+        `scroll`, scroll to the bottom so lazy content loads and counts."""
         self.record = PageLoad(url)
         await self.page.goto(url, wait_until="load")
-        if redirect:
-            await self.page.wait_for_url(lambda now: now != url)
+        if await _redirects_async(self.page, url):
+            await self.page.wait_for_function(LANDED, arg=url)
         if scroll:
             await self.page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
             await self.page.wait_for_load_state("networkidle")

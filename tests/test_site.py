@@ -30,7 +30,6 @@ from browser import (
     PageVisitor,
     axe_violations_async,
     chromium_path,
-    is_redirect,
     node_module,
     open_browser_async,
     serve_site,
@@ -114,8 +113,7 @@ async def _keyboard(page) -> dict:
     return {"first": first, "jumped": jumped, "stops": stops}
 
 
-async def _sweep_mode(browser, base: str, pages: list[str], viewport: str, scheme: str, reports,
-                      redirects: frozenset[str] = frozenset()) -> None:
+async def _sweep_mode(browser, base: str, pages: list[str], viewport: str, scheme: str, reports) -> None:
     mode = f"{viewport}/{scheme}"
     first = mode == "desktop/light"  # measures bytes and requests, reads the page's facts
     context = await browser.new_context(viewport=VIEWPORTS[viewport], color_scheme=scheme)
@@ -125,8 +123,8 @@ async def _sweep_mode(browser, base: str, pages: list[str], viewport: str, schem
     page = visitor.page
     for path in pages:
         report = reports[path]
-        # A redirect stub (the root index.html) is judged by the page it lands on.
-        load = await visitor.visit(f"{base}/{path}", scroll=first, redirect=path in redirects)
+        # A redirect stub (the root index.html) is judged by the page it leads to.
+        load = await visitor.visit(f"{base}/{path}", scroll=first)
         # Judge the styles' end state (colours, focus rings), not a frame of a transition.
         await page.add_style_tag(content=NO_TRANSITIONS)
         report.failed += [f"{mode}: {failure}" for failure in load.failed]
@@ -136,7 +134,7 @@ async def _sweep_mode(browser, base: str, pages: list[str], viewport: str, schem
             report.total_bytes = load.total_bytes
             report.facts.update(await page.evaluate(PAGE_FACTS))
             report.facts["keyboard"] = await _keyboard(page)
-            await visitor.visit(f"{base}/{path}", redirect=path in redirects)
+            await visitor.visit(f"{base}/{path}")
             await page.add_style_tag(content=NO_TRANSITIONS)
         if scheme == "dark":
             report.dark_images[viewport] = (await page.evaluate(PAGE_FACTS))["images"]
@@ -150,12 +148,11 @@ async def _sweep_mode(browser, base: str, pages: list[str], viewport: str, schem
 
 async def _sweep(site: Path) -> dict[str, PageReport]:
     pages = site_pages(site)
-    redirects = frozenset(path for path in pages if is_redirect(site / path))
     reports = {path: PageReport(path) for path in pages}
     with serve_site(site) as base:
         async with open_browser_async() as browser:
             # The four modes run side by side (two cores: about twice as fast).
-            await asyncio.gather(*(_sweep_mode(browser, base, pages, v, s, reports, redirects) for v, s in MODES))
+            await asyncio.gather(*(_sweep_mode(browser, base, pages, v, s, reports) for v, s in MODES))
     return reports
 
 
@@ -352,3 +349,17 @@ def test_lighthouse_on_the_heaviest_page(sweep, site_dir):
     low = {name: score for name, score in scores.items() if score is None or score < LIGHTHOUSE_MINIMUM[name]}
     assert not low, f"lighthouse (mobile) on {heaviest}: {scores}; below the minimum {LIGHTHOUSE_MINIMUM}"
 
+
+
+def test_root_index_is_a_small_complete_page_leading_to_the_book(site_dir):
+    """The site's address opens index.html: a page with a language, a title, an inline
+    icon (no request for /favicon.ico) and a link for readers whose browser does not
+    follow the refresh. The sweep judges the page it leads to."""
+    page = (site_dir / "index.html").read_text(encoding="utf-8")
+    refresh = re.search(r'<meta http-equiv="refresh" content="0; url=([^"]+)"', page)
+    assert refresh, f"index.html does not send the reader on:\n{page[:300]}"
+    target = refresh[1]
+    assert (site_dir / target).is_file(), f"index.html leads to {target}, which is not in the site"
+    assert re.search(r'<html lang="\w+', page) and re.search(r"<title>\S", page), page[:300]
+    assert '<link rel="icon" href="data:' in page, "no inline icon: the browser asks for /favicon.ico"
+    assert f'<a href="{target}">' in page

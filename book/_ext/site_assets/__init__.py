@@ -20,7 +20,7 @@ What this extension does to the HTML build (the PDF build is untouched):
   sees (the themes bind hidden duplicates); the search page loads Sphinx's search
   scripts deferred like the rest (``book/_templates/search.html``).
 - **Findable.** Each page gets a meta description (its first paragraph), the site a
-  ``robots.txt``.
+  ``robots.txt`` and a root ``index.html`` that is a real page leading to the book.
 
 Needs ``node`` and ``npm ci`` (package.json at the repository root pins mathjax).
 """
@@ -371,6 +371,33 @@ def _static_changed(app: Sphinx, env, added, changed, removed) -> list[str]:
     return []
 
 
+def write_root_redirect(app: Sphinx) -> None:
+    """The site's index.html: a small complete page that sends the reader to the book.
+
+    sphinx-external-toc writes a bare ``<meta http-equiv="Refresh">`` there when the file
+    is missing: no language and no title, and no icon, so Chromium asked the server for
+    /favicon.ico (a 404). The icon here is empty and inline: the page is left at once,
+    and a request it started would only be cut off by the move.
+    """
+    target = app.builder.get_target_uri(app.config.root_doc)
+    title = html.escape(app.config.html_title or app.config.project)
+    (Path(app.outdir) / "index.html").write_text(
+        f"""<!DOCTYPE html>
+<html lang="{app.config.language or 'en'}">
+<head>
+<meta charset="utf-8" />
+<meta name="viewport" content="width=device-width, initial-scale=1" />
+<title>{title}</title>
+<link rel="icon" href="data:," />
+<meta http-equiv="refresh" content="0; url={target}" />
+</head>
+<body><p><a href="{target}">{title}</a></p></body>
+</html>
+""",
+        encoding="utf-8",
+    )
+
+
 def _build_finished(app: Sphinx, exception) -> None:
     app._site_tex.close()
     if exception is not None or app.builder.format != "html":
@@ -385,6 +412,7 @@ def _build_finished(app: Sphinx, exception) -> None:
     for name, stylesheets in bundles.items():
         write_bundle(outdir, name, stylesheets)
     registry.write_text(json.dumps(bundles, indent=1, sort_keys=True))
+    write_root_redirect(app)
     (Path(app.outdir) / "robots.txt").write_text("User-agent: *\nAllow: /\n")
 
 

@@ -27,6 +27,7 @@ Needs ``node`` and ``npm ci`` (package.json at the repository root pins mathjax)
 
 from __future__ import annotations
 
+import filecmp
 import hashlib
 import html
 import json
@@ -364,9 +365,10 @@ def _static_changed(app: Sphinx, env, added, changed, removed) -> list[str]:
     for folder in app.config.html_static_path:
         source = Path(app.confdir, folder)
         files = source.rglob("*") if source.is_dir() else []
-        for path in (p for p in files if p.is_file()):
+        for path in (p for p in files if p.is_file() and not p.name.endswith("_t")):  # _t: templates
             target = out / path.relative_to(source)
-            if not target.exists() or target.stat().st_mtime < path.stat().st_mtime:
+            # As Sphinx decides whether to copy: by content (a touched file is not copied).
+            if not target.exists() or not filecmp.cmp(path, target, shallow=False):
                 return [app.config.root_doc]
     return []
 

@@ -131,15 +131,39 @@ def open_browser():
 
 
 def site_pages(site: Path) -> list[str]:
-    """Every content page of the built site, as paths relative to its root."""
-    skip = {"genindex.html", "search.html"}
+    """Every page of the built site, as paths relative to its root: the content pages and
+    every page Sphinx or Jupyter Book generates (search.html, the root redirect). A page
+    that is not wanted is removed from the build, never left out here."""
     return sorted(
         p.relative_to(site).as_posix()
         for p in site.rglob("*.html")
-        if p.name not in skip
-        and not {"_static", "_sources", "_images"} & set(p.parts)
-        and 'http-equiv="Refresh"' not in p.read_text()[:500]  # the root redirect
+        if not {"_static", "_sources", "_images"} & set(p.parts)
     )
+
+
+# A redirect stub (Jupyter Book's root index.html) is judged by the page it leads to, the
+# one a reader sees. After the stub's load event its refresh may have begun already.
+HAS_REFRESH = "!!document.querySelector('meta[http-equiv=refresh i]')"
+# Polled across navigations: true once a page other than the stub has fully loaded.
+LANDED = "stub => location.href !== stub && document.readyState === 'complete'"
+
+
+def _redirects(page, url: str) -> bool:
+    from playwright.sync_api import Error
+
+    try:
+        return page.url != url or page.evaluate(HAS_REFRESH)
+    except Error:  # the page went on while asked: it redirected
+        return True
+
+
+async def _redirects_async(page, url: str) -> bool:
+    from playwright.async_api import Error
+
+    try:
+        return page.url != url or await page.evaluate(HAS_REFRESH)
+    except Error:
+        return True
 
 
 @dataclass
@@ -161,6 +185,7 @@ class PageLoad:
 def load_page(context, url: str, *, scroll: bool = True, measure: bool = True) -> tuple[object, PageLoad]:
     """Open `url` in a new page of `context`; record requests, failures and console errors.
 
+    A redirect stub is followed to the page it leads to (HAS_REFRESH).
     With `scroll`, the page is scrolled to the bottom so lazily loaded figures count too.
     With `measure`, each response's transferred size is recorded (slower).
     """
@@ -190,6 +215,8 @@ def load_page(context, url: str, *, scroll: bool = True, measure: bool = True) -
     page.on("console", lambda m: m.type == "error" and record.console_errors.append(m.text))
     page.on("pageerror", lambda e: record.console_errors.append(str(e)))
     page.goto(url, wait_until="load")
+    if _redirects(page, url):
+        page.wait_for_function(LANDED, arg=url)
     if scroll:
         page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
         page.wait_for_load_state("networkidle")
@@ -273,9 +300,12 @@ class PageVisitor:
             record.transferred[request.url] = sizes["responseBodySize"] + sizes["responseHeadersSize"]
 
     async def visit(self, url: str, *, scroll: bool = False) -> PageLoad:
-        """Load `url`; with `scroll`, scroll to the bottom so lazy content loads and counts."""
+        """Load `url` (a redirect stub: and the page it leads to, both recorded); with
+        `scroll`, scroll to the bottom so lazy content loads and counts."""
         self.record = PageLoad(url)
         await self.page.goto(url, wait_until="load")
+        if await _redirects_async(self.page, url):
+            await self.page.wait_for_function(LANDED, arg=url)
         if scroll:
             await self.page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
             await self.page.wait_for_load_state("networkidle")

@@ -125,6 +125,7 @@ async def _sweep_mode(browser, base: str, pages: list[str], viewport: str, schem
     page = visitor.page
     for path in pages:
         report = reports[path]
+        # A redirect stub (the root index.html) is judged by the page it leads to.
         load = await visitor.visit(f"{base}/{path}", scroll=first)
         # Judge the styles' end state (colours, focus rings), not a frame of a transition.
         await page.add_style_tag(content=NO_TRANSITIONS)
@@ -173,7 +174,12 @@ def _fail_pages(rule: str, problems: dict[str, object]) -> None:
 
 
 def test_the_sweep_saw_every_page(sweep, site_dir):
+    """Every HTML page of the site, the generated ones too: a page that is not wanted is
+    removed from the build (an empty genindex.html was), never left out of the sweep."""
+    pages = {p.relative_to(site_dir).as_posix() for p in site_dir.rglob("*.html") if "_static" not in p.parts}
     assert len(sweep) >= 2, f"only {len(sweep)} page(s) in {site_dir}"
+    assert pages - set(sweep) == set(), f"pages left out of the sweep: {sorted(pages - set(sweep))}"
+    assert {"index.html", "search.html"} <= set(sweep)
 
 
 def test_private_no_request_leaves_the_site(sweep):
@@ -345,3 +351,17 @@ def test_lighthouse_on_the_heaviest_page(sweep, site_dir):
     low = {name: score for name, score in scores.items() if score is None or score < LIGHTHOUSE_MINIMUM[name]}
     assert not low, f"lighthouse (mobile) on {heaviest}: {scores}; below the minimum {LIGHTHOUSE_MINIMUM}"
 
+
+
+def test_root_index_is_a_small_complete_page_leading_to_the_book(site_dir):
+    """The site's address opens index.html: a page with a language, a title, an inline
+    icon (no request for /favicon.ico) and a link for readers whose browser does not
+    follow the refresh. The sweep judges the page it leads to."""
+    page = (site_dir / "index.html").read_text(encoding="utf-8")
+    refresh = re.search(r'<meta http-equiv="refresh" content="0; url=([^"]+)"', page)
+    assert refresh, f"index.html does not send the reader on:\n{page[:300]}"
+    target = refresh[1]
+    assert (site_dir / target).is_file(), f"index.html leads to {target}, which is not in the site"
+    assert re.search(r'<html lang="\w+', page) and re.search(r"<title>\S", page), page[:300]
+    assert '<link rel="icon" href="data:' in page, "no inline icon: the browser asks for /favicon.ico"
+    assert f'<a href="{target}">' in page

@@ -16,14 +16,18 @@ What this extension does to the HTML build (the PDF build is untouched):
 - **No dead weight or errors.** Thebe (live code via Binder: not used, and its script is
   added twice) is removed; the search index is loaded on the search page only; myst-nb's
   code toggles and the navigation's toggles get names that match what they show.
+- **Menus that work.** ``static/site-menus.js`` binds the sidebar toggles a reader
+  sees (the themes bind hidden duplicates); the search page loads Sphinx's search
+  scripts deferred like the rest (``book/_templates/search.html``).
 - **Findable.** Each page gets a meta description (its first paragraph), the site a
-  ``robots.txt``.
+  ``robots.txt`` and a root ``index.html`` that is a real page leading to the book.
 
 Needs ``node`` and ``npm ci`` (package.json at the repository root pins mathjax).
 """
 
 from __future__ import annotations
 
+import filecmp
 import hashlib
 import html
 import json
@@ -270,6 +274,12 @@ def _first_paragraph(body: str, limit: int = 155) -> str:
     return ""
 
 
+# Pages Sphinx writes with no text of their own to describe them.
+GENERATED_PAGE_DESCRIPTIONS = {
+    "search": "Search {title}: every page of the notes, the worked examples, the exam methods and the questions.",
+}
+
+
 def theme_digest() -> str:
     """The cache-busting digest the theme appends to its own CSS and JS links."""
     macros = (_theme_dirs()[0] / "static" / "webpack-macros.html").read_text()
@@ -318,7 +328,11 @@ def _page_context(app: Sphinx, pagename: str, templatename: str, context: dict[s
     if "generate_toctree_html" in context:
         generate = context["generate_toctree_html"]
         context["generate_toctree_html"] = lambda *args, **kwargs: _name_toggles(generate(*args, **kwargs))
-    description = _first_paragraph(context.get("body", "")) or app.config.html_title
+    description = (
+        _first_paragraph(context.get("body", ""))
+        or GENERATED_PAGE_DESCRIPTIONS.get(pagename, "").format(title=app.config.html_title)
+        or app.config.html_title
+    )
     context["metatags"] = context.get("metatags", "") + (
         f'\n    <meta name="description" content="{html.escape(description, quote=True)}" />'
     )
@@ -331,9 +345,59 @@ def _config_inited(app: Sphinx, config) -> None:
     templates = str(Path(app.confdir) / "book" / "_templates")
     if templates not in config.templates_path:
         config.templates_path.insert(0, templates)
+    static = str(HERE / "static")  # site-menus.js
+    if static not in config.html_static_path:
+        config.html_static_path.append(static)
     app._site_tex = TexToSvg(Path(app.confdir) / "node_modules" / "mathjax")
     app._site_theme_digest = theme_digest()
     app._site_bundles = {}
+
+
+def _static_changed(app: Sphinx, env, added, changed, removed) -> list[str]:
+    """Rebuild the root page when a static file (site.css, a script) changed alone.
+
+    Sphinx copies static files only when some page is written: an edit to a stylesheet
+    and nothing else would never reach the site (nor the bundle).
+    """
+    if app.builder.format != "html":
+        return []
+    out = Path(app.outdir) / "_static"
+    for folder in app.config.html_static_path:
+        source = Path(app.confdir, folder)
+        files = source.rglob("*") if source.is_dir() else []
+        for path in (p for p in files if p.is_file() and not p.name.endswith("_t")):  # _t: templates
+            target = out / path.relative_to(source)
+            # As Sphinx decides whether to copy: by content (a touched file is not copied).
+            if not target.exists() or not filecmp.cmp(path, target, shallow=False):
+                return [app.config.root_doc]
+    return []
+
+
+def write_root_redirect(app: Sphinx) -> None:
+    """The site's index.html: a small complete page that sends the reader to the book.
+
+    sphinx-external-toc writes a bare ``<meta http-equiv="Refresh">`` there when the file
+    is missing: no language and no title, and no icon, so Chromium asked the server for
+    /favicon.ico (a 404). The icon here is empty and inline: the page is left at once,
+    and a request it started would only be cut off by the move.
+    """
+    target = app.builder.get_target_uri(app.config.root_doc)
+    title = html.escape(app.config.html_title or app.config.project)
+    (Path(app.outdir) / "index.html").write_text(
+        f"""<!DOCTYPE html>
+<html lang="{app.config.language or 'en'}">
+<head>
+<meta charset="utf-8" />
+<meta name="viewport" content="width=device-width, initial-scale=1" />
+<title>{title}</title>
+<link rel="icon" href="data:," />
+<meta http-equiv="refresh" content="0; url={target}" />
+</head>
+<body><p><a href="{target}">{title}</a></p></body>
+</html>
+""",
+        encoding="utf-8",
+    )
 
 
 def _build_finished(app: Sphinx, exception) -> None:
@@ -350,12 +414,15 @@ def _build_finished(app: Sphinx, exception) -> None:
     for name, stylesheets in bundles.items():
         write_bundle(outdir, name, stylesheets)
     registry.write_text(json.dumps(bundles, indent=1, sort_keys=True))
+    write_root_redirect(app)
     (Path(app.outdir) / "robots.txt").write_text("User-agent: *\nAllow: /\n")
 
 
 def setup(app: Sphinx):
     app.add_html_math_renderer("svg", (visit_math, None), (visit_displaymath, None))
     app.connect("config-inited", _config_inited)
+    app.add_js_file("site-menus.js")  # deferred, like every script (_page_context)
     app.connect("html-page-context", _page_context, priority=900)
+    app.connect("env-get-outdated", _static_changed)
     app.connect("build-finished", _build_finished)
     return {"parallel_read_safe": True, "parallel_write_safe": False}

@@ -11,7 +11,10 @@ from __future__ import annotations
 import os
 import subprocess
 
+import pytest
 from test_build import VENV, make_book
+
+pytestmark = [pytest.mark.build]
 
 
 def rebuild(project):

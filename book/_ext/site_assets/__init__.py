@@ -416,6 +416,8 @@ def _build_finished(app: Sphinx, exception) -> None:
     registry.write_text(json.dumps(bundles, indent=1, sort_keys=True))
     write_root_redirect(app)
     (Path(app.outdir) / "robots.txt").write_text("User-agent: *\nAllow: /\n")
+    if not app.config.html_use_index:  # an index page left by an older build is not the book's
+        (outdir / "genindex.html").unlink(missing_ok=True)
 
 
 def setup(app: Sphinx):

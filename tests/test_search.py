@@ -73,7 +73,10 @@ class Reader:
         self.errors: list[str] = []
         self.page.on("console", lambda m: m.type == "error" and self.errors.append(m.text))
         self.page.on("pageerror", lambda e: self.errors.append(f"uncaught: {e}"))
-        self.page.on("requestfailed", lambda r: self.errors.append(f"failed: {r.url} {r.failure}"))
+        # A request the browser drops because the reader moved on (Enter opens the search
+        # page while the favicon still loads) is ERR_ABORTED: not a failure of the site.
+        self.page.on("requestfailed", lambda r: "ERR_ABORTED" not in (r.failure or "")
+                     and self.errors.append(f"failed: {r.url} {r.failure}"))
         self.touch = width < 992
 
     def open(self, path: str):

@@ -28,6 +28,7 @@ import math
 import re
 from collections.abc import Callable, Mapping
 from dataclasses import KW_ONLY, dataclass, field
+from typing import ClassVar
 
 import sympy
 
@@ -230,6 +231,7 @@ class Part:
     answer_from: Callable[..., float] | None = field(default=None, compare=False, repr=False)
     answer_for_g: Callable[[float], float] | None = field(default=None, compare=False, repr=False)
     ecf: Ecf | None = None
+    kind: ClassVar[str] = "numeric"
 
     def __post_init__(self):
         object.__setattr__(self, "value", float(self.value))
@@ -341,8 +343,110 @@ class Part:
             ],
             "gNineEight": self.g_nine_eight,
             "roundedPartWay": [{"value": value, "rounded": what} for value, what in self.rounded_part_way],
-            "ecf": self.ecf.browser_data() if self.ecf else None,
+            "ecf": self.ecf.browser_data() if self.ecf else None, "kind": self.kind,
         }
+
+
+OPTION_LETTERS = ("A", "B", "C", "D")
+
+
+@dataclass(frozen=True)
+class Option:
+    """One option of a multiple-choice part (text format). A wrong option names the mistake or
+    misconception it stands for, with the feedback a student gets for choosing it."""
+
+    text: str
+    mistake: str = ""
+    feedback: str = ""
+
+    def __post_init__(self):
+        textformat.parse(self.text)
+        _require(bool(self.mistake) == bool(self.feedback), "feedback", self.feedback,
+                 "goes with a named mistake: a wrong option has both, the key has neither")
+
+
+@dataclass(frozen=True)
+class ChoicePart:
+    """A Paper 1-style multiple-choice part: options A to D, one of them right (``answer``).
+    The wrong options are named mistakes worked from the same givens, or named misconceptions."""
+
+    prompt: str
+    options: tuple[Option, ...]
+    answer: str
+    revisit: str
+    kind: ClassVar[str] = "mcq"
+    asks: ClassVar[str] = "state"
+    value: ClassVar[None] = None
+    mistakes: ClassVar[tuple] = ()
+    direction: ClassVar[str] = "none"
+    ecf: ClassVar[None] = None
+
+    def __post_init__(self):
+        _require(len(self.options) == len(OPTION_LETTERS), "options", len(self.options),
+                 f"must be {len(OPTION_LETTERS)}, one per letter {OPTION_LETTERS}")
+        _require(self.answer in OPTION_LETTERS, "answer", self.answer, f"must be one of {OPTION_LETTERS}")
+        for letter, option in zip(OPTION_LETTERS, self.options, strict=True):
+            right = letter == self.answer
+            _require(right != bool(option.mistake), "options", letter,
+                     "must name a mistake for each wrong option and none for the key")
+        texts = [textformat.to_plain(o.text) for o in self.options]
+        _require(len(set(texts)) == len(texts), "options", texts, "must all differ")
+        _require(bool(self.revisit.strip()), "revisit", self.revisit, "must name the idea to revisit")
+
+    @property
+    def answer_text(self) -> str:
+        return f"{self.answer}: {textformat.to_plain(self.options[OPTION_LETTERS.index(self.answer)].text)}"
+
+    def browser_data(self, part_id: str) -> dict:
+        return {"id": part_id, "kind": self.kind, "prompt": self.prompt, "answer": self.answer,
+                "revisit": self.revisit,
+                "options": [{"letter": letter, "html": textformat.to_html(o.text, paragraphs=False),
+                             "mistake": o.mistake, "feedback": o.feedback}
+                            for letter, o in zip(OPTION_LETTERS, self.options, strict=True)]}
+
+
+def choices_in_order(key: float, wrong: dict[str, tuple[float, str]], *, sig_figs: int, unit: str
+                     ) -> tuple[tuple[Option, ...], str]:
+    """Options for a numerical multiple-choice part, in increasing order as Paper 1 prints them:
+    the key and three named mistakes {name: (value, feedback)} worked from the same givens.
+    Returns (options, the key's letter)."""
+    _require(len(wrong) == len(OPTION_LETTERS) - 1, "wrong", sorted(wrong),
+             f"must hold {len(OPTION_LETTERS) - 1} named mistakes")
+    space = "" if unit == "°" else " "
+    rows = sorted([(key, "", "")] + [(value, name, feedback) for name, (value, feedback) in wrong.items()])
+    texts = [f"{format_number(value, sig_figs)}{space}{unit}" for value, _, _ in rows]
+    _require(len(set(texts)) == len(texts), "wrong", texts,
+             f"must print differently from the key and each other at {sig_figs} s.f.")
+    options = tuple(Option(text, name, feedback) for text, (_, name, feedback) in zip(texts, rows, strict=True))
+    answer = OPTION_LETTERS[[name for _, name, _ in rows].index("")]
+    return options, answer
+
+
+@dataclass(frozen=True)
+class ExplainPart:
+    """A describe-and-explain part. The student writes an answer, then ticks the marking points
+    of its mark-scheme lines that they made, and scores themselves against them."""
+
+    prompt: str
+    model_answer: str
+    kind: ClassVar[str] = "explain"
+    asks: ClassVar[str] = "explain"
+    value: ClassVar[None] = None
+    mistakes: ClassVar[tuple] = ()
+    direction: ClassVar[str] = "none"
+    ecf: ClassVar[None] = None
+    revisit: ClassVar[str] = ""
+
+    def __post_init__(self):
+        textformat.parse(self.model_answer)
+
+    @property
+    def answer_text(self) -> str:
+        return textformat.to_plain(self.model_answer)
+
+    def browser_data(self, part_id: str) -> dict:
+        return {"id": part_id, "kind": self.kind, "prompt": self.prompt,
+                "model": textformat.to_html(self.model_answer)}
 
 
 @dataclass(frozen=True)
@@ -371,7 +475,7 @@ class Question:
 
     key: str
     givens: tuple[Given, ...]
-    parts: tuple[Part, ...]
+    parts: tuple[Part | ChoicePart | ExplainPart, ...]
     mark_scheme: tuple[Mark, ...]
     #: The question as the student reads it (physics_figures.textformat), for a template;
     #: empty when the page states it (worked examples' try-first parts).
@@ -450,7 +554,8 @@ class Question:
         """What the marking script needs: the parts and, per mark line, its part(s) and code."""
         return {"id": self.key,
                 "parts": [p.browser_data(i) for i, p in zip(self.part_ids, self.parts, strict=True)],
-                "marks": [{"parts": list(self.parts_of(m)), "code": m.code}
+                "marks": [{"parts": list(self.parts_of(m)), "code": m.code,
+                           "html": textformat.to_html(m.text, paragraphs=False) if self.text else ""}
                           for m in self.mark_scheme if m.code]}
 
     def variant_data(self) -> dict:

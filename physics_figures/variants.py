@@ -77,6 +77,8 @@ def confusable_mistakes(question: Question) -> list[str]:
     """Named mistakes whose value the key's 2 s.f. band accepts (the marker could not tell)."""
     found = []
     for part in question.parts:
+        if part.kind != "numeric":  # a choice or an explanation has no band
+            continue
         low, high = accepted_band(part.value)
         for mistake in part.mistakes:
             same_kind = mistake.unit is None and mistake.direction is None

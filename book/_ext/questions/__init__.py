@@ -122,10 +122,7 @@ class QuestionDirective(SphinxDirective):
             node += nodes.container("", *text_nodes(data.text), classes=["q-text"])
         lines = nodes.container(classes=["q-answer-lines"])
         for index, part in enumerate(data.parts):
-            line = f"{data.label(index)}{part.prompt} = " + "." * 28
-            if part.direction == "choice":
-                line += " direction: " + "." * 16
-            lines += nodes.paragraph(text=line)
+            lines += answer_lines(data.label(index), part)
         node += lines
         node += question_form(data=node["data"], template=node["template"],
                               legends=[data.label(i) + p.prompt[:1].upper() + p.prompt[1:]
@@ -170,6 +167,24 @@ class QuestionDirective(SphinxDirective):
             "answers": [data.label(i) + f"{p.prompt}: {p.answer_text}" for i, p in enumerate(data.parts)],
             "scheme": [child.deepcopy() for child in worked.children],
         })
+
+
+def answer_lines(label: str, part) -> list[nodes.Node]:
+    """What a part prints on paper: its options and a box for the letter, lines for an
+    explanation, or a line for a value (and its direction)."""
+    if part.kind == "mcq":
+        options = nodes.enumerated_list(enumtype="upperalpha", classes=["q-options-print"])
+        for option in part.options:
+            options += nodes.list_item("", *text_nodes(option.text))
+        return [nodes.paragraph(text=f"{label}{part.prompt}"), options,
+                nodes.paragraph(text="Answer (A, B, C or D): " + "." * 8)]
+    if part.kind == "explain":
+        return [nodes.paragraph(text=f"{label}{part.prompt}")] + [
+            nodes.paragraph(text="." * 70) for _ in range(4)]
+    line = f"{label}{part.prompt} = " + "." * 28
+    if part.direction == "choice":
+        line += " direction: " + "." * 16
+    return [nodes.paragraph(text=line)]
 
 
 def _template_data(template) -> dict | None:
@@ -371,6 +386,48 @@ def _input(cls: str, ident: str, label: str, described_by: str) -> str:
             f'spellcheck="false" aria-describedby="{described_by}"></label>')
 
 
+def _numeric_html(base: str, part: dict) -> str:
+    feedback, html = f"{base}-feedback", []
+    if part["direction"] == "signed":
+        html.append(f'<p class="q-note" id="{base}-note">Give a signed value: positive is '
+                    f"{escape(part['positive'])}.</p>")
+        feedback += f" {base}-note"
+    html.append('<div class="q-fields">')
+    html.append(_input("q-value", f"{base}-value", "Value", feedback))
+    html.append(_input("q-unit", f"{base}-unit", "Unit", feedback))
+    if part["direction"] == "choice":
+        options = "".join(f'<option value="{escape(c)}">{escape(c)}</option>' for c in part["choices"])
+        html.append(f'<label class="q-field" for="{base}-direction"><span>Direction</span>'
+                    f'<select class="q-direction" id="{base}-direction" aria-describedby="{feedback}">'
+                    f'<option value="">Choose…</option>{options}</select></label>')
+    html.append("</div>")
+    return "".join(html)
+
+
+def _options_html(base: str, part: dict) -> str:
+    """Radio buttons A to D (values A-D: the interface outside tests use)."""
+    items = "".join(
+        f'<label class="q-option" for="{base}-{o["letter"]}"><input type="radio" class="q-choice" '
+        f'name="{base}" id="{base}-{o["letter"]}" value="{o["letter"]}" aria-describedby="{base}-feedback">'
+        f'<span class="q-letter">{o["letter"]}</span> <span class="q-option-text">{o["html"]}</span></label>'
+        for o in part["options"])
+    return f'<div class="q-options">{items}</div>'
+
+
+def _explain_html(base: str, part: dict, data: dict) -> str:
+    """A box for the student's own words; after Check, the marking points to tick."""
+    points = "".join(
+        f'<label class="q-point"><input type="checkbox" class="q-tick" value="{i}"> '
+        f'<span class="q-point-text">{mark["html"]}</span> <strong>{mark["code"]}</strong></label>'
+        for i, mark in enumerate(data["marks"]) if part["id"] in mark["parts"])
+    return (f'<label class="q-field q-field-wide" for="{base}-text"><span>Your answer</span>'
+            f'<textarea class="q-explain" id="{base}-text" rows="4" aria-describedby="{base}-feedback">'
+            f'</textarea></label>'
+            f'<div class="q-points" hidden><p>Tick each marking point your answer makes:</p>{points}'
+            f'<div class="q-model"><p><strong>A full answer:</strong></p>'
+            f'<div class="q-model-text">{part["model"]}</div></div></div>')
+
+
 def visit_question_form(self, node):
     data, template = node["data"], node.get("template")
     attributes = ""
@@ -381,21 +438,15 @@ def visit_question_form(self, node):
     html = [f'<form class="q-form"{attributes} hidden novalidate>']
     for part, legend in zip(data["parts"], node["legends"], strict=True):
         base = f"q-{data['id']}-{part['id']}"
-        feedback = f"{base}-feedback"
-        html.append(f'<fieldset class="q-part" data-part="{part["id"]}"><legend>{escape(legend)}</legend>')
-        if part["direction"] == "signed":
-            html.append(f'<p class="q-note" id="{base}-note">Give a signed value: positive is '
-                        f"{escape(part['positive'])}.</p>")
-            feedback += f" {base}-note"
-        html.append('<div class="q-fields">')
-        html.append(_input("q-value", f"{base}-value", "Value", feedback))
-        html.append(_input("q-unit", f"{base}-unit", "Unit", feedback))
-        if part["direction"] == "choice":
-            options = "".join(f'<option value="{escape(c)}">{escape(c)}</option>' for c in part["choices"])
-            html.append(f'<label class="q-field" for="{base}-direction"><span>Direction</span>'
-                        f'<select class="q-direction" id="{base}-direction" aria-describedby="{feedback}">'
-                        f'<option value="">Choose…</option>{options}</select></label>')
-        html.append("</div>")
+        kind = part.get("kind", "numeric")
+        html.append(f'<fieldset class="q-part" data-part="{part["id"]}" data-kind="{kind}">'
+                    f"<legend>{escape(legend)}</legend>")
+        if kind == "mcq":
+            html.append(_options_html(base, part))
+        elif kind == "explain":
+            html.append(_explain_html(base, part, data))
+        else:
+            html.append(_numeric_html(base, part))
         html.append(f'<p class="q-feedback" id="{base}-feedback" role="status"></p>'
                     '<p class="q-part-marks"></p></fieldset>')
     new = ('<button type="button" class="q-new">New numbers</button>'

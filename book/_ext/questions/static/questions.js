@@ -285,6 +285,8 @@
    *        choices, answerDirection, mistakes: [{value, unit, direction, feedback}], revisit}
    * answer: {value: text, unit: text, direction: text} */
   function mark(part, answer) {
+    if (part.kind === "mcq") return markChoice(part, answer.choice || "");
+    if (part.kind === "explain") return markExplanation(part, answer);
     var valueText = answer.value || "", unitText = answer.unit || "", direction = answer.direction || "";
     if (!normalise(unitText) && /[A-Za-zµμ°%]/.test(normalise(valueText).replace(/[eExX×]/g, ""))) {
       var split = splitValueAndUnit(valueText);
@@ -408,6 +410,23 @@
     return out("wrong", "Not right. " + (part.revisit || "Check your method and your arithmetic."));
   }
 
+  /* A multiple-choice part: the key, or the named mistake its wrong option stands for. */
+  function markChoice(part, letter) {
+    var option = (part.options || []).filter(function (o) { return o.letter === letter; })[0];
+    if (!option) return outcome("no-choice", "Choose one of the options A to D.");
+    if (letter === part.answer) return outcome("correct", "Correct.");
+    return outcome("mistake", option.feedback + (part.revisit ? " " + part.revisit : ""), { mistake: option.mistake });
+  }
+
+  /* A describe-and-explain part is self-marked: the student ticks the marking points made. */
+  function markExplanation(part, answer) {
+    if (!String(answer.text || "").trim()) {
+      return outcome("no-answer", "Write your answer first, then compare it with the marking points.");
+    }
+    return outcome("self-marked", "Now tick each marking point your answer makes: your marks follow.",
+      { ticked: answer.ticked || [] });
+  }
+
   // ------------------------------------------------------------ marks, as an exam awards them
 
   // Outcomes that earn every mark of the part but the A1: the value is right, but its unit
@@ -438,8 +457,10 @@
     data.parts.forEach(function (part) { byPart[part.id] = [0, 0]; });
     var kept = {};
     data.marks.forEach(function (line) {
+      var index = data.marks.indexOf(line);
       var ok = line.parts.every(function (id) {
         var part = data.parts.filter(function (p) { return p.id === id; })[0];
+        if (part.kind === "explain") return ticked(data, results[id], id, index);
         var loss = lost(results[id] || { code: "wrong" }, part);
         var lines = data.marks.filter(function (m) { return m.parts.indexOf(id) >= 0; });
         var isDirection = line.code === "B1" && part.direction !== "none" &&
@@ -456,6 +477,18 @@
       if (ok) { byPart[owner][0] += 1; earned += 1; }
     });
     return { earned: earned, available: data.marks.length, byPart: byPart };
+  }
+
+  /* A self-marked line counts when ticked; an A1 also needs the M1 before it in its part ticked. */
+  function ticked(data, result, id, index) {
+    var list = (result && result.ticked) || [];
+    if (list.indexOf(index) < 0) return false;
+    if (data.marks[index].code !== "A1") return true;
+    for (var i = index - 1; i >= 0; i--) {
+      var line = data.marks[i];
+      if (line.parts.indexOf(id) >= 0 && line.code === "M1") return list.indexOf(i) >= 0;
+    }
+    return true;
   }
 
   /* Mark every part of a question, carrying an error forward: a later part with an ecf
@@ -589,19 +622,45 @@
     function fields(part) {
       var box = form.querySelector("[data-part=\"" + part.id + "\"]");
       return {
-        value: box.querySelector(".q-value"), unit: box.querySelector(".q-unit"),
+        box: box, value: box.querySelector(".q-value"), unit: box.querySelector(".q-unit"),
         direction: box.querySelector(".q-direction"), feedback: box.querySelector(".q-feedback"),
-        marks: box.querySelector(".q-part-marks")
+        marks: box.querySelector(".q-part-marks"), choices: box.querySelectorAll(".q-choice"),
+        text: box.querySelector(".q-explain"), ticks: box.querySelectorAll(".q-tick"),
+        points: box.querySelector(".q-points")
       };
+    }
+
+    function answerOf(part) {
+      var f = fields(part);
+      if (part.kind === "mcq") {
+        var chosen = Array.prototype.filter.call(f.choices, function (c) { return c.checked; })[0];
+        return { choice: chosen ? chosen.value : "" };
+      }
+      if (part.kind === "explain") {
+        return { text: f.text.value, ticked: Array.prototype.filter.call(f.ticks, function (t) { return t.checked; })
+          .map(function (t) { return Number(t.value); }) };
+      }
+      return { value: f.value.value, unit: f.unit.value, direction: f.direction ? f.direction.value : "" };
     }
 
     function answers() {
       var out = {};
-      data.parts.forEach(function (part) {
-        var f = fields(part);
-        out[part.id] = { value: f.value.value, unit: f.unit.value, direction: f.direction ? f.direction.value : "" };
-      });
+      data.parts.forEach(function (part) { out[part.id] = answerOf(part); });
       return out;
+    }
+
+    function fill(part, a) {
+      var f = fields(part);
+      if (part.kind === "mcq") {
+        Array.prototype.forEach.call(f.choices, function (c) { c.checked = c.value === a.choice; });
+      } else if (part.kind === "explain") {
+        f.text.value = a.text || "";
+        Array.prototype.forEach.call(f.ticks, function (t) { t.checked = (a.ticked || []).indexOf(Number(t.value)) >= 0; });
+      } else {
+        f.value.value = a.value || "";
+        f.unit.value = a.unit || "";
+        if (f.direction) f.direction.value = a.direction || "";
+      }
     }
 
     function check(record) {
@@ -609,7 +668,9 @@
       data.parts.forEach(function (part) {
         var f = fields(part), result = marked.results[part.id], got = marked.marks.byPart[part.id];
         var right = result.code === "correct" || result.code === "ecf";
-        f.feedback.textContent = (right ? "✓ " : "✗ ") + result.message;
+        var selfMarked = result.code === "self-marked";
+        if (f.points && selfMarked) f.points.hidden = false;
+        f.feedback.textContent = (selfMarked ? "" : right ? "✓ " : "✗ ") + result.message;
         if (f.marks) f.marks.textContent = marksText(got[0], got[1]) + (result.code === "ecf" ? " (ecf)" : "");
         f.feedback.className = "q-feedback " + (right ? "q-right" : "q-wrong");
         f.feedback.setAttribute("data-code", result.code);
@@ -629,8 +690,8 @@
     function clear() {
       data.parts.forEach(function (part) {
         var f = fields(part);
-        f.value.value = ""; f.unit.value = "";
-        if (f.direction) f.direction.value = "";
+        fill(part, {});
+        if (f.points) f.points.hidden = true;
         f.feedback.textContent = "";
         f.feedback.className = "q-feedback";
         if (f.marks) f.marks.textContent = "";
@@ -642,13 +703,27 @@
     function restore() {
       var saved = load(storeId());
       if (!saved || !saved.answers) return;
-      data.parts.forEach(function (part) {
-        var f = fields(part), a = saved.answers[part.id] || {};
-        f.value.value = a.value || "";
-        f.unit.value = a.unit || "";
-        if (f.direction) f.direction.value = a.direction || "";
-      });
+      data.parts.forEach(function (part) { fill(part, saved.answers[part.id] || {}); });
       if (saved.checked) check(false);
+    }
+
+    /* A variant's options and marking points change with its numbers. */
+    function relabel() {
+      data.parts.forEach(function (part) {
+        var f = fields(part);
+        if (part.kind === "mcq") {
+          part.options.forEach(function (option, i) {
+            f.choices[i].parentNode.querySelector(".q-option-text").innerHTML = option.html;
+          });
+        } else if (part.kind === "explain") {
+          var lines = data.marks.filter(function (m) { return m.parts.indexOf(part.id) >= 0; });
+          Array.prototype.forEach.call(f.ticks, function (tick, i) {
+            tick.value = String(data.marks.indexOf(lines[i]));
+            tick.parentNode.querySelector(".q-point-text").innerHTML = lines[i].html;
+          });
+          f.points.querySelector(".q-model-text").innerHTML = part.model;
+        }
+      });
     }
 
     function show(index, variant) {
@@ -658,12 +733,16 @@
       if (scheme) scheme.outerHTML = variant.scheme.replace("<ul>", '<ul class="' + scheme.className + '">');
       form.setAttribute("data-variant", String(index));
       save("variant:" + key, { variant: index });
+      relabel();
       clear();
       restore();
     }
 
     form.addEventListener("submit", function (event) { event.preventDefault(); check(true); });
     form.addEventListener("input", function () { save(storeId(), { answers: answers(), checked: !!(load(storeId()) || {}).checked }); });
+    form.addEventListener("change", function (event) { // a ticked marking point re-scores at once
+      if (event.target.classList.contains("q-tick")) check(false);
+    });
     form.addEventListener("reset", function (event) {
       event.preventDefault();
       forget(storeId());

@@ -1,4 +1,3 @@
-# ruff: noqa: RUF001  (question text is typeset: true minus, times, Greek letters)
 """Definitions, units and the difference between mass and weight."""
 
 from __future__ import annotations

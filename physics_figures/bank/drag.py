@@ -1,4 +1,3 @@
-# ruff: noqa: RUF001  (question text is typeset: true minus, times, Greek letters)
 """Drag and terminal velocity: the skydiver, falling through a fluid, resultant force and acceleration."""
 
 from __future__ import annotations

@@ -1,4 +1,3 @@
-# ruff: noqa: RUF001  (question text is typeset: true minus, times, Greek letters)
 """Elastic and inelastic collisions: relative speeds, kinetic energy kept or lost."""
 
 from __future__ import annotations

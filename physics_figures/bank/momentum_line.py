@@ -1,4 +1,3 @@
-# ruff: noqa: RUF001  (question text is typeset: true minus, times, Greek letters)
 """Conservation of momentum in a line: collisions, sticking together, explosions and recoil."""
 
 from __future__ import annotations

@@ -1,4 +1,3 @@
-# ruff: noqa: RUF001  (question text is typeset: true minus, times, Greek letters)
 """Newton's laws, weight and the third law: F = ma, lifts, towing, action-reaction pairs."""
 
 from __future__ import annotations

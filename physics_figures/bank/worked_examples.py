@@ -1,4 +1,3 @@
-# ruff: noqa: RUF001  (question text is typeset: true minus, times, Greek letters)
 """The try-first parts of the worked examples: the printed numbers only (no New numbers),
 and not counted among the bank's templates."""
 

@@ -92,8 +92,8 @@ class Template:
     """A question whose numbers are drawn afresh. ``build(**values)`` gives its Question.
 
     key: the stable id (data-question); type: one of QUESTION_TYPES; kinds: from KINDS.
-    draws: the givens that vary; a template with none has one variant (a try-first part
-    of a worked example keeps the printed numbers). variant_count: how many to make.
+    draws: the givens that vary; variant_count: how many variants to make. A try-first
+    part of a worked example has no draws (one variant, the printed numbers).
     """
 
     key: str
@@ -103,12 +103,18 @@ class Template:
     build: Callable[..., Question] = field(repr=False)
     draws: Mapping[str, Draw] = field(default_factory=dict)
     variant_count: int = MIN_VARIANTS
+    #: A worked example's try-first part: the printed numbers only, not one of the bank's.
+    try_first: bool = False
 
     def __post_init__(self):
         _require(self.type in QUESTION_TYPES, "type", self.type, f"must be one of {QUESTION_TYPES}")
         _require(bool(self.kinds) and set(self.kinds) <= set(KINDS), "kinds", self.kinds,
                  f"must be some of {KINDS}")
-        if self.draws:
+        _require(not (self.try_first and self.draws), "draws", dict(self.draws),
+                 "must be empty for a worked example's try-first part (it keeps the printed numbers)")
+        if not self.try_first:
+            _require(bool(self.draws), "draws", dict(self.draws),
+                     f"must say how {self.key}'s givens vary (only a try-first part has none)")
             least = MIN_VARIANTS if "numeric" in self.kinds or "graph" in self.kinds else MIN_SITUATIONS
             _require(self.variant_count >= least, "variant_count", self.variant_count,
                      f"must be at least {least} for a {'/'.join(self.kinds)} template")

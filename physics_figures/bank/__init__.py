@@ -11,11 +11,21 @@ with the ``question`` directive by its key::
 from __future__ import annotations
 
 from ..variants import QUESTION_TYPES, Template
-from . import force_momentum
+from . import (
+    definitions,
+    drag,
+    elastic,
+    force_momentum,
+    momentum_line,
+    newton,
+    two_d,
+    worked_examples,
+)
 
 #: Every template of the book, by key, in the order of the notes' types.
 TEMPLATES: dict[str, Template] = {}
-for _module in (force_momentum,):
+for _module in (newton, drag, force_momentum, definitions, momentum_line, elastic, two_d,
+                worked_examples):
     for _template in _module.TEMPLATES:
         if _template.key in TEMPLATES:
             raise ValueError(f"template key {_template.key!r} is used twice")
@@ -23,6 +33,7 @@ for _module in (force_momentum,):
 
 
 def by_type(question_type: str) -> list[Template]:
+    """The bank's templates of one type (try-first parts of worked examples are not counted)."""
     if question_type not in QUESTION_TYPES:
         raise ValueError(f"question_type must be one of {QUESTION_TYPES} (got {question_type!r})")
-    return [t for t in TEMPLATES.values() if t.type == question_type]
+    return [t for t in TEMPLATES.values() if t.type == question_type and not t.try_first]

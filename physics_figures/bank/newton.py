@@ -1,0 +1,7 @@
+"""Newton's laws, weight and the third law: F = ma, lifts, towing, action-reaction pairs."""
+
+from __future__ import annotations
+
+from ..variants import Template
+
+TEMPLATES: tuple[Template, ...] = ()

@@ -36,6 +36,7 @@ def test_each_template_has_enough_distinct_variants(template):
     assert len({json.dumps(v, sort_keys=True) for v in template.values}) == len(template.values)
     texts = {q.text for q in template.variants}
     assert len(texts) == len(template.values), "two variants print the same text"
+    assert set(template.kinds) == {getattr(p, "kind", "numeric") for q in template.variants for p in q.parts}
     assert template.type in QUESTION_TYPES and set(template.kinds) <= set(KINDS)
 
 
@@ -47,6 +48,13 @@ def test_every_variant_is_sensible_and_tells_its_mistakes_apart(template, index)
     for given in question.givens:  # printed at the precision the exam gives
         assert given.text in textformat.to_plain(question.text), (given.name, given.text)
     for part in question.parts:
+        if part.kind == "mcq":  # four different options, one the key, each wrong one a named mistake
+            assert sum(not option.mistake for option in part.options) == 1
+            continue
+        if part.kind == "explain":  # self-marked against its own marking points
+            assert any(question.parts_of(mark) == (question.part_ids[question.parts.index(part)],)
+                       for mark in question.mark_scheme if mark.code)
+            continue
         assert math.isfinite(part.value)
         assert part.direction == "signed" or part.value > 0, f"{part.prompt} is {part.value}"
         values = [m.value for m in part.mistakes if m.unit is None and m.direction is None]
@@ -105,6 +113,16 @@ def test_a_template_that_cannot_find_its_variants_says_so():
                       {"force": Draw(5.0, 5.0, 6.0, 1.0)})
     with pytest.raises(ValueError, match=r"found only 2 of 10 variants .* widen its draws"):
         narrow.values  # noqa: B018
+
+
+def test_multiple_choice_options_come_in_increasing_order_from_named_mistakes():
+    from physics_figures.questions import choices_in_order
+
+    options, answer = choices_in_order(11.6, {"a": (21.4, "x"), "b": (31.2, "y"), "c": (11.4, "z")},
+                                       sig_figs=3, unit="N")
+    assert [o.text.split()[0] for o in options] == ["11.4", "11.6", "21.4", "31.2"] and answer == "B"
+    with pytest.raises(ValueError, match=r"must print differently from the key"):
+        choices_in_order(11.6, {"a": (11.62, "x"), "b": (31.2, "y"), "c": (11.4, "z")}, sig_figs=3, unit="N")
 
 
 def test_a_template_names_a_real_type_and_kind():

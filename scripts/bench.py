@@ -20,6 +20,7 @@ import argparse
 import ast
 import asyncio
 import datetime
+import gzip
 import json
 import os
 import platform
@@ -126,22 +127,53 @@ def default_book(folder: Path) -> Path:
 
 
 async def page_bytes(site: Path, pages: list[str]) -> dict[str, dict]:
-    """Bytes (gzip) each page transfers in Chromium, with requests to other hosts blocked."""
+    """Bytes (gzip) each page transfers on a first visit in Chromium: a fresh browser context per
+    page (nothing cached from another page), service workers blocked, other hosts blocked. Also
+    the question data each page carries (inline, and the variant files New numbers may load)."""
     results = {}
     with serve_site(site) as base:
         async with open_browser_async() as browser:
-            context = await browser.new_context(viewport={"width": 390, "height": 844})
-            await context.route(re.compile(r"^(?!http://127\.0\.0\.1:)"), lambda route: route.abort())
-            visitor = PageVisitor(await context.new_page())
             for path in pages:
+                context = await browser.new_context(viewport={"width": 390, "height": 844},
+                                                    service_workers="block")
+                await context.route(re.compile(r"^(?!http://127\.0\.0\.1:)"), lambda route: route.abort())
+                visitor = PageVisitor(await context.new_page())
                 load = await visitor.visit(f"{base}/{path}", scroll=True)
+                inline = await visitor.page.evaluate(
+                    "[...document.querySelectorAll('script.q-data')].map(s => s.textContent).join('')")
+                keys = await visitor.page.evaluate(
+                    "[...document.querySelectorAll('form.q-form[data-question]')].map(f => f.dataset.question)")
+                variants = b"".join((site / "_static" / "questions" / f"{key}.js").read_bytes()
+                                    for key in keys if (site / "_static" / "questions" / f"{key}.js").exists())
                 results[path] = {
                     "bytes": load.total_bytes,
                     "requests": len(load.requests),
                     "foreign": sorted(set(load.foreign)),
+                    "question_data": len(gzip.compress(inline.encode(), mtime=0)) if inline else 0,
+                    "variant_data": len(gzip.compress(variants, mtime=0)) if variants else 0,
                 }
-            await context.close()
+                await context.close()
     return results
+
+
+async def marking_time(site: Path, page: str = "book/exam/quick-check.html", runs: int = 2000) -> float:
+    """Milliseconds Chromium takes to mark one answer (every part of a question, ecf included),
+    averaged over many runs of the page's own marking engine."""
+    with serve_site(site) as base:
+        async with open_browser_async() as browser:
+            context = await browser.new_context()
+            tab = await context.new_page()
+            await tab.goto(f"{base}/{page}", wait_until="load")
+            ms = await tab.evaluate("""(runs) => {
+                const data = JSON.parse(document.querySelector('script.q-data').textContent);
+                const answers = {};
+                data.parts.forEach(p => { answers[p.id] = {value: '1.7', unit: 'N s'}; });
+                const start = performance.now();
+                for (let i = 0; i < runs; i++) QuestionMarking.markQuestion(data, answers);
+                return (performance.now() - start) / runs;
+            }""", runs)
+            await context.close()
+    return ms
 
 
 LIGHTHOUSE_RUNNER = """
@@ -238,6 +270,8 @@ def main() -> None:
         default = asyncio.run(page_bytes(default_site, ["intro.html"]))["intro.html"]
         print(f">>> bytes of {len(pages)} pages", flush=True)
         ours = asyncio.run(page_bytes(site, pages))
+        print(">>> marking time in Chromium", flush=True)
+        marking = asyncio.run(marking_time(site))
         scores = {}
         if not args.no_lighthouse:
             print(f">>> lighthouse on {len(pages)} pages (mobile)", flush=True)
@@ -251,12 +285,13 @@ def main() -> None:
         default=default,
         ours=ours,
         scores=scores,
+        marking=marking,
     )
     Path(args.output).write_text(report)
     print(report)
 
 
-def render(*, timings, executed, edited_page, edited_function, default, ours, scores) -> str:
+def render(*, timings, executed, edited_page, edited_function, default, ours, scores, marking) -> str:
     cold = timings["cold"]
     now = datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC")
     rows = [
@@ -318,7 +353,23 @@ def render(*, timings, executed, edited_page, edited_function, default, ours, sc
     lines += [
         "",
         (f"Heaviest page: {heaviest:,} bytes = {heaviest / default['bytes']:.2f} of the default page "
-         "(goal: at most 0.50)."),
+         "(goal: at most 0.30 until the offline issue lands, then 0.12; each page measured on a first "
+         "visit, in a fresh browser context with service workers blocked)."),
+        "",
+        "## Practice",
+        "",
+        "| page | question data inline (gzip) | with every variant New numbers can load (gzip) |",
+        "|---|---:|---:|",
+    ]
+    for page, data in sorted(ours.items(), key=lambda item: -item[1]["question_data"]):
+        if data["question_data"]:
+            lines.append(f"| {page} | {data['question_data']:,} | "
+                         f"{data['question_data'] + data['variant_data']:,} |")
+    most = max(d["question_data"] + d["variant_data"] for d in ours.values())
+    lines += [
+        "",
+        (f"Largest question data on one page: {most:,} bytes gzip (goal: under 40 KB). Marking one "
+         f"answer (every part, ecf included) in Chromium takes {marking:.3f} ms (goal: at most 5 ms)."),
     ]
     if scores:
         worst = {c: min(s[c] for s in scores.values()) for c in ("performance", "accessibility", "best-practices", "seo")}

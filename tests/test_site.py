@@ -38,10 +38,11 @@ from browser import (
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
-# Half of what a default Jupyter Book 1 page transfers with gzip: 0.96 MB with its CDN
-# MathJax (DESIGN.md), 0.87 MB offline (`make bench` measures it in each run). The
-# stricter (offline) half is the budget for every page, figures and widgets included.
-PAGE_BUDGET_BYTES = 435_000
+# A default Jupyter Book 1 page transfers 856 586 bytes gzip offline, as `make bench`
+# measures it (CLARIFICATIONS: one page-weight budget). Until the offline issue lands, no
+# first visit to a page may exceed 0.30 of it, figures, widgets and question data included.
+DEFAULT_PAGE_BYTES = 856_586
+PAGE_BUDGET_BYTES = int(0.30 * DEFAULT_PAGE_BYTES)
 LIGHTHOUSE_MINIMUM = {"performance": 0.95, "accessibility": 1.0, "best-practices": 1.0, "seo": 1.0}
 NO_TRANSITIONS = "*, *::before, *::after { transition: none !important; animation: none !important; }"
 # The axe-core rules that depend on colours alone.
@@ -133,7 +134,6 @@ async def _sweep_mode(browser, base: str, pages: list[str], viewport: str, schem
         report.console += [f"{mode}: {message}" for message in load.console_errors]
         report.foreign += [f"{mode}: {url}" for url in load.foreign]
         if first:
-            report.total_bytes = load.total_bytes
             report.facts.update(await page.evaluate(PAGE_FACTS))
             report.facts["keyboard"] = await _keyboard(page)
             await visitor.visit(f"{base}/{path}")
@@ -148,6 +148,17 @@ async def _sweep_mode(browser, base: str, pages: list[str], viewport: str, schem
     await context.close()
 
 
+async def _weigh(browser, base: str, pages: list[str], reports) -> None:
+    """Each page's first visit: a fresh context (nothing cached from another page), service
+    workers blocked, as `make bench` weighs it."""
+    for path in pages:
+        context = await browser.new_context(viewport=VIEWPORTS["mobile"], service_workers="block")
+        await context.route(re.compile(r"^(?!http://127\.0\.0\.1:)"), lambda route: route.abort())
+        load = await PageVisitor(await context.new_page()).visit(f"{base}/{path}", scroll=True)
+        reports[path].total_bytes = load.total_bytes
+        await context.close()
+
+
 async def _sweep(site: Path) -> dict[str, PageReport]:
     pages = site_pages(site)
     reports = {path: PageReport(path) for path in pages}
@@ -155,6 +166,7 @@ async def _sweep(site: Path) -> dict[str, PageReport]:
         async with open_browser_async() as browser:
             # The four modes run side by side (two cores: about twice as fast).
             await asyncio.gather(*(_sweep_mode(browser, base, pages, v, s, reports) for v, s in MODES))
+            await _weigh(browser, base, pages, reports)
     return reports
 
 
@@ -286,9 +298,9 @@ def test_figures_legible_in_dark_mode(sweep):
     )
 
 
-def test_light_every_page_within_half_a_default_page(sweep):
+def test_light_every_first_visit_within_0_30_of_a_default_page(sweep):
     _fail_pages(
-        f"light (at most {PAGE_BUDGET_BYTES:,} bytes gzip, half a default Jupyter Book page)",
+        f"light (at most {PAGE_BUDGET_BYTES:,} bytes gzip on a first visit, 0.30 of a default page)",
         {p: f"{r.total_bytes:,} bytes" for p, r in sweep.items() if r.total_bytes > PAGE_BUDGET_BYTES},
     )
 

@@ -290,10 +290,13 @@ class Part:
     @property
     def rounded_part_way(self) -> tuple[tuple[float, str], ...]:
         """(answer, what was rounded) for each way of rounding the working to 2 or 3 s.f.
-        early that the marker would not accept as right and that is no named mistake."""
+        early that the marker would not accept as right and that is no named mistake (nor
+        the g = 9.8 slip, which the marker names first)."""
         if self.answer_from is None:
             return ()
         found: dict[str, tuple[float, str]] = {}
+        # The marker says "g = 9.8" first for that value: it is no rounding to report.
+        g_slip = None if self.g_nine_eight is None else number(self.g_nine_eight, self.check_sig_figs)
         indices = range(len(self.working))
         for sig_figs in PART_WAY_SIG_FIGS:
             for size in range(1, len(self.working) + 1):
@@ -302,7 +305,7 @@ class Part:
                               for i, step in enumerate(self.working)]
                     answer = self._size(self.answer_from(*values))
                     key = number(answer, self.check_sig_figs)
-                    if self._accepted(answer) or self._named(answer) or key in found:
+                    if self._accepted(answer) or self._named(answer) or key in found or key == g_slip:
                         continue
                     what = " and ".join(
                         f"the {self.working[i].name} to {number(values[i], sig_figs)}"

@@ -229,6 +229,16 @@ def test_feedback_names_the_variants_own_numbers(question):
                 assert not re.search(rf"(?<![\d.]){re.escape(number)}(?![\d.])", text), (question.key, number, text)
 
 
+@pytest.mark.parametrize("key", ["quick-check-4", "practice-trolleys-stick"])
+def test_a_question_that_names_its_objects_by_mass_gives_them_different_masses(key):
+    """"The 2.0 kg trolley" must say which trolley: the generator never draws equal masses,
+    and a build with them is refused (ValueError naming both)."""
+    template = bank.TEMPLATES[key]
+    assert all(values["m1"] != values["m2"] for values in template.values)
+    with pytest.raises(ValueError, match=r"m2 must .* \(got m1=2\.0, m2=2\.0"):
+        template.build(m1=2.0, m2=2.0)
+
+
 def test_the_key_prints_the_notes_values_in_the_mark_scheme():
     (_, lost) = printed("practice-trolleys-stick").parts
     assert shown(lost) == "6.75"

@@ -22,7 +22,8 @@ import pytest
 import yaml
 
 from physics_figures import answers
-from physics_figures.questions import all_questions, unit_text
+from physics_figures.bank import all_questions
+from physics_figures.questions import unit_text
 
 pytestmark = [pytest.mark.site]
 

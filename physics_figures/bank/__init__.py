@@ -10,6 +10,7 @@ with the ``question`` directive by its key::
 
 from __future__ import annotations
 
+from ..questions import Question
 from ..variants import QUESTION_TYPES, Template
 from . import (
     definitions,
@@ -37,3 +38,15 @@ def by_type(question_type: str) -> list[Template]:
     if question_type not in QUESTION_TYPES:
         raise ValueError(f"question_type must be one of {QUESTION_TYPES} (got {question_type!r})")
     return [t for t in TEMPLATES.values() if t.type == question_type and not t.try_first]
+
+
+#: The quick check's templates (book/exam/quick-check.md asks them first, in this order).
+QUICK_CHECK = tuple(f"quick-check-{number}" for number in range(1, 6))
+
+
+def all_questions() -> tuple[Question, ...]:
+    """Every question of the quick check and the practice pages, with the printed numbers
+    (variant 0), in book order: the quick check's five, then the practice pages, one a type
+    in the notes' order (tests/test_questions.py checks the pages place them so)."""
+    practice = [t for t in TEMPLATES.values() if not t.try_first and t.key not in QUICK_CHECK]
+    return tuple(t.variant(0) for t in [TEMPLATES[key] for key in QUICK_CHECK] + practice)

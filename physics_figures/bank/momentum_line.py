@@ -1,7 +1,138 @@
+# ruff: noqa: RUF001  (question text is typeset: true minus, times, Greek letters)
 """Conservation of momentum in a line: collisions, sticking together, explosions and recoil."""
 
 from __future__ import annotations
 
-from ..variants import Template
+import math
 
-TEMPLATES: tuple[Template, ...] = ()
+import sympy
+
+from ..models import (
+    explosion_from_rest,
+    kinetic_energy,
+    momentum,
+    stick_together,
+    total_kinetic_energy,
+)
+from ..notation import format_number as n
+from ..questions import Ecf, Given, Mark, Mistake, Part, Question, Step
+from ..variants import Draw, Template
+from ._common import M_S, PER_S, w
+
+a_answer, m1_symbol, u1_symbol, m2_symbol, speed2_symbol = sympy.symbols("a m1 u1 m2 speed2")
+
+
+def rifle_recoil(rifle: float = 4.0, bullet: float = 0.010, bullet_speed: float = 400.0) -> Question:
+    """Notes, Quick check 2: rifle 4.0 kg, bullet 0.010 kg at 400 m s^-1 -> recoil 1.0 m s^-1 backwards."""
+    v = explosion_from_rest(bullet, rifle, bullet_speed)  # signed: the bullet's way is positive
+    bullet_momentum = momentum(bullet, bullet_speed)
+    r, b, s = n(rifle, 2), n(bullet, 2), n(bullet_speed, 3)
+    return Question(
+        key="quick-check-2",
+        text=(f"A {r} kg rifle, initially at rest, fires a {b} kg bullet at {s} {PER_S}. "
+              "Calculate the recoil speed of the rifle."),
+        givens=(Given("rifle mass", rifle, "kg", 2), Given("bullet mass", bullet, "kg", 2),
+                Given("bullet speed", bullet_speed, "m s^-1", 3)),
+        parts=(
+            Part("recoil speed of the rifle", abs(v), "m s^-1", "speed", units=M_S, shown_sig_figs=2,
+                 sign_means="it moves backwards, opposite to the bullet",
+                 revisit="The total momentum is zero before firing, so it is zero after: "
+                         "0 = m₁v₁ + m₂v₂.",
+                 mistakes=(
+                     Mistake("mass ratio upside down", rifle * bullet_speed / bullet,
+                             "The masses are the wrong way up. The rifle's momentum equals the "
+                             f"bullet's: {r} v = {b} × {s}, so v = {b} × {s} / {r}."),
+                     Mistake("bullet's momentum given as speed", bullet_momentum,
+                             f"{b} × {s} = {w(bullet_momentum)} is the bullet's momentum (in N s). Divide "
+                             "it by the rifle's mass to get the rifle's speed."),
+                     Mistake("mass in grams", bullet * 1000 * bullet_speed / rifle,
+                             f"You used the bullet's mass in g. Convert to kg: {b} kg."),
+                     Mistake("kinetic energy conserved", bullet_speed * math.sqrt(bullet / rifle),
+                             "You set the kinetic energies equal. In an explosion kinetic energy "
+                             "increases (from the chemical energy of the charge); only momentum is "
+                             "conserved."),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"Total momentum is zero before, so 0 = {b} × {s} + {r}v", "C1"),
+            Mark(f"v = {n(v, 2)} {PER_S}: the recoil speed is {n(abs(v), 2)} {PER_S}, backwards", "A1"),
+        ),
+    )
+
+
+def trolleys_stick(m1: float = 2.0, u1: float = 3.0, m2: float = 1.0, speed2: float = 1.5) -> Question:
+    """Head-on, stick together, with signs; then the kinetic energy transferred."""
+    u2 = -speed2  # the second trolley moves towards the first: against the positive direction
+    if m1 == m2:  # the text names each trolley by its mass
+        raise ValueError(f"m2 must differ from m1, or the question cannot say which trolley is which "
+                         f"(got m1={m1!r}, m2={m2!r})")
+    if m1 * u1 <= m2 * speed2:
+        raise ValueError(f"speed2 must leave the pair moving on in the {n(m1, 2)} kg trolley's direction "
+                         f"(m1 u1 > m2 speed2; got m1={m1!r}, u1={u1!r}, m2={m2!r}, speed2={speed2!r})")
+    v = stick_together(m1, u1, m2, u2)
+    before = total_kinetic_energy((m1, m2), (u1, u2))
+    after = kinetic_energy(m1 + m2, v)
+    lost = before - after
+    no_sign = stick_together(m1, u1, m2, -u2)
+    first, second, total = n(m1, 2), n(m2, 2), w(m1 + m2)
+    positive = f"the direction the {first} kg trolley moves at first"
+    ke_before = m1_symbol * u1_symbol**2 / 2 + m2_symbol * speed2_symbol**2 / 2
+    return Question(
+        key="practice-trolleys-stick",
+        text=(f"A {first} kg trolley moving at {n(u1, 2)} {PER_S} collides head-on with a {second} kg "
+              f"trolley moving towards it at {n(speed2, 2)} {PER_S}. They stick together.\n\n"
+              f"(a) Taking the direction of the {first} kg trolley as positive, calculate their velocity "
+              "after the collision.\n\n"
+              "(b) Calculate the kinetic energy transferred to other forms."),
+        givens=(Given("m1", m1, "kg", 2), Given("u1", u1, "m s^-1", 2), Given("m2", m2, "kg", 2),
+                Given("speed 2", speed2, "m s^-1", 2)),
+        parts=(
+            Part("velocity after the collision", v, "m s^-1", "velocity", units=M_S, shown_sig_figs=2,
+                 direction="signed", positive=positive,
+                 revisit="Momentum before = momentum after, with a minus sign for the trolley "
+                         "moving the other way: m₁u₁ + m₂u₂ = (m₁ + m₂)v.",
+                 mistakes=(
+                     Mistake("sign of the second trolley left out", no_sign,
+                             f"The {second} kg trolley moves the other way, so its momentum is negative: "
+                             f"{first} × {n(u1, 2)} + {second} × (−{n(speed2, 2)})."),
+                     Mistake("second trolley ignored", momentum(m1, u1) / (m1 + m2),
+                             f"You left out the {second} kg trolley's momentum. It is moving, the other way."),
+                 )),
+            Part("kinetic energy transferred to other forms", lost, "J", "energy", shown_sig_figs=3,
+                 working=(Step("common velocity", v, "m s^-1", 2),),
+                 answer_from=lambda common: before - kinetic_energy(m1 + m2, common),
+                 ecf=Ecf(ke_before - (m1_symbol + m2_symbol) * a_answer**2 / 2,
+                         {"m1": m1, "u1": u1, "m2": m2, "speed2": speed2}),
+                 revisit="Work out the total kinetic energy before and after separately; the "
+                         "difference is the energy transferred.",
+                 mistakes=(
+                     Mistake("kinetic energy conserved", 0.0,
+                             "Kinetic energy is conserved only in an elastic collision. Trolleys "
+                             "that stick together always lose some."),
+                     Mistake("kinetic energy after only", after,
+                             "That is the kinetic energy after. Subtract it from the kinetic energy "
+                             "before."),
+                     Mistake("wrong velocity carried on", before - kinetic_energy(m1 + m2, no_sign),
+                             f"Your velocity after is wrong: the {second} kg trolley's momentum is negative."),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"{first} × {n(u1, 2)} + {second} × ({n(u2, 2)}) = {total}v", "C1", "a"),
+            Mark(f"v = {n(v, 2)} {PER_S} in the {first} kg trolley's direction", "A1", "a"),
+            Mark(f"E<sub>k</sub> before = ½ × {first} × {n(u1, 2)}<sup>2</sup> + ½ × {second} × "
+                 f"{n(speed2, 2)}<sup>2</sup> = {w(before)} J; after = ½ × {total} × {w(v)}<sup>2</sup> "
+                 f"= {w(after)} J", "C1", "b"),
+            Mark(f"Transferred = {w(before)} − {w(after)} = {n(lost, 3)} J", "A1", "b"),
+        ),
+    )
+
+
+TEMPLATES = (
+    Template("quick-check-2", "momentum-line", ("numeric",), "Quick check 2", rifle_recoil,
+             {"rifle": Draw(4.0, 3.0, 6.0, 0.5), "bullet": Draw(0.010, 0.008, 0.020, 0.001),
+              "bullet_speed": Draw(400.0, 300.0, 900.0, 50.0)}),
+    Template("practice-trolleys-stick", "momentum-line", ("numeric",), "Trolleys that stick together",
+             trolleys_stick,
+             {"m1": Draw(2.0, 1.0, 4.0, 0.5), "u1": Draw(3.0, 1.0, 5.0, 0.5),
+              "m2": Draw(1.0, 0.5, 3.0, 0.5), "speed2": Draw(1.5, 0.5, 4.0, 0.5)}),
+)

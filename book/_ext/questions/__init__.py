@@ -1,18 +1,16 @@
 """Questions that mark like an examiner (a local Sphinx extension).
 
-An author writes the question in the page and names the data that physics_figures
-computes for it::
+A page places a template of the question bank (physics_figures.bank) by its key; the
+template writes its own text, with the printed numbers (variant 0)::
 
-    ```{question} Quick check 1
-    :answer: physics_figures.questions:quick_check_1
-
-    A resultant force of 5.0 N acts on a 2.0 kg trolley ...
+    ```{question} quick-check-1
     ```
 
 In HTML the question gets answer boxes marked in the browser by static/questions.js
-(loaded only on pages that ask a question) and a worked answer with its mark scheme,
-shown after a first attempt. Without JavaScript, in print and in LaTeX it is the
-question with an answer line; every answer and mark scheme goes to the answer key::
+(loaded only on pages that ask a question), New numbers (the other variants, in
+_static/questions/<key>.js) and a worked answer with its mark scheme, shown after a first
+attempt. Without JavaScript, in print and in LaTeX it is the question with an answer
+line; every answer and mark scheme goes to the answer key::
 
     ```{answer-key}
     ```
@@ -22,15 +20,11 @@ which lists every question of the book (in table-of-contents order).
 
 from __future__ import annotations
 
-import importlib
 import json
-import re
 from html import escape
 from pathlib import Path
-from typing import ClassVar
 
 from docutils import nodes
-from docutils.parsers.rst import directives
 from notation import add_notation_script  # book/_ext/notation: the browser's number writer
 from sphinx.util import logging
 from sphinx.util.docutils import SphinxDirective
@@ -56,22 +50,6 @@ class answer_key(nodes.General, nodes.Element):
     """Filled, once every page is read, with each question's answers and mark scheme."""
 
 
-def load_question(reference: str):
-    """Import "package.module:name" and return (Question, the package's source files)."""
-    module_name, _, attribute = reference.partition(":")
-    if not module_name or not attribute:
-        raise ValueError(f'answer must look like "package.module:name" (got answer={reference!r})')
-    module = importlib.import_module(module_name)
-    made = getattr(module, attribute)
-    data = made() if callable(made) else made
-    for needed in ("key", "givens", "parts", "mark_scheme", "browser_data"):
-        if not hasattr(data, needed):
-            raise ValueError(f"answer must name a Question (got {reference!r}, which has no {needed!r})")
-    package = importlib.import_module(module_name.split(".")[0])
-    sources = sorted(Path(package.__file__).parent.rglob("*.py"))
-    return data, sources
-
-
 def _questions(env) -> dict[str, list[dict]]:
     if not hasattr(env, "exam_questions"):
         env.exam_questions = {}
@@ -85,41 +63,27 @@ def _answer_key_docs(env) -> set[str]:
 
 
 class QuestionDirective(SphinxDirective):
-    """The question's text is the content; its answers come from ``:answer:``."""
+    """A template of the bank, named by its key; its text comes with its numbers."""
 
     optional_arguments = 1
     final_argument_whitespace = True
     has_content = True
-    option_spec: ClassVar = {"answer": directives.unchanged_required}
 
     def run(self):
-        template = None
-        if "answer" in self.options:  # a fixed question whose text is the page's
-            try:
-                data, sources = load_question(self.options["answer"])
-            except (ImportError, AttributeError, ValueError) as error:
-                raise self.error(f"question: cannot load its answer ({error})") from error
-            self._check_givens(data)
-            title = self.arguments[0] if self.arguments else data.key
-        else:  # a template of the bank, named by its key; its text comes with its numbers
-            template, sources = self._template()
-            data, title = template.variant(0), template.title
-            if self.content:
-                raise self.error(f"question {template.key}: a template writes its own text; "
-                                 "leave the directive empty")
+        template, sources = self._template()
+        data, title = template.variant(0), template.title
+        if self.content:
+            raise self.error(f"question {template.key}: a template writes its own text; "
+                             "leave the directive empty")
         for source in sources:  # an edit to physics_figures re-reads this page
             self.env.note_dependency(str(source))
-        if template is not None:
-            _templates_used(self.env).setdefault(self.env.docname, []).append(template.key)
+        _templates_used(self.env).setdefault(self.env.docname, []).append(template.key)
 
         node = question(qid=data.key, data=data.browser_data(), ids=[f"question-{data.key}"],
                         template=_template_data(template))
         self.set_source_info(node)
         node += nodes.paragraph("", "", nodes.strong(text=title), classes=["q-title"])
-        if template is None:
-            node += self.parse_content_to_nodes()
-        else:
-            node += nodes.container("", *text_nodes(data.text), classes=["q-text"])
+        node += nodes.container("", *text_nodes(data.text), classes=["q-text"])
         lines = nodes.container(classes=["q-answer-lines"])
         for index, part in enumerate(data.parts):
             lines += answer_lines(data.label(index), part)
@@ -128,10 +92,7 @@ class QuestionDirective(SphinxDirective):
                               legends=[data.label(i) + p.prompt[:1].upper() + p.prompt[1:]
                                        for i, p in enumerate(data.parts)])
         worked = worked_answer()
-        if template is None:
-            worked += self.parse_text_to_nodes(data.mark_scheme_markdown())
-        else:
-            worked += mark_scheme_nodes(data)
+        worked += mark_scheme_nodes(data)
         node += worked
 
         self._record(data, title, worked)
@@ -139,7 +100,7 @@ class QuestionDirective(SphinxDirective):
 
     def _template(self):
         if not self.arguments:
-            raise self.error("question: name a template of physics_figures.bank (or give :answer:)")
+            raise self.error("question: name a template of physics_figures.bank")
         from physics_figures import bank  # imported here: the bank is slow to build
 
         key = self.arguments[0]
@@ -147,15 +108,6 @@ class QuestionDirective(SphinxDirective):
             raise self.error(f"question: no template {key!r} in physics_figures.bank")
         package = Path(bank.__file__).parents[1]
         return bank.TEMPLATES[key], sorted(package.rglob("*.py"))
-
-    def _check_givens(self, data) -> None:
-        """Every number the data uses must be the one the page's text states."""
-        text = "\n".join(self.content)
-        for given in data.givens:
-            if not re.search(rf"(?<![\d.]){re.escape(given.text)}(?!\d)", text):
-                logger.warning(f"question {data.key}: the text does not state {given.name} = "
-                               f"{given.text} {given.unit}, which its answer uses",
-                               location=self.get_location())
 
     def _record(self, data, title: str, worked: worked_answer) -> None:
         for docname, asked in _questions(self.env).items():
@@ -187,9 +139,7 @@ def answer_lines(label: str, part) -> list[nodes.Node]:
     return [nodes.paragraph(text=line)]
 
 
-def _template_data(template) -> dict | None:
-    if template is None:
-        return None
+def _template_data(template) -> dict:
     return {"key": template.key, "type": template.type, "kinds": list(template.kinds),
             "variants": len(template.values)}
 

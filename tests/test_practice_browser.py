@@ -107,3 +107,74 @@ def test_new_numbers_show_every_variant_once_before_any_repeats(page):
     page.wait_for_function(f"document.querySelector('form[data-question=\"{KEY}\"]')"
                            f".getAttribute('data-variant') === '{seen[-1]}'")
     assert _form(page).locator(".q-score").inner_text() == "4/4 marks"
+
+
+def _page_with(site_dir, key: str) -> str:
+    """The built page that places template `key` (wherever the practice pages put it)."""
+    for html in sorted(site_dir.rglob("*.html")):
+        if f'data-question="{key}"' in html.read_text(encoding="utf-8"):
+            return "/" + html.relative_to(site_dir).as_posix()
+    raise AssertionError(f"no page places the template {key}")
+
+
+@pytest.fixture
+def open_page(page_url, site_dir):
+    browser, url = page_url
+    base = url[: -len(PAGE)]
+    opened = []
+
+    def open_(key):
+        context = browser.new_context()
+        page = context.new_page()
+        page.goto(base + _page_with(site_dir, key), wait_until="load")
+        opened.append(context)
+        return page
+
+    yield open_
+    for context in opened:
+        context.close()
+
+
+def test_a_multiple_choice_part_names_the_mistake_behind_a_wrong_option(open_page):
+    key = "parachute-opens-choice"
+    page = open_page(key)
+    form = page.locator(f'form.q-form[data-question="{key}"]')
+    assert form.get_attribute("data-kind") == "mcq"
+    part = bank.TEMPLATES[key].variant(0).parts[0]
+    wrong = next(letter for letter, o in zip("ABCD", part.options, strict=True) if o.mistake)
+    form.locator(f'input[type="radio"][value="{wrong}"]').check()
+    form.locator("button.q-check").click()
+    feedback = form.locator(".q-feedback")
+    assert feedback.get_attribute("data-code") == "mistake"
+    mistake = part.options["ABCD".index(wrong)]
+    assert mistake.feedback in feedback.inner_text()
+    assert form.locator(".q-score").inner_text() == "0/1 mark"
+    form.locator(f'input[type="radio"][value="{part.answer}"]').check()
+    form.locator("button.q-check").click()
+    assert form.locator(".q-score").inner_text() == "1/1 mark"
+    # New numbers change the options with the givens: the key's letter follows the variant
+    form.locator("button.q-new").click()
+    page.wait_for_function(f"document.querySelector('form[data-question=\"{key}\"]')"
+                           ".getAttribute('data-variant') !== '0'")
+    variant = bank.TEMPLATES[key].variant(int(form.get_attribute("data-variant"))).parts[0]
+    texts = form.locator(".q-option-text").all_inner_texts()
+    assert texts[0].split()[0] == variant.options[0].text.split()[0]
+
+
+def test_an_explanation_is_self_marked_against_its_marking_points(open_page):
+    key = "terminal-velocity-explained"
+    page = open_page(key)
+    form = page.locator(f'form.q-form[data-question="{key}"]')
+    assert form.get_attribute("data-kind") == "explain"
+    form.locator("button.q-check").click()
+    assert form.locator(".q-feedback").get_attribute("data-code") == "no-answer"
+    form.locator("textarea.q-explain").fill("Drag grows with speed until it equals the weight.")
+    form.locator("button.q-check").click()
+    ticks = form.locator("input.q-tick")
+    assert ticks.count() == 3 and form.locator(".q-points").is_visible()
+    ticks.nth(0).check()  # B1
+    assert form.locator(".q-score").inner_text() == "1/3 marks"
+    ticks.nth(2).check()  # the A1 without its M1 earns nothing
+    assert form.locator(".q-score").inner_text() == "1/3 marks"
+    ticks.nth(1).check()  # with the M1 it does
+    assert form.locator(".q-score").inner_text() == "3/3 marks"

@@ -119,7 +119,7 @@ def test_progress_follows_answers_survives_reload_export_clear_and_import(contex
 
     def shows_the_attempt():
         summary = section.locator(".pp-summary").inner_text()
-        assert summary.startswith(f"Tried 1 of the {len(kind['templates'])} question")
+        assert summary.startswith(f"Tried 1 of {len(kind['templates'])} question")
         assert f"Marks: {score}" in summary
         assert section.locator(".pp-mistakes").is_visible()
         assert f"{mistake.name} (once)" in section.locator(".pp-mistakes").inner_text()

@@ -197,7 +197,7 @@
         var s = summarise(kind, attempts);
         var bank = count(s.inBank) + " question" + (s.inBank === 1 ? "" : "s") + " in the bank";
         section.querySelector(".pp-summary").textContent = s.tried ?
-          "Tried " + count(s.tried) + " of the " + bank + ". Marks: " + marksText(s.earned, s.available) +
+          "Tried " + count(s.tried) + " of " + bank + ". Marks: " + marksText(s.earned, s.available) +
             " (your best attempt at each question tried)." :
           bank.charAt(0).toUpperCase() + bank.slice(1) + "; none tried yet.";
         var mistakes = section.querySelector(".pp-mistakes");

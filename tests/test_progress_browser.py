@@ -232,3 +232,16 @@ def test_the_page_passes_axe_with_progress_shown(site, scheme):
     assert page.locator(".pp-undo").is_visible()
     assert axe_violations(page) == []
     context.close()
+
+
+def test_the_file_controls_work_from_the_keyboard_with_visible_focus(context):
+    page = _open(context, PROGRESS)
+    page.get_by_role("button", name="Export progress").focus()
+    page.keyboard.press("Tab")
+    assert page.evaluate("document.activeElement.id") == "pp-import"
+    ring = page.evaluate("getComputedStyle(document.querySelector('.pp-import-label')).outlineStyle")
+    assert ring != "none"  # the hidden input's label shows where focus is
+    page.keyboard.press("Tab")
+    # nothing kept yet: Clear is disabled, so Tab goes on past it
+    assert page.get_by_role("button", name="Clear progress").is_disabled()
+    assert page.evaluate("document.activeElement.textContent") != "Clear progress"

@@ -15,7 +15,13 @@ line; every answer and mark scheme goes to the answer key::
     ```{answer-key}
     ```
 
-which lists every question of the book (in table-of-contents order).
+which lists every question of the book (in table-of-contents order). The "Your practice"
+page shows what a student has done with the bank's templates, by question type::
+
+    ```{practice-progress}
+    ```
+
+(static/progress.js reads the attempts questions.js keeps in the browser).
 """
 
 from __future__ import annotations
@@ -50,6 +56,11 @@ class answer_key(nodes.General, nodes.Element):
     """Filled, once every page is read, with each question's answers and mark scheme."""
 
 
+class practice_progress(nodes.General, nodes.Element):
+    """The student's progress by question type: filled, once every page is read, with the
+    bank's templates and the page that places each (HTML); a note elsewhere."""
+
+
 def _questions(env) -> dict[str, list[dict]]:
     if not hasattr(env, "exam_questions"):
         env.exam_questions = {}
@@ -60,6 +71,12 @@ def _answer_key_docs(env) -> set[str]:
     if not hasattr(env, "exam_answer_keys"):
         env.exam_answer_keys = set()
     return env.exam_answer_keys
+
+
+def _progress_docs(env) -> set[str]:
+    if not hasattr(env, "practice_progress_docs"):
+        env.practice_progress_docs = set()
+    return env.practice_progress_docs
 
 
 class QuestionDirective(SphinxDirective):
@@ -189,6 +206,50 @@ class AnswerKeyDirective(SphinxDirective):
         return [answer_key()]
 
 
+class PracticeProgressDirective(SphinxDirective):
+    """Where the student's progress goes (the page's own text says what it is for)."""
+
+    def run(self):
+        _progress_docs(self.env).add(self.env.docname)
+        return [practice_progress()]
+
+
+#: The notes' seven question types ("How to do it"), by data-type: name and method page.
+TYPE_NAMES = {
+    "newton": ("Newton's laws, F = ma and third-law pairs", "book/exam/method-newtons-laws"),
+    "drag": ("Drag, air resistance and terminal velocity", "book/exam/method-drag"),
+    "force-momentum": ("Force as rate of change of momentum", "book/exam/method-force-momentum"),
+    "definitions": ("Mass, weight and the definitions", "book/exam/method-definitions"),
+    "momentum-line": ("Conservation of momentum in a straight line", "book/exam/method-momentum-line"),
+    "elastic": ("Elastic and inelastic collisions", "book/exam/method-collisions"),
+    "two-d": ("Conservation of momentum in two dimensions", "book/exam/method-two-dimensions"),
+}
+
+
+def _progress_data(app, fromdoc: str) -> dict:
+    """Every template of the bank by type, with its title, marks and the page placing it
+    (None if no page does yet): what progress.js needs; it computes no physics."""
+    from physics_figures import bank
+    from physics_figures.variants import QUESTION_TYPES
+
+    if set(TYPE_NAMES) != set(QUESTION_TYPES):
+        raise ValueError(f"TYPE_NAMES must name exactly the types {QUESTION_TYPES}")
+    env, placed = app.env, {}
+    for docname in _book_order(env, app.config.root_doc):
+        for key in _templates_used(env).get(docname, []):
+            placed.setdefault(key, docname)
+    types = []
+    for kind in QUESTION_TYPES:
+        name, method = TYPE_NAMES[kind]
+        templates = [{
+            "key": t.key, "title": t.title, "marks": t.variant(0).marks,
+            "page": app.builder.get_relative_uri(fromdoc, placed[t.key]) if t.key in placed else None,
+        } for t in bank.by_type(kind)]
+        types.append({"type": kind, "name": name, "templates": templates,
+                      "method": app.builder.get_relative_uri(fromdoc, method) if method in env.all_docs else None})
+    return {"types": types}
+
+
 # ------------------------------------------------------------------------ events
 
 
@@ -196,6 +257,7 @@ def purge(app, env, docname):
     _questions(env).pop(docname, None)
     _templates_used(env).pop(docname, None)
     _answer_key_docs(env).discard(docname)
+    _progress_docs(env).discard(docname)
 
 
 def merge(app, env, docnames, other):
@@ -206,11 +268,13 @@ def merge(app, env, docnames, other):
             _answer_key_docs(env).add(docname)
         if docname in _templates_used(other):
             _templates_used(env)[docname] = _templates_used(other)[docname]
+        if docname in _progress_docs(other):
+            _progress_docs(env).add(docname)
 
 
 def refresh_answer_keys(app, env, added, changed, removed):
-    """A page's questions changed: re-read the pages that hold an answer key."""
-    return sorted(_answer_key_docs(env)) if added | changed | removed else []
+    """A page's questions changed: re-read the pages that hold an answer key or the progress."""
+    return sorted(_answer_key_docs(env) | _progress_docs(env)) if added | changed | removed else []
 
 
 def answer_key_has_maths(app, doctree):
@@ -260,6 +324,11 @@ def _answer_key_content(app, fromdoc: str) -> list[nodes.Node]:
 def resolve(app, doctree, docname):
     """Fill each answer key; outside HTML, questions become plain text with answer lines."""
     html = app.builder.format == "html"
+    for progress in list(doctree.findall(practice_progress)):
+        if html:
+            progress["data"] = _progress_data(app, docname)
+        else:  # print: the page's text says what it is for; this says where it works
+            progress.replace_self(nodes.paragraph(text=NEEDS_BROWSER))
     for key in list(doctree.findall(answer_key)):
         key.extend(_answer_key_content(app, docname))
         if not html:
@@ -282,6 +351,10 @@ def add_assets(app, pagename, templatename, context, doctree):
         app.add_css_file("questions.css")
         add_notation_script(app)  # questions.js writes numbers with it
         app.add_js_file("questions.js", loading_method="defer")
+    if pagename in _progress_docs(app.env):
+        app.add_css_file("progress.css")
+        add_notation_script(app)
+        app.add_js_file("progress.js", loading_method="defer")
 
 
 VARIANTS_DIR = "questions"  # under the site's _static/: one file of variants per template
@@ -425,13 +498,77 @@ def depart_answer_key(self, node):
     self.body.append("</details>\n")
 
 
+NEEDS_BROWSER = ("Your practice is kept in the web browser you practise in: open this page in the "
+                 "web version of the book, with JavaScript on, to see it.")
+
+
+def _count(number: int, one: str, many: str) -> str:
+    from physics_figures.notation import format_number
+
+    return f"{format_number(number, decimals=0)} {one if number == 1 else many}"
+
+
+def visit_practice_progress(self, node):
+    """Without JavaScript (and in print) the page still lists each type's questions and
+    links to them; progress.js adds what this browser has kept."""
+    data = node["data"]
+    payload = json.dumps(data, ensure_ascii=False).replace("</", "<\\/")
+    html = ['<div class="pp">', f'<script type="application/json" class="pp-data">{payload}</script>',
+            f'<p class="pp-needs-js">{escape(NEEDS_BROWSER)}</p>']
+    for kind in data["types"]:
+        ident, name = f"pp-type-{kind['type']}", escape(kind["name"])
+        placed = [t for t in kind["templates"] if t["page"]]
+        html.append(f'<section class="pp-type" data-type="{kind["type"]}" aria-labelledby="{ident}">'
+                    f'<h2 id="{ident}">{name}</h2>')
+        if kind["templates"]:
+            summary = _count(len(kind["templates"]), "question", "questions") + " in the bank."
+        else:
+            summary = "Not in the bank yet: no question of this type to practise here so far."
+        html.append(f'<p class="pp-summary">{summary}</p><p class="pp-mistakes" hidden></p>')
+        if kind["templates"]:
+            html.append('<ul class="pp-templates">')
+            for t in kind["templates"]:
+                title = escape(t["title"])
+                link = f'<a href="{escape(t["page"])}#question-{escape(t["key"])}">{title}</a>' if t["page"] else title
+                html.append(f'<li data-key="{escape(t["key"])}">{link} '
+                            f'<span class="pp-marks">({_count(t["marks"], "mark", "marks")})</span></li>')
+            html.append("</ul>")
+        actions = []
+        if placed:
+            first = placed[0]
+            actions.append(f'<a class="pp-practise" href="{escape(first["page"])}#question-{escape(first["key"])}">'
+                           f'Practise this type<span class="pp-hidden-text">: {name}</span></a>')
+        if kind["method"]:
+            actions.append(f'<a class="pp-method" href="{escape(kind["method"])}">The method for this type'
+                           f'<span class="pp-hidden-text">: {name}</span></a>')
+        if actions:
+            html.append(f'<p class="pp-actions">{" ".join(actions)}</p>')
+        html.append("</section>")
+    html.append(
+        '<section class="pp-file" aria-labelledby="pp-file-heading" hidden>'
+        '<h2 id="pp-file-heading">Move or clear your progress</h2>'
+        "<p>Export saves your progress to a file. Import it in the browser of another device (or "
+        "this one) to add it to what is kept there: nothing already kept is lost.</p>"
+        '<div class="pp-buttons">'
+        '<button type="button" class="pp-export">Export progress</button>'
+        '<label class="pp-import-label" for="pp-import">Import progress from a file'
+        '<input type="file" id="pp-import" class="pp-import" accept=".json,application/json"></label>'
+        '<button type="button" class="pp-clear">Clear progress</button>'
+        '<button type="button" class="pp-undo" hidden>Undo clear</button></div>'
+        '<p class="pp-status" role="status" aria-live="polite"></p></section></div>\n')
+    self.body.append("".join(html))
+    raise nodes.SkipNode
+
+
 def setup(app):
     app.add_node(question, html=(visit_question, depart_question))
     app.add_node(question_form, html=(visit_question_form, None))
     app.add_node(worked_answer, html=(visit_worked_answer, depart_worked_answer))
     app.add_node(answer_key, html=(visit_answer_key, depart_answer_key))
+    app.add_node(practice_progress, html=(visit_practice_progress, None))
     app.add_directive("question", QuestionDirective)
     app.add_directive("answer-key", AnswerKeyDirective)
+    app.add_directive("practice-progress", PracticeProgressDirective)
     app.connect("config-inited", add_static_path)
     app.connect("env-purge-doc", purge)
     app.connect("env-merge-info", merge)

@@ -566,6 +566,8 @@
   function recordAttempt(attempt) {
     try {
       var progress = JSON.parse(localStorage.getItem(PROGRESS)) || { version: 1, attempts: [] };
+      // Another format under this key (a later build's): leave it whole, never append to it.
+      if (progress.version !== 1 || !Array.isArray(progress.attempts)) return;
       progress.attempts.push(attempt);
       localStorage.setItem(PROGRESS, JSON.stringify(progress));
     } catch (e) { /* private mode: progress is not kept */ }
@@ -763,15 +765,31 @@
     var text = section.querySelector(".q-text");
     if (text) text.setAttribute("tabindex", "-1"); // New numbers moves focus to the new text
 
+    // "Practise this type" (progress.js) links to page.html?new=KEY#question-KEY: this
+    // question, with new numbers at once and focus in it. The request is used up, so a
+    // reload keeps the numbers on screen.
+    var fresh = !!key && new URLSearchParams(location.search).get("new") === key;
+    function arrive() {
+      if (!fresh) return;
+      var params = new URLSearchParams(location.search);
+      params.delete("new");
+      var query = params.toString();
+      history.replaceState(history.state, "", location.pathname + (query ? "?" + query : "") + location.hash);
+      if (newButton) newButton.click();
+      else if (text) text.focus();
+    }
+
     // A student who had new numbers comes back to the same numbers.
     var last = key && load("variant:" + key);
     if (last && last.variant) {
       loadVariants(key, function (variants) {
         if (variants && variants[last.variant]) show(last.variant, variants[last.variant]);
         else restore();
+        arrive();
       });
     } else {
       restore();
+      arrive();
     }
   }
 

@@ -1,0 +1,80 @@
+"""The {practice-progress} directive in small Sphinx builds: the HTML page embeds every
+template of the bank by type with the page that places it (kept current when another page
+changes), and loads its script only there; print builds say where the progress lives."""
+
+from __future__ import annotations
+
+import json
+import re
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from physics_figures import bank
+from physics_figures.variants import QUESTION_TYPES
+
+pytestmark = [pytest.mark.build]
+
+ROOT = Path(__file__).resolve().parents[1]
+SPHINX_BUILD = Path(sys.executable).parent / "sphinx-build"
+
+
+def _project(tmp_path: Path, asked: str) -> Path:
+    (tmp_path / "conf.py").write_text(textwrap.dedent(f"""\
+        import sys
+        sys.path.insert(0, {str(ROOT / "book" / "_ext")!r})
+        extensions = ["myst_parser", "questions"]
+        root_doc = "index"
+        """))
+    (tmp_path / "index.md").write_text("# Book\n\n```{toctree}\nasked\nprogress\n```\n")
+    (tmp_path / "asked.md").write_text("# Questions\n\n" + asked)
+    (tmp_path / "progress.md").write_text("# Your practice\n\nWhat you practised.\n\n```{practice-progress}\n```\n")
+    return tmp_path
+
+
+def _build(source: Path, builder: str) -> subprocess.CompletedProcess:
+    return subprocess.run(
+        [str(SPHINX_BUILD), "-W", "--keep-going", "-q", "-b", builder, str(source), str(source / "_out" / builder)],
+        check=False, capture_output=True, text=True, timeout=300,
+    )
+
+
+def _embedded(source: Path) -> dict:
+    page = (source / "_out" / "html" / "progress.html").read_text()
+    return json.loads(re.search(r'<script type="application/json" class="pp-data">(.*?)</script>', page).group(1))
+
+
+def test_the_page_embeds_the_bank_by_type_with_the_page_that_places_each(tmp_path):
+    key = next(iter(t.key for t in bank.TEMPLATES.values() if not t.try_first))
+    source = _project(tmp_path, f"```{{question}} {key}\n```\n")
+    result = _build(source, "html")
+    assert result.returncode == 0, result.stderr
+    data = _embedded(source)
+    assert [kind["type"] for kind in data["types"]] == list(QUESTION_TYPES)
+    entries = {t["key"]: t for kind in data["types"] for t in kind["templates"]}
+    assert set(entries) == {t.key for t in bank.TEMPLATES.values() if not t.try_first}
+    assert entries[key]["page"] == "asked.html"
+    assert entries[key]["marks"] == bank.TEMPLATES[key].variant(0).marks
+    assert all(t["page"] is None for k, t in entries.items() if k != key)  # placed nowhere here
+    page = (source / "_out" / "html" / "progress.html").read_text()
+    assert "_static/progress.js" in page and "_static/progress.css" in page
+    assert f'href="asked.html#question-{key}"' in page  # without JavaScript: the question itself
+    assert "progress.js" not in (source / "_out" / "html" / "asked.html").read_text()
+
+    # The question moves off the page: the progress page is rewritten though it did not change.
+    (source / "asked.md").write_text("# Questions\n\nNone today.\n")
+    result = _build(source, "html")
+    assert result.returncode == 0, result.stderr
+    assert all(t["page"] is None for kind in _embedded(source)["types"] for t in kind["templates"])
+
+
+def test_print_builds_say_the_progress_is_kept_in_the_browser(tmp_path):
+    source = _project(tmp_path, "Text.\n")
+    result = _build(source, "text")
+    assert result.returncode == 0, result.stderr
+    text = (source / "_out" / "text" / "progress.txt").read_text()
+    assert "What you practised." in text
+    assert "kept in the web browser you practise in" in text

@@ -70,6 +70,13 @@ def _question_cases(question: q.Question, name: str):
     for part_id, part in zip(question.part_ids, question.parts, strict=True):
         data = part.browser_data(part_id)
         where = f"{name} ({part_id})"
+        if part.kind == "mcq":  # the key's letter is right; each other letter is its named mistake
+            for letter, option in zip("ABCD", part.options, strict=True):
+                yield (where, letter, data, {"choice": letter},
+                       ("mistake", option.mistake) if option.mistake else ("correct", None))
+            continue
+        if part.kind == "explain":  # self-marked against its marking points: nothing to compute
+            continue
         # The key as it prints, and the unrounded value, are both right.
         yield where, "key", data, _answer(part, part.value, sig_figs=part.shown_sig_figs), ("correct", None)
         yield where, "full", data, _answer(part, part.value, sig_figs=6), ("correct", None)
@@ -100,7 +107,7 @@ def test_every_question_marks_its_own_answer_right_and_names_each_mistake():
 def test_every_part_unit_is_read_as_si():
     """Each part's unit, as the data gives it, must read at scale 1 (answers are in SI)."""
     units = sorted({part.unit for template in bank.TEMPLATES.values() for question in template.variants
-                    for part in question.parts})
+                    for part in question.parts if part.kind == "numeric"})
     script = (f"const e = require({json.dumps(str(ENGINE))});"
               f"console.log(JSON.stringify({json.dumps(units)}.map(u => e.parseUnit(u))));")
     result = subprocess.run([node(), "-e", script], check=False, capture_output=True, text=True, timeout=60)

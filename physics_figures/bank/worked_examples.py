@@ -163,6 +163,7 @@ def ball_off_a_wall() -> Question:
     dp = change_in_momentum(mass, u, v)
     force = average_force(dp, contact)
     sizes_subtracted = abs(change_in_momentum(mass, -u, v))
+    in_ms = n(contact * 1000, 2)  # the statement gives the contact time in ms
     duration = sympy.Symbol("contact_time")
     return Question(
         key=key,
@@ -177,8 +178,9 @@ def ball_off_a_wall() -> Question:
                  mistakes=(
                      Mistake("speeds subtracted", sizes_subtracted,
                              f"You subtracted the speeds. The ball turns round, so its velocities have "
-                             f"opposite signs: Δp = m(v + u) in size, {n(mass, 2)} × ({n(v, 2)} + "
-                             f"{n(-u, 2)}). Revisit wrong signs in the common mistakes."),
+                             f"opposite signs and the size of Δp is the mass × the sum of the speeds, "
+                             f"{n(mass, 2)} × ({n(v, 2)} + {n(-u, 2)}). Revisit wrong signs in the "
+                             "common mistakes."),
                      Mistake("final momentum only", momentum(mass, v),
                              "That is the momentum after the bounce. The change is final minus "
                              "initial momentum, with the initial one negative."),
@@ -192,15 +194,15 @@ def ball_off_a_wall() -> Question:
                  )),
             Part("average force exerted on the ball by the wall", force, "N", "force", shown_sig_figs=3,
                  ecf=Ecf(a_ / duration, {"contact_time": contact}),
-                 revisit=f"Force = rate of change of momentum: F = Δp / Δt, with Δt = 12 ms = "
+                 revisit=f"Force = rate of change of momentum: F = Δp / Δt, with Δt = {in_ms} ms = "
                          f"{n(contact, 2)} s.",
                  mistakes=(
                      Mistake("time left in ms", dp / (contact * 1000),
-                             f"You divided by 12, the time in ms. Convert to seconds: 12 ms = "
+                             f"You divided by {in_ms}, the time in ms. Convert to seconds: {in_ms} ms = "
                              f"{n(contact, 2)} s."),
                      Mistake("speeds subtracted", sizes_subtracted / contact,
-                             "Your change in momentum subtracts the speeds. The ball turns round: "
-                             "Δp = m(v + u) in size, then F = Δp / Δt."),
+                             "Your change in momentum subtracts the speeds. The ball turns round, so the "
+                             "size of Δp is the mass × the sum of the speeds; then F = Δp / Δt."),
                      Mistake("final momentum over time", momentum(mass, v) / contact,
                              "You used the ball's final momentum. The force is the change in "
                              "momentum ÷ time (using the wrong momentum for a force)."),
@@ -215,8 +217,8 @@ def ball_off_a_wall() -> Question:
                          "direction to the force on the ball.",
                  mistakes=(
                      Mistake("time left in ms", dp / (contact * 1000),
-                             "That is Δp ÷ 12. The time must be in seconds, 0.012 s; then the force on "
-                             "the wall equals the force on the ball, by Newton's third law."),
+                             f"That is Δp ÷ {in_ms}. The time must be in seconds, {n(contact, 2)} s; then the force "
+                             "on the wall equals the force on the ball, by Newton's third law."),
                  )),
         ),
         mark_scheme=(
@@ -457,8 +459,8 @@ def sphere_in_oil() -> Question:
                  revisit="Just after release the speed is zero, so there is no drag: a = (W − U) / m.",
                  mistakes=(
                      Mistake("upthrust left out", G_EARTH,
-                             "That is g, the acceleration in air with no upthrust. In oil the upthrust "
-                             "acts from the start: a = (W − U) / m."),
+                             "That is g, the acceleration with no upthrust (as in air). In oil the "
+                             "upthrust acts from the start: a = (W − U) / m."),
                      Mistake("drag as at terminal velocity", 0.0,
                              "That is the acceleration at terminal velocity. Just after release the "
                              "speed is zero, so there is no drag yet."),

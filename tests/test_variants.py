@@ -32,6 +32,8 @@ VARIANTS = [pytest.param(t, i, id=f"{t.key}-{i}") for t in TEMPLATES for i in ra
 @pytest.mark.parametrize("template", TEMPLATES, ids=lambda t: t.key)
 def test_each_template_has_enough_distinct_variants(template):
     least = MIN_VARIANTS if {"numeric", "graph"} & set(template.kinds) else MIN_SITUATIONS
+    if template.try_first:  # a worked example's try-first part keeps its printed numbers
+        least = 1
     assert len(template.values) >= least
     assert len({json.dumps(v, sort_keys=True) for v in template.values}) == len(template.values)
     texts = {q.text for q in template.variants}

@@ -84,6 +84,35 @@ def _number_title(question: nodes.container, number: int) -> None:
             return
 
 
+def _try_first(anchor: str) -> bool:
+    """A worked example's try-first part (physics_figures.bank): the book prints it between
+    the example and its solution, but it is no question of the sheet or the key, as its
+    statement and its answers are the example's."""
+    from physics_figures import bank
+
+    template = bank.TEMPLATES.get(anchor.removeprefix("question-"))
+    return bool(template and template.try_first)
+
+
+def _drop_try_first(key: nodes.container) -> None:
+    """Take the try-first parts' entries (title, answers, mark scheme) out of the key, and a
+    page heading left with no entry."""
+    dropping = False
+    for child in list(key.children):
+        if _has_class(child, "q-key-title"):
+            anchors = [r.get("refuri", "").rpartition("#")[2] for r in child.findall(nodes.reference)]
+            dropping = any(_try_first(anchor) for anchor in anchors)
+        elif _has_class(child, "q-key-page"):
+            dropping = False
+        if dropping:
+            key.remove(child)
+    for child in list(key.children):
+        following = child.parent.index(child) + 1
+        if _has_class(child, "q-key-page") and (following == len(key.children)
+                                               or _has_class(key.children[following], "q-key-page")):
+            key.remove(child)
+
+
 def prepare(app: Sphinx, doctree: nodes.document, docname: str) -> None:
     """After the questions extension has made its print form (doctree-resolved, 500)."""
     if app.builder.format != "latex":
@@ -95,11 +124,14 @@ def prepare(app: Sphinx, doctree: nodes.document, docname: str) -> None:
             for lines in container.findall(nodes.container):
                 if _has_class(lines, "q-answer-lines"):
                     _answer_lines(lines)
+            if _try_first(container["ids"][0]):
+                continue
             number_of[container["ids"][0]] = number = len(number_of) + 1
             _number_title(container, number)
             printed.questions.append((_page_of(container, app.env), container.deepcopy()))
     for key in doctree.findall(nodes.container):
         if _has_class(key, "q-key"):
+            _drop_try_first(key)
             for title in key.findall(nodes.paragraph):
                 if not _has_class(title, "q-key-title"):
                     continue

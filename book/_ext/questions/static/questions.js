@@ -679,6 +679,9 @@
       });
       if (score) score.textContent = marksText(marked.marks.earned, marked.marks.available);
       if (worked) worked.hidden = false;
+      // Others listen for an attempt (a worked example's solution opens on it, below).
+      section.dispatchEvent(new CustomEvent("q-checked", { bubbles: true,
+        detail: { question: data.id, earned: marked.marks.earned, available: marked.marks.available } }));
       save(storeId(), { answers: answers(), checked: true });
       if (record && key) {
         recordAttempt({
@@ -793,8 +796,20 @@
     }
   }
 
+  /* A worked example's solution (class "try-first", right after its try-first question)
+   * opens once the student has tried: on their first Check. They can open it any time. */
+  function openSolution(event) {
+    var solution = event.target.nextElementSibling;
+    if (!solution || !solution.classList.contains("try-first") || solution.hasAttribute("data-tried")) return;
+    solution.setAttribute("data-tried", "");
+    var button = solution.querySelector(".toggle-button");
+    if (button && solution.classList.contains("toggle-hidden")) button.click(); // the toggle's own way
+    else if (!button) solution.classList.add("toggle-shown"); // not made a toggle yet: stay open
+  }
+
   function start() {
     document.documentElement.classList.add("q-js");
+    document.addEventListener("q-checked", openSolution);
     Array.prototype.forEach.call(document.querySelectorAll("section.q[data-q]"), setUp);
   }
 

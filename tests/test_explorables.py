@@ -100,7 +100,9 @@ def test_every_accepted_collision_conserves_momentum_and_never_creates_kinetic_e
 
 @given(m1=masses, u1=velocities, m2=masses, u2=velocities, share=st.floats(0, 1))
 def test_a_chosen_loss_is_the_loss_the_lab_delivers(m1, u1, m2, u2, share):
-    if u1 <= u2:
+    # They must meet, at a speed the lab's sliders can set (0.1 m/s steps): at 1e-159 m/s the
+    # kinetic energy is a subnormal float and its percentages are rounding noise.
+    if u1 - u2 < 1e-3:
         return
     most = collision_lab("stick", m1=m1, u1=u1, m2=m2, u2=u2).most_percent_lost
     lab = collision_lab("loss", m1=m1, u1=u1, m2=m2, u2=u2, percent_lost=share * most)

@@ -21,7 +21,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from physics_figures import answers
+from physics_figures import answers, textformat
 from physics_figures.bank import all_questions
 from physics_figures.questions import unit_text
 
@@ -104,8 +104,17 @@ class _PageNumbers(HTMLParser):
         self._open: list[str] = []  # what is being collected: heading / caption / eqno
         self._text: list[str] = []
         self._skip = 0  # inside a headerlink (its "#")
+        # Inside an element marked hidden: controls a script reveals (the progress page's
+        # file buttons), which print and the PDF never show.
+        self._hidden_tag, self._hidden = "", 0
 
     def handle_starttag(self, tag, attrs):
+        if self._hidden:
+            self._hidden += tag == self._hidden_tag
+            return
+        if "hidden" in dict(attrs) and tag not in ("input", "img", "br"):
+            self._hidden_tag, self._hidden = tag, 1
+            return
         classes = (dict(attrs).get("class") or "").split()
         if self._skip or (tag == "a" and "headerlink" in classes):
             self._skip += 1
@@ -124,6 +133,9 @@ class _PageNumbers(HTMLParser):
             self._open.append("")
 
     def handle_endtag(self, tag):
+        if self._hidden:
+            self._hidden -= tag == self._hidden_tag
+            return
         if self._skip:
             self._skip -= 1
             return
@@ -136,7 +148,7 @@ class _PageNumbers(HTMLParser):
              "eqno": self.equation_numbers}[kind].append(text)
 
     def handle_data(self, data):
-        if self._open and not self._skip:
+        if self._open and not self._skip and not self._hidden:
             self._text.append(data)
 
 
@@ -232,7 +244,13 @@ def test_book_and_answer_key_give_each_answer_with_its_unit(question):
 def test_question_sheet_asks_each_question_with_space_to_answer(question):
     sheet = squashed(SHEET)
     for part in question.parts:
-        assert squash(part.prompt) + "=" in sheet, f"{question.key}: no answer line for {part.prompt}"
+        if part.kind == "mcq":  # the options, then a box for the letter
+            options = "".join(squash(textformat.to_plain(option.text)) for option in part.options)
+            assert squash(part.prompt) + options + "Answer(A,B,CorD):" in sheet, question.key
+        elif part.kind == "explain":  # the prompt, then lines to write on
+            assert squash(part.prompt) + "." * 70 in sheet, question.key
+        else:
+            assert squash(part.prompt) + "=" in sheet, f"{question.key}: no answer line for {part.prompt}"
 
 
 def test_question_sheet_gives_no_answer_or_mark_scheme():

@@ -373,6 +373,8 @@ def write_variants(app, exception):
     folder = Path(app.outdir) / "_static" / VARIANTS_DIR
     folder.mkdir(parents=True, exist_ok=True)
     for key in keys:
+        if len(bank.TEMPLATES[key].values) < 2:  # no New numbers: nothing to load
+            continue
         variants = [question.variant_data() for question in bank.TEMPLATES[key].variants]
         payload = json.dumps(variants, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
         (folder / f"{key}.js").write_text(

@@ -523,6 +523,10 @@
       return outcome("ecf", "Follows correctly from your answer to (" + uses.join("), (") +
         "): error carried forward (ecf), so this part earns its marks.", { si: result.si });
     }
+    if (WRONG_WAY.indexOf(result.code) >= 0) { // follows from (a), but points the wrong way
+      result.message = "Follows from your answer to (" + uses.join("), (") + ") (ecf), but: " + result.message;
+      return result;
+    }
     return ALL_BUT_A1.indexOf(result.code) >= 0 ? result : null;
   }
 

@@ -1,0 +1,52 @@
+// Marks as an exam awards them, and error carried forward, in the browser's engine
+// (book/_ext/questions/static/questions.js). Run: node --test tests/js
+"use strict";
+const test = require("node:test");
+const assert = require("node:assert/strict");
+const path = require("node:path");
+const { markQuestion } = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "questions.js"));
+
+// Quick check 1's shape: (a) momentum = F t; (b) a velocity with a direction, (a) / mass.
+const data = {
+  id: "q", parts: [
+    { id: "a", value: 15, unit: "N s", units: "N s", quantity: "momentum", direction: "none", mistakes: [], revisit: "r" },
+    { id: "b", value: 7.5, unit: "m s^-1", units: "m s^-1", quantity: "velocity", direction: "choice",
+      choices: ["forwards", "backwards"], answerDirection: "forwards", mistakes: [], revisit: "r",
+      ecf: { js: "a/mass", args: ["a", "mass"], uses: ["a"], values: { mass: 2 } } }],
+  marks: [{ parts: ["a"], code: "C1" }, { parts: ["a"], code: "A1" },
+    { parts: ["b"], code: "C1" }, { parts: ["b"], code: "A1" }, { parts: ["b"], code: "B1" }]
+};
+const ask = (a, b, dir) => markQuestion(data, { a: { value: a, unit: "N s" }, b: { value: b, unit: "m/s", direction: dir } });
+
+test("right answers earn every mark", () => {
+  assert.equal(ask("15", "7.5", "forwards").marks.earned, 5);
+});
+
+test("a later part worked from a wrong earlier answer earns its marks as ecf", () => {
+  const r = ask("20", "10", "forwards");
+  assert.equal(r.results.b.code, "ecf");
+  assert.deepEqual(r.marks.byPart, { a: [0, 2], b: [3, 3] });
+});
+
+test("ecf in the wrong direction loses only the direction's B1", () => {
+  const r = ask("20", "10", "backwards");
+  assert.equal(r.results.b.code, "direction");
+  assert.match(r.results.b.message, /ecf/);
+  assert.deepEqual(r.marks.byPart.b, [2, 3]);
+});
+
+test("an earlier answer right to 2 s.f. is not an error: nothing is carried from it", () => {
+  const r = ask("15.0", "10", "forwards");
+  assert.equal(r.results.a.code, "correct");
+  assert.notEqual(r.results.b.code, "ecf");
+  assert.deepEqual(r.marks.byPart.b, [0, 3]);
+});
+
+test("a self-marked explanation: an A1 counts only with the M1 before it", () => {
+  const explain = { id: "e", parts: [{ id: "a", kind: "explain" }],
+    marks: [{ parts: ["a"], code: "B1" }, { parts: ["a"], code: "M1" }, { parts: ["a"], code: "A1" }] };
+  const marks = (ticked) => markQuestion(explain, { a: { text: "drag grows", ticked } }).marks.earned;
+  assert.equal(marks([0, 2]), 1);
+  assert.equal(marks([0, 1, 2]), 3);
+  assert.equal(markQuestion(explain, { a: { text: " ", ticked: [0] } }).results.a.code, "no-answer");
+});

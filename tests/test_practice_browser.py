@@ -4,7 +4,7 @@ them, and error carried forward from a wrong earlier part."""
 from __future__ import annotations
 
 import pytest
-from browser import open_browser, serve_site
+from browser import open_browser, page_without_errors, serve_site
 
 from physics_figures import bank
 from physics_figures.notation import format_number
@@ -24,14 +24,8 @@ def page_url(site_dir):
 @pytest.fixture
 def page(page_url):
     browser, url = page_url
-    context = browser.new_context()
-    page = context.new_page()
-    errors = []
-    page.on("pageerror", lambda error: errors.append(str(error)))
-    page.goto(url, wait_until="load")
-    yield page
-    assert not errors
-    context.close()
+    with page_without_errors(browser, url) as page:
+        yield page
 
 
 def _form(page):

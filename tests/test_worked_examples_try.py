@@ -232,15 +232,11 @@ def example_1(site_dir):
 
 @pytest.fixture
 def page(example_1):
+    from browser import page_without_errors
+
     browser, url = example_1
-    context = browser.new_context()
-    page = context.new_page()
-    errors = []
-    page.on("pageerror", lambda error: errors.append(str(error)))
-    page.goto(url, wait_until="load")
-    yield page
-    assert not errors
-    context.close()
+    with page_without_errors(browser, url) as page:
+        yield page
 
 
 def _form(page):

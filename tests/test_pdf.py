@@ -245,7 +245,8 @@ def test_question_sheet_asks_each_question_with_space_to_answer(question):
     sheet = squashed(SHEET)
     for part in question.parts:
         if part.kind == "mcq":  # the options, then a box for the letter
-            options = "".join(squash(textformat.to_plain(option.text)) for option in part.options)
+            options = "".join(f"{letter}." + squash(textformat.to_plain(option.text))
+                              for letter, option in zip("ABCD", part.options, strict=True))
             assert squash(part.prompt) + options + "Answer(A,B,CorD):" in sheet, question.key
         elif part.kind == "explain":  # the prompt, then lines to write on
             assert squash(part.prompt) + "." * 70 in sheet, question.key

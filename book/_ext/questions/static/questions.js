@@ -415,7 +415,7 @@
     var option = (part.options || []).filter(function (o) { return o.letter === letter; })[0];
     if (!option) return outcome("no-choice", "Choose one of the options A to D.");
     if (letter === part.answer) return outcome("correct", "Correct.");
-    return outcome("mistake", option.feedback + (part.revisit ? " " + part.revisit : ""), { mistake: option.mistake });
+    return outcome("mistake", option.feedback, { mistake: option.mistake }); // it names the idea already
   }
 
   /* A describe-and-explain part is self-marked: the student ticks the marking points made. */
@@ -677,7 +677,10 @@
         var selfMarked = result.code === "self-marked";
         if (f.points && selfMarked) f.points.hidden = false;
         f.feedback.textContent = (selfMarked ? "" : right ? "✓ " : "✗ ") + result.message;
-        if (f.marks) f.marks.textContent = marksText(got[0], got[1]) + (result.code === "ecf" ? " (ecf)" : "");
+        // One part alone: its marks are the question's, shown once in .q-score.
+        if (f.marks && data.parts.length > 1) {
+          f.marks.textContent = marksText(got[0], got[1]) + (result.code === "ecf" ? " (ecf)" : "");
+        }
         f.feedback.className = "q-feedback " + (right ? "q-right" : "q-wrong");
         f.feedback.setAttribute("data-code", result.code);
       });

@@ -94,8 +94,11 @@ class Reader:
     def results(self) -> list[dict]:
         """The search page's results, once the search has finished (snippets fetched)."""
         try:
+            # Sphinx writes the summary line when the search starts and says "Search finished"
+            # only when every result is listed: wait for that, not for the line itself.
             self.page.wait_for_function(
-                "document.querySelector('#search-results p.search-summary') !== null", timeout=10_000
+                "(document.querySelector('#search-results p.search-summary') || {textContent: ''})"
+                ".textContent.startsWith('Search finished')", timeout=10_000
             )
             # A snippet arrives with the fetch of its page, after the summary line.
             self.page.wait_for_function(

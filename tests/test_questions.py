@@ -290,7 +290,9 @@ def test_the_key_prints_the_notes_values_in_the_mark_scheme():
 #: mass (not (a)), and the pucks' angle comes from the components (not from (a)'s size):
 #: none of those uses an earlier answer.
 ECF_PARTS = {("quick-check-1", "b"), ("quick-check-3", "b"), ("practice-wall-bounce", "b"),
-             ("practice-mars-rock", "b"), ("practice-towing", "b"), ("practice-trolleys-stick", "b")}
+             ("practice-mars-rock", "b"), ("practice-towing", "b"), ("practice-trolleys-stick", "b"),
+             ("elastic-both-moving", "b"), ("elastic-both-moving", "c"),
+             ("sticking-energy-lost", "b"), ("sticking-energy-lost", "c")}
 
 
 def test_every_part_that_uses_an_earlier_answer_carries_it_forward():
@@ -568,6 +570,7 @@ def test_an_edit_to_the_bank_re_reads_the_page(tmp_path):
 PRACTICE_PAGES = {"newton": "practice-newtons-laws", "drag": "practice-drag",
                   "force-momentum": "practice-force-momentum",
                   "definitions": "practice-definitions", "momentum-line": "practice-momentum-line",
+                  "elastic": "practice-collisions",
                   "two-d": "practice-two-dimensions"}
 PLACED = re.compile(r"```\{question\}[ ]*([^\n]*)\n(.*?)```", re.DOTALL)
 

@@ -292,7 +292,9 @@ def test_the_key_prints_the_notes_values_in_the_mark_scheme():
 ECF_PARTS = {("quick-check-1", "b"), ("quick-check-3", "b"), ("practice-wall-bounce", "b"),
              ("practice-mars-rock", "b"), ("practice-towing", "b"), ("practice-trolleys-stick", "b"),
              ("elastic-both-moving", "b"), ("elastic-both-moving", "c"),
-             ("sticking-energy-lost", "b"), ("sticking-energy-lost", "c")}
+             ("sticking-energy-lost", "b"), ("sticking-energy-lost", "c"),
+             ("explosion-three-pieces", "b"), ("skaters-stick-right-angles", "c"),
+             ("oblique-wall-bounce", "b"), ("oblique-wall-bounce", "c")}
 
 
 def test_every_part_that_uses_an_earlier_answer_carries_it_forward():

@@ -209,15 +209,30 @@ def stick_energy_choice(m1: float = 2.0, u1: float = 4.0, m2: float = 1.0, speed
     after = total_kinetic_energy((m1 + m2,), (v,))
     key = before - after
     same_way = stick_together(m1, u1, m2, speed2)
+    # "Forgot one body's kinetic energy": students leave out the lighter trolley B before, or
+    # leave B out of the pair after (which gives too much); which one keeps the key's letter moving.
+    if kinetic_energy(m2, speed2) < 0.1 * (before - after):
+        raise ValueError(f"speed2={speed2!r} m s^-1 gives B too little kinetic energy "
+                         f"({n(kinetic_energy(m2, speed2), 2)} J) for forgetting it to be told from the key")
+    if m2 < m1:
+        forgot_b = {"forgot B's kinetic energy before": (
+            kinetic_energy(m1, u1) - after,
+            ("You left out B's kinetic energy before the collision. Both trolleys were moving: add "
+             "½m₁u₁² and ½m₂u₂²."))}
+    elif kinetic_energy(m2, v) < 0.1 * (before - after):
+        raise ValueError(f"the pair moves too slowly ({n(v, 2)} m s^-1) for leaving B out of the kinetic "
+                         f"energy after to be told from the key (got m1={m1!r}, m2={m2!r})")
+    else:
+        forgot_b = {"left B out of the kinetic energy after": (
+            before - kinetic_energy(m1, v),
+            ("You worked out the kinetic energy after with A's mass only. The trolleys move together "
+             "afterwards: use ½(m₁ + m₂)v²."))}
     options, answer = choices_in_order(key, {
         "forgot B's direction": (
             before - total_kinetic_energy((m1 + m2,), (same_way,)),
             ("You gave B's velocity the same sign as A's. They move towards each other, so B's momentum "
             "is negative: the common velocity is (m₁u₁ − m₂u₂) / (m₁ + m₂).")),
-        "forgot B's kinetic energy before": (
-            kinetic_energy(m1, u1) - after,
-            ("You left out B's kinetic energy before the collision. Both trolleys were moving: add "
-            "½m₁u₁² and ½m₂u₂².")),
+        **forgot_b,
         "kinetic energy taken as conserved": (
             0.0,
             ("Kinetic energy is conserved only in an elastic collision. Trolleys that stick together "
@@ -414,8 +429,8 @@ TEMPLATES = (
     Template("elastic-or-not-choice", "elastic", ("mcq",), "Is it elastic?", elastic_or_not_choice,
              {"situation": Draw(0, 0, len(_BOUNCES) - 1, 1)}, variant_count=len(_BOUNCES)),
     Template("stick-energy-choice", "elastic", ("mcq",), "Trolleys that stick", stick_energy_choice,
-             {"m1": Draw(2.0, 1.0, 4.0, 0.5), "u1": Draw(4.0, 2.0, 6.0, 0.5), "m2": Draw(1.0, 0.5, 3.0, 0.5),
-              "speed2": Draw(2.0, 0.5, 3.0, 0.5)}),
+             {"m1": Draw(2.0, 1.0, 3.0, 0.5), "u1": Draw(4.0, 2.0, 6.0, 0.5), "m2": Draw(1.0, 1.0, 4.0, 0.5),
+              "speed2": Draw(2.0, 1.0, 3.0, 0.5)}),
     Template("collision-energy-explained", "elastic", ("explain",), "Where does the energy go?",
              collision_energy_explained, {"situation": Draw(0, 0, len(_CRASHES) - 1, 1)},
              variant_count=len(_CRASHES)),

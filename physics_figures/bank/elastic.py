@@ -7,6 +7,7 @@ import math
 
 import sympy
 
+from .. import textformat
 from ..models import (
     elastic_collision,
     kinetic_energy,
@@ -34,6 +35,9 @@ from ..questions import (
 )
 from ..variants import Draw, Template
 from ._common import M_S, PER_S, w
+
+#: A unit for feedback, which the page shows as plain text.
+_PER_S_PLAIN = "m s⁻¹"
 
 
 def _times(mass: float, symbol: str) -> str:
@@ -142,6 +146,7 @@ def elastic_or_not_choice(situation: float = 0) -> Question:
     energy = f"{w(ke_before)} J before; {w(kinetic_energy(m1, v1))} + {w(kinetic_energy(m2, v2))} = " \
              f"{w(ke_after)} J after"
     speeds = f"approach {w(approach)} {PER_S}, separation {w(separation)} {PER_S}"
+    plain_energy, plain_speeds = textformat.to_plain(energy), speeds.replace(PER_S, _PER_S_PLAIN)
     if elastic:
         key = Option(f"It is elastic: the relative speed of approach and the relative speed of separation "
                      f"are both {n(approach, 2)} {PER_S}.")
@@ -149,15 +154,15 @@ def elastic_or_not_choice(situation: float = 0) -> Question:
             Option(f"It is inelastic: {body} A loses kinetic energy in the collision.",
                    "looked at one body's kinetic energy",
                    f"A does lose kinetic energy, but B gains exactly as much. Elastic means the "
-                   f"<em>total</em> kinetic energy is kept: {energy}."),
+                   f"total kinetic energy is kept: {plain_energy}."),
             Option("It is inelastic: some kinetic energy is lost in every collision.",
                    "kinetic energy lost in every collision",
                    "Not in every collision: in an elastic one the total kinetic energy is kept. Compare "
-                   f"the totals, or the relative speeds ({speeds})."),
+                   f"the totals, or the relative speeds ({plain_speeds})."),
             Option("It is inelastic: the relative speeds of approach and separation do not add up to zero.",
                    "approach + separation = 0",
                    "Relative speeds are sizes, so they never add to zero. The test for an elastic "
-                   f"collision is that they are <em>equal</em>: {speeds}."),
+                   f"collision is that they are equal: {plain_speeds}."),
         )
     else:
         key = Option(f"It is inelastic: the total kinetic energy falls from {n(ke_before, 3)} J to "
@@ -166,15 +171,15 @@ def elastic_or_not_choice(situation: float = 0) -> Question:
             Option("It is elastic: the total momentum is the same before and after.",
                    "momentum conserved, so elastic",
                    "Momentum is conserved in every collision, elastic or not, so it cannot decide. "
-                   f"Compare the total kinetic energy: {energy}."),
+                   f"Compare the total kinetic energy: {plain_energy}."),
             Option(f"It is elastic: the {body}s bounce apart instead of sticking together.",
                    "the bodies separate, so elastic",
                    "Bodies that stick together always have an inelastic collision, but bouncing apart "
-                   f"does not make one elastic. Compare the total kinetic energy: {energy}."),
+                   f"does not make one elastic. Compare the total kinetic energy: {plain_energy}."),
             Option("It is elastic: kinetic energy is conserved in every collision.",
                    "kinetic energy conserved in every collision",
                    "Kinetic energy is conserved only in an elastic collision; momentum is the one "
-                   f"always conserved. Here {energy}."),
+                   f"always conserved. Here {plain_energy}."),
         )
     turn = int(situation) % len(OPTION_LETTERS)  # the key is not always the same letter
     options = (*wrong[:turn], key, *wrong[turn:])
@@ -328,18 +333,17 @@ def elastic_both_moving(m1: float = 0.20, u1: float = 3.0, m2: float = 0.30, spe
                  mistakes=(
                      Mistake("subtracted the speeds", relative_speed(u1, speed2),
                              "You subtracted the speeds. They move towards each other, so the gap closes at "
-                             "the sum: B's velocity is negative, and u<sub>A</sub> − u<sub>B</sub> adds them."),
+                             "the sum: B's velocity is negative, so u₁ − u₂ adds the speeds."),
                  )),
             Part("velocity of A after the collision", v1, "m s^-1", "velocity", units=M_S, shown_sig_figs=2,
                  direction="signed", positive=forward,
                  ecf=Ecf((sym_m1 * sym_u1 + sym_m2 * sym_u2 - sym_m2 * sym_a) / (sym_m1 + sym_m2), b_values),
-                 revisit="Two equations: momentum, m<sub>A</sub>u<sub>A</sub> + m<sub>B</sub>u<sub>B</sub> = "
-                         "m<sub>A</sub>v<sub>A</sub> + m<sub>B</sub>v<sub>B</sub> (B's u negative), and "
-                         "v<sub>B</sub> − v<sub>A</sub> = relative speed of approach. Substitute one into the other.",
+                 revisit="Two equations (1 is A, 2 is B): momentum, m₁u₁ + m₂u₂ = m₁v₁ + m₂v₂ with u₂ "
+                         "negative, and v₂ − v₁ = relative speed of approach. Substitute one into the other.",
                  mistakes=(
                      Mistake("forgot B's direction", elastic_collision(m1, u1, m2, speed2)[0],
                              "You gave B's velocity before the same sign as A's. B moves towards A, so "
-                             f"u<sub>B</sub> = −{ub} {PER_S}."),
+                             f"u₂ = −{ub} {_PER_S_PLAIN}."),
                      Mistake("treated as sticking together", stick_together(m1, u1, m2, u2),
                              "That is the common velocity if they stuck together. This collision is "
                              "elastic: the balls separate as fast as they approached."),
@@ -347,16 +351,15 @@ def elastic_both_moving(m1: float = 0.20, u1: float = 3.0, m2: float = 0.30, spe
             Part("velocity of B after the collision", v2, "m s^-1", "velocity", units=M_S, shown_sig_figs=2,
                  direction="signed", positive=forward,
                  ecf=Ecf(sym_b + sym_a, {}),
-                 revisit="Relative speed of separation = relative speed of approach: v<sub>B</sub> = "
-                         "v<sub>A</sub> + (relative speed of approach).",
+                 revisit="Relative speed of separation = relative speed of approach: v₂ = v₁ + (relative "
+                         "speed of approach), where 1 is A and 2 is B.",
                  mistakes=(
                      Mistake("approach + separation = 0", v1 - approach,
-                             "You took v<sub>A</sub> − v<sub>B</sub> as the relative speed of separation. "
-                             "B ends up ahead of A, so v<sub>B</sub> − v<sub>A</sub> = relative speed of "
-                             "approach."),
+                             "You took v₁ − v₂ (A's velocity minus B's) as the relative speed of "
+                             "separation. B ends up ahead of A, so v₂ − v₁ = relative speed of approach."),
                      Mistake("forgot B's direction", elastic_collision(m1, u1, m2, speed2)[1],
                              "You gave B's velocity before the same sign as A's. B moves towards A, so "
-                             f"u<sub>B</sub> = −{ub} {PER_S}."),
+                             f"u₂ = −{ub} {_PER_S_PLAIN}."),
                  )),
         ),
         mark_scheme=(
@@ -389,7 +392,7 @@ def sticking_energy_lost(m1: float = 0.80, u1: float = 3.0, m2: float = 1.2) -> 
                 Given("mass of B", m2, "kg", 2)),
         parts=(
             Part("speed just after the collision", v, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
-                 revisit="Momentum is conserved: m<sub>A</sub>u<sub>A</sub> = (m<sub>A</sub> + m<sub>B</sub>)v.",
+                 revisit="Momentum is conserved: m₁u₁ = (m₁ + m₂)v, with the mass of both trolleys after.",
                  mistakes=(
                      Mistake("divided by B's mass only", velocity_from_momentum(momentum(m1, u1), m2),
                              "After sticking, both trolleys move together: divide the momentum by the "
@@ -397,7 +400,7 @@ def sticking_energy_lost(m1: float = 0.80, u1: float = 3.0, m2: float = 1.2) -> 
                  )),
             Part("total kinetic energy just after", after, "J", "energy", shown_sig_figs=2,
                  ecf=Ecf(sympy.Rational(1, 2) * (sym_m1 + sym_m2) * sym_a**2, {"m_a": m1, "m_b": m2}),
-                 revisit="E<sub>k</sub> = ½mv², with the mass of both trolleys.",
+                 revisit="Eₖ = ½mv², with the mass of both trolleys.",
                  mistakes=(
                      Mistake("used A's mass only", kinetic_energy(m1, v),
                              "Both trolleys move after the collision: use their total mass."),

@@ -195,8 +195,8 @@ def explosion_three_pieces(m1: float = 0.20, v1: float = 30.0, m2: float = 0.30,
                          "opposite way to the resultant of the other two.",
                  mistakes=(
                      Mistake("tan the wrong way up", upside_down,
-                             "You measured the angle from north–south. tan θ = p<sub>north</sub> / "
-                             "p<sub>east</sub> gives the angle from east–west."),
+                             "You measured the angle from north–south. tan θ = (northward momentum) / "
+                             "(eastward momentum) gives the angle from east–west."),
                      Mistake("used the speeds", speeds_angle,
                              "You used the speeds. The direction comes from the momenta, which include "
                              "the masses."),
@@ -249,11 +249,12 @@ def skaters_stick_right_angles(m1: float = 70.0, u1: float = 4.0, m2: float = 50
                              "then divide by the total mass."),
                  )),
             Part("angle north of east", angle, "°", "angle", units="° (degrees)", shown_sig_figs=3,
-                 revisit="The pair moves along the resultant momentum: tan θ = p<sub>north</sub> / p<sub>east</sub>.",
+                 revisit="The pair moves along the resultant momentum: tan θ = (northward momentum) / "
+                         "(eastward momentum).",
                  mistakes=(
                      Mistake("tan the wrong way up", from_components(p2, p1)[1],
-                             "That is the angle from due north. tan θ = p<sub>north</sub> / p<sub>east</sub> "
-                             "gives the angle north of east."),
+                             "That is the angle from due north. tan θ = (northward momentum) / (eastward "
+                             "momentum) gives the angle north of east."),
                      Mistake("used the speeds", from_components(u1, u2)[1],
                              "You used the speeds. The direction is that of the resultant momentum, so "
                              "include the masses."),
@@ -263,7 +264,7 @@ def skaters_stick_right_angles(m1: float = 70.0, u1: float = 4.0, m2: float = 50
                          - sympy.Rational(1, 2) * (sym_m1 + sym_m2) * sym_a**2,
                          {"m_a": m1, "m_b": m2, "u_a": u1, "u_b": u2}),
                  revisit="Kinetic energy is a scalar: add ½mv² for each skater before, and subtract "
-                         "½(m<sub>A</sub> + m<sub>B</sub>)v² after.",
+                         "½ × (both masses) × v² after.",
                  mistakes=(
                      Mistake("forgot B's kinetic energy before", kinetic_energy(m1, u1) - after,
                              "Both skaters move before the collision: add both kinetic energies."),

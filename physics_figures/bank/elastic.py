@@ -441,7 +441,7 @@ TEMPLATES = (
              elastic_both_moving,
              {"m1": Draw(0.20, 0.10, 0.50, 0.05), "u1": Draw(3.0, 1.0, 6.0, 0.5),
               "m2": Draw(0.30, 0.10, 0.50, 0.05), "speed2": Draw(1.5, 1.0, 5.0, 0.5)}),
-    Template("sticking-energy-lost", "elastic", ("numeric",), "Trolleys stick together", sticking_energy_lost,
+    Template("sticking-energy-lost", "elastic", ("numeric",), "Energy lost when trolleys stick", sticking_energy_lost,
              {"m1": Draw(0.80, 0.40, 2.00, 0.10), "u1": Draw(3.0, 1.0, 5.0, 0.5),
               "m2": Draw(1.2, 0.4, 2.0, 0.1)}),
 )

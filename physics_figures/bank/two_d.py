@@ -329,7 +329,7 @@ def oblique_wall_bounce(mass: float = 0.060, speed: float = 20.0, angle: float =
                      Mistake("forgot the reversal", across,
                              "The component at right angles to the wall reverses: it changes by twice its "
                              "size, 2p sin θ."),
-                     Mistake("used cos", 2 * along,
+                     Mistake("used cos", oblique_bounce_momentum_change(p, 90.0 - angle),  # 2p cos θ
                              "You doubled the component along the wall, which does not change. Double the "
                              "component at right angles to it, p sin θ."),
                  )),

@@ -23,8 +23,6 @@ from .style import GUIDE, MAIN, SHADE, new_axes, styled, unit_label
 #: this many labels along an axis.
 _MOST_LABELS = 8
 _LABEL_EVERY = (1, 2, 5, 10)
-#: How many points of a curve its alt text reads out.
-_CURVE_POINTS_READ = 7
 
 
 class QuestionGraph(NamedTuple):
@@ -91,11 +89,11 @@ def question_graph_alt(graph: Graph) -> str:
     def amount(value: float) -> str:
         return format_number(value, decimals=v_places)
 
-    # a curve is read out at a few of its points, evenly spaced, and its end
+    # a curve is read out where it crosses the labelled times (0, 5, 10 s ...), as one reads it
     points = graph.points
     if graph.curve:
-        every = max(1, math.ceil(len(points) / _CURVE_POINTS_READ))
-        points = points[::every] + ((points[-1],) if (len(points) - 1) % every else ())
+        step = _label_step(graph.time_max, graph.time_division)
+        points = tuple(p for p in points if math.isclose(p[0] / step, round(p[0] / step), abs_tol=1e-9))
     corners = ", then ".join(f"({time(t)} s, {amount(v)} {graph.unit})" for t, v in points)
     lines = "A smooth curve passes through" if graph.curve else "Straight lines join"
     return plain(

@@ -9,10 +9,12 @@ from ..constants import G_EARTH
 from ..models import (
     acceleration,
     drag_at_terminal_velocity,
+    drag_constant_for_terminal_velocity,
     drag_force,
     falling_acceleration,
     terminal_velocity,
     upthrust,
+    velocity_from_rest,
     weight,
 )
 from ..notation import format_number as n
@@ -23,6 +25,8 @@ from ..questions import (
     Ecf,
     ExplainPart,
     Given,
+    Graph,
+    GraphPart,
     Mark,
     Mistake,
     Option,
@@ -32,10 +36,10 @@ from ..questions import (
     choices_in_order,
 )
 from ..variants import Draw, Template
-from ._common import M_S, M_S2, PER_S, PER_S2
+from ._common import M_S, M_S2, PER_S, PER_S2, reading, reading_rule
 from ._common import w as working
 
-a_answer, b_answer, open_drag_symbol, mass_symbol, g_symbol = sympy.symbols("a b open_drag mass g_earth")
+a_answer, open_drag_symbol, mass_symbol = sympy.symbols("a open_drag mass")
 
 
 def skydiver_parachute_opens(mass: float = 70.0, open_drag: float = 1500.0) -> Question:
@@ -519,6 +523,116 @@ def sphere_in_liquid(grams: float = 6.3, volume_cm3: float = 0.80, density: floa
     )
 
 
+# ---------------------------------------------------------------- reading a graph
+
+b_answer, c_answer, gravity_symbol = sympy.symbols("b c gravity")
+g_symbol = sympy.Symbol("g_earth")
+#: The velocity-time curves are drawn through a point every this many seconds.
+_CURVE_STEP = 0.1
+
+
+def _falling_from_rest(terminal: float, until: float) -> tuple[tuple[float, float], ...]:
+    """(t, v) every _CURVE_STEP s of a body dropped from rest with drag ∝ v² (the model's curve)."""
+    count = round(until / _CURVE_STEP)
+    times = [i * _CURVE_STEP for i in range(count + 1)]
+    return tuple(zip(times, (float(v) for v in velocity_from_rest(times, terminal)), strict=True))
+
+
+def skydiver_velocity_time(terminal: float = 50.0, mass: float = 70.0) -> Question:
+    """A skydiver's velocity-time graph from the moment she jumps: read the terminal velocity;
+    there the drag equals the weight, which gives k in F = kv² (notes: drag and terminal velocity)."""
+    drag = weight(mass)  # at terminal velocity the resultant force is zero
+    k = drag_constant_for_terminal_velocity(mass, terminal)
+    graph = Graph("velocity–time", "velocity", "m s⁻¹", _falling_from_rest(terminal, 30.0),
+                  time_division=1.0, value_division=2.0, time_max=30.0, value_max=80.0, curve=True)
+    m = n(mass, 2)
+    return Question(
+        key="graph-skydiver-terminal",
+        text=(f"A skydiver of mass {m} kg jumps from a hovering helicopter. The graph shows her "
+              "velocity as she falls. The drag force on her is <em>F</em> = <em>kv</em><sup>2</sup>, "
+              f"where <em>k</em> is a constant. {reading_rule(1.0, PER_S)}"),
+        givens=(Given("mass", mass, "kg", 2),),
+        graph=graph,
+        parts=(
+            GraphPart("terminal velocity", terminal, "m s^-1", "velocity", units=M_S, tolerance=1.0,
+                      revisit="The terminal velocity is where the curve levels off: read that value."),
+            Part("drag force at terminal velocity", drag, "N", "force", shown_sig_figs=3, asks="state",
+                 answer_for_g=lambda g: weight(mass, g=g),
+                 revisit="At terminal velocity the resultant force is zero, so the drag equals the weight, mg.",
+                 mistakes=(
+                     Mistake("mass given as force", mass,
+                             f"{m} is her mass in kg. The drag equals her weight, mg."),
+                     Mistake("drag is zero", 0.0,
+                             "At terminal velocity the resultant force is zero, not the drag: the drag "
+                             "has grown to equal the weight."),
+                 )),
+            Part("value of k", k, "kg m^-1", "drag constant", units="kg m^-1", shown_sig_figs=2,
+                 ecf=Ecf(b_answer / a_answer**2, {}),
+                 revisit="At terminal velocity kv² = mg, so k = mg / v².",
+                 mistakes=(
+                     Mistake("speed not squared", drag / terminal,
+                             "You divided by v. The drag is kv², so k = mg / v²."),
+                     Mistake("mass, not weight", mass / terminal**2,
+                             "You used the mass. The drag equals the weight, mg, in N."),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"{reading(terminal, 1.0)} {PER_S} (where the curve levels off)", "B1", "a"),
+            Mark(f"drag = weight = {m} × 9.81 = {n(drag, 3)} N", "B1", "b"),
+            Mark(f"k = mg / v<sup>2</sup> = {n(drag, 3)} / {reading(terminal, 1.0)}<sup>2</sup>", "C1", "c"),
+            Mark(f"= {n(k, 2)} kg m<sup>−1</sup>", "A1", "c"),
+        ),
+    )
+
+
+def ball_acceleration_from_graph(terminal: float = 20.0, moment: float = 2.0, mass: float = 0.050) -> Question:
+    """A falling ball's velocity-time curve: read the terminal velocity and the velocity at a
+    moment; with drag ∝ v² the acceleration then is g(1 − v²/v_t²) (notes: resultant force
+    = weight − drag, a = F / m)."""
+    speed = float(velocity_from_rest(moment, terminal))
+    if speed > 0.95 * terminal:  # too close to the top to read apart from it
+        raise ValueError(f"moment must come before the ball is within 5% of its terminal velocity "
+                         f"(got moment={moment!r})")
+    k = drag_constant_for_terminal_velocity(mass, terminal)
+    a = acceleration(weight(mass) - drag_force(k, speed), mass)
+    graph = Graph("velocity–time", "velocity", "m s⁻¹", _falling_from_rest(terminal, 10.0),
+                  time_division=0.2, value_division=0.5, time_max=10.0, value_max=30.0, curve=True)
+    t, m = n(moment, decimals=1), n(mass, 2)
+    return Question(
+        key="graph-ball-acceleration",
+        text=(f"A ball of mass {m} kg is dropped from rest from a high balloon. The graph shows its "
+              "velocity as it falls. The air resistance on it is proportional to the square of its "
+              f"speed. Take g = 9.81 {PER_S2}. {reading_rule(0.25, PER_S)}"),
+        givens=(Given("mass", mass, "kg", 2),),
+        graph=graph,
+        parts=(
+            GraphPart("terminal velocity", terminal, "m s^-1", "velocity", units=M_S, tolerance=0.25,
+                      revisit="The terminal velocity is where the curve levels off: read that value."),
+            GraphPart(f"velocity at {t} s", speed, "m s^-1", "velocity", units=M_S, tolerance=0.25, revisit=f"Go up from {t} s on the time axis to the curve, then across."),
+            Part(f"acceleration at {t} s", a, "m s^-2", "acceleration", units=M_S2, shown_sig_figs=2,
+                 ecf=Ecf(gravity_symbol * (1 - b_answer**2 / a_answer**2), {"gravity": G_EARTH}),
+                 revisit="Resultant force = weight − drag, with drag = kv² and k = mg / vₜ² (vₜ the "
+                         "terminal velocity); so a = g(1 − v² / vₜ²).",
+                 mistakes=(
+                     Mistake("drag left out", G_EARTH,
+                             "That is g, the acceleration with no drag. The air resistance is not zero "
+                             "while the ball moves: resultant force = weight − drag."),
+                     Mistake("drag taken as proportional to v", G_EARTH * (1 - speed / terminal),
+                             "You took the drag as proportional to v. It is proportional to v², so "
+                             "a = g(1 − v² / vₜ²)."),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"{reading(terminal, 0.25)} {PER_S}", "B1", "a"),
+            Mark(f"{reading(speed, 0.25)} {PER_S}", "B1", "b"),
+            Mark("at terminal velocity kv<sub>t</sub><sup>2</sup> = mg, so drag = mg v<sup>2</sup> / "
+                 "v<sub>t</sub><sup>2</sup> and a = (mg − drag) / m", "C1", "c"),
+            Mark(f"a = 9.81 × (1 − {reading(speed, 0.25)}<sup>2</sup> / {reading(terminal, 0.25)}<sup>2</sup>) "
+                 f"= {n(a, 2)} {PER_S2}", "A1", "c"),
+        ),
+    )
+
+
 TEMPLATES = (
     Template("quick-check-3", "drag", ("numeric",), "Quick check 3", skydiver_parachute_opens,
              {"mass": Draw(70.0, 50.0, 99.0, 1.0), "open_drag": Draw(1500.0, 1000.0, 2500.0, 100.0)}),
@@ -541,4 +655,10 @@ TEMPLATES = (
     Template("sphere-in-liquid", "drag", ("numeric",), "Sphere sinking in a liquid", sphere_in_liquid,
              {"grams": Draw(6.3, 2.0, 9.9, 0.1), "volume_cm3": Draw(0.80, 0.30, 2.0, 0.1),
               "density": Draw(920.0, 800.0, 1260.0, 10.0)}),
+    Template("graph-skydiver-terminal", "drag", ("graph", "numeric"), "A skydiver: velocity–time graph",
+             skydiver_velocity_time, {"terminal": Draw(50.0, 30.0, 70.0, 1.0), "mass": Draw(70.0, 50.0, 100.0, 1.0)}),
+    Template("graph-ball-acceleration", "drag", ("graph", "numeric"), "A falling ball: velocity–time graph",
+             ball_acceleration_from_graph,
+             {"terminal": Draw(20.0, 10.0, 25.0, 0.5), "moment": Draw(2.0, 0.5, 3.0, 0.5),
+              "mass": Draw(0.050, 0.020, 0.080, 0.005)}),
 )

@@ -60,7 +60,7 @@ from .momentum import (
     time_for_momentum_change,
     velocity_from_momentum,
 )
-from .momentum_history import MomentumHistory, Segment
+from .momentum_history import MomentumHistory, Segment, area_under_force_time
 from .newton import (
     Towing,
     acceleration,
@@ -92,6 +92,7 @@ __all__ = [
     "ThrowUp",
     "Towing",
     "acceleration",
+    "area_under_force_time",
     "average_force",
     "canopy_drag_constant",
     "change_in_momentum",

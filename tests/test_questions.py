@@ -290,7 +290,8 @@ def test_the_key_prints_the_notes_values_in_the_mark_scheme():
 #: mass (not (a)), and the pucks' angle comes from the components (not from (a)'s size):
 #: none of those uses an earlier answer.
 ECF_PARTS = {("quick-check-1", "b"), ("quick-check-3", "b"), ("practice-wall-bounce", "b"),
-             ("practice-mars-rock", "b"), ("practice-towing", "b"), ("practice-trolleys-stick", "b")}
+             ("practice-mars-rock", "b"), ("practice-towing", "b"), ("practice-trolleys-stick", "b"),
+             ("block-and-hanging-mass", "b"), ("rocket-lift-off", "b")}
 
 
 def test_every_part_that_uses_an_earlier_answer_carries_it_forward():

@@ -487,6 +487,108 @@ def rocket_lift_off(mass: float = 0.60, thrust: float = 9.0) -> Question:
     )
 
 
+#: Bodies at a constant velocity, for Newton's first law: the situation, the forward (or up)
+#: force a student thinks must win, and the force it balances.
+_STEADY = (
+    ("A car travels along a straight, level road at a constant velocity.", "car",
+     "the driving force is bigger than the resistive forces"),
+    ("A skydiver falls vertically at her terminal velocity.", "skydiver",
+     "her weight is bigger than the air resistance"),
+    ("A lift moves upwards at a constant speed.", "lift",
+     "the tension in the cable is bigger than the weight of the lift"),
+    ("An ice-hockey puck slides in a straight line across smooth, level ice at a constant velocity.",
+     "puck", "a forward force on the puck keeps it moving"),
+    ("A steel ball sinks through oil at a constant velocity.", "ball",
+     "its weight is bigger than the upthrust and the drag together"),
+)
+
+
+def first_law_choice(situation: float = 0) -> Question:
+    """Paper 1 style: constant velocity means zero resultant force (notes: Newton's first law;
+    balanced forces mean at rest or a constant velocity)."""
+    index = int(situation)
+    what, body, winning = _STEADY[index]
+    key = f"The resultant force on the {body} is zero."
+    rows = [
+        Option(key),
+        Option(f"The {body} moves because {winning}.", "a resultant force is needed to keep it moving",
+               f"At a constant velocity the acceleration is zero, so the resultant force is zero "
+               f"(Newton's first law). A resultant force would change the {body}'s velocity; no "
+               "force is needed just to keep it moving."),
+        Option(f"No forces act on the {body}.", "no forces act on it",
+               f"Forces do act on the {body} (its weight, for one), but they cancel. Constant "
+               "velocity needs a zero resultant force, not zero forces."),
+        Option(f"The forces on the {body} cannot be balanced, because the {body} is moving.",
+               "balanced forces only at rest",
+               "Balanced forces give a zero acceleration: the body is at rest or moves at a "
+               "constant velocity. You cannot tell which from the forces alone."),
+    ]
+    shift = (index + 1) % len(OPTION_LETTERS)
+    options = tuple(rows[-shift:] + rows[:-shift]) if shift else tuple(rows)
+    answer = OPTION_LETTERS[options.index(rows[0])]
+    return Question(
+        key="first-law-choice",
+        text=what,
+        givens=(),
+        parts=(ChoicePart(f"Which statement about the forces on the {body} is correct?", options, answer,
+                          revisit="Newton's first law: a constant velocity (or rest) means the "
+                                  "resultant force is zero, and a zero resultant force means a "
+                                  "constant velocity (or rest)."),),
+        mark_scheme=(Mark(f"{answer}: constant velocity, so zero acceleration and zero resultant force "
+                          "(Newton's first law)", "B1"),),
+    )
+
+
+#: Third-law pairs that a student says cancel: the situation, the pair (force on the moving
+#: body, its partner and the body that partner acts on), the moving body, and the forces on
+#: that body alone.
+_PAIRS_THAT_MOVE = (
+    ("A horse pulls a cart forwards along a level road, starting from rest.",
+     "the horse's forward pull on the cart", "the cart's backward pull on the horse", "horse", "cart",
+     "the horse's forward pull and the backward friction on the cart",
+     "the pull is bigger than the friction"),
+    ("A skater at rest pushes on a wall with her hands and moves away from it.",
+     "the wall's push on the skater", "the skater's push on the wall", "wall", "skater",
+     "the wall's push (and a small friction force)", "the push is bigger than the friction"),
+    ("A rocket starts to rise from its launch pad. It pushes hot gas downwards out of its engine.",
+     "the gas's upward push on the rocket", "the rocket's downward push on the gas", "gas", "rocket",
+     "the gas's upward push (the thrust) and its weight", "the thrust is bigger than the weight"),
+    ("A car starts to move from rest. Its tyres push backwards on the road.",
+     "the road's forward push on the tyres", "the tyres' backward push on the road", "road", "car",
+     "the road's forward push and the resistive forces",
+     "the forward push is bigger than the resistive forces"),
+    ("A swimmer starts to move forwards. Her arms push water backwards.",
+     "the water's forward push on the swimmer", "the swimmer's backward push on the water", "water",
+     "swimmer", "the water's forward push and the drag on her", "the forward push is bigger than the drag"),
+)
+
+
+def third_law_pair_explained(situation: float = 0) -> Question:
+    """Describe and explain: why the two forces of a third-law pair do not cancel (notes:
+    "they act on different bodies, so they never cancel")."""
+    what, on_mover, partner, other, mover, forces, bigger = _PAIRS_THAT_MOVE[int(situation)]
+    return Question(
+        key="third-law-pair-explained",
+        text=(f"{what} By Newton's third law, {on_mover} and {partner} are equal in size and opposite "
+              f"in direction. A student says: “These two forces cancel, so the {mover} cannot "
+              "accelerate.”"),
+        givens=(),
+        parts=(ExplainPart(
+            "Explain why the student is wrong.",
+            f"The two forces act on different bodies: one acts on the {mover}, the other on the {other}. "
+            "Forces can only cancel when they act on the same body, so to find "
+            f"the {mover}'s motion, add only the forces on the {mover}: {forces}. Here {bigger}, so "
+            f"the resultant force on the {mover} is not zero, and it accelerates (Newton's second law)."),),
+        mark_scheme=(
+            Mark(f"The forces act on different bodies ({mover} and {other})", "B1", "a"),
+            Mark(f"only forces on the same body can cancel: the {mover}'s motion depends on the "
+                 "forces on it alone", "M1", "a"),
+            Mark(f"the resultant force on the {mover} is not zero ({bigger}), so it accelerates",
+                 "A1", "a"),
+        ),
+    )
+
+
 TEMPLATES = (
     Template("practice-car-slowing", "newton", ("numeric",), "Car slowing down", car_slowing,
              {"mass": Draw(800.0, 600.0, 1500.0, 100.0), "driving": Draw(1500.0, 1000.0, 3000.0, 100.0),
@@ -517,4 +619,9 @@ TEMPLATES = (
               "friction": Draw(1.4, 0.5, 3.0, 0.1)}),
     Template("rocket-lift-off", "newton", ("numeric",), "Model rocket at lift-off", rocket_lift_off,
              {"mass": Draw(0.60, 0.20, 0.90, 0.05), "thrust": Draw(9.0, 4.0, 15.0, 1.0)}),
+    Template("first-law-choice", "newton", ("mcq",), "Moving at a constant velocity", first_law_choice,
+             {"situation": Draw(0, 0, len(_STEADY) - 1, 1)}, variant_count=len(_STEADY)),
+    Template("third-law-pair-explained", "newton", ("explain",), "Why the pair does not cancel",
+             third_law_pair_explained, {"situation": Draw(0, 0, len(_PAIRS_THAT_MOVE) - 1, 1)},
+             variant_count=len(_PAIRS_THAT_MOVE)),
 )

@@ -291,6 +291,7 @@ def test_the_key_prints_the_notes_values_in_the_mark_scheme():
 #: none of those uses an earlier answer.
 ECF_PARTS = {("quick-check-1", "b"), ("quick-check-3", "b"), ("practice-wall-bounce", "b"),
              ("practice-mars-rock", "b"), ("practice-towing", "b"), ("practice-trolleys-stick", "b"),
+             ("block-and-hanging-mass", "b"), ("rocket-lift-off", "b"),
              ("falling-with-drag-constant", "b"), ("sphere-in-liquid", "b"), ("sphere-in-liquid", "c"),
              # read from a graph, then worked from the readings
              ("graph-kick-force-time", "b"), ("graph-kick-force-time", "c"),

@@ -77,9 +77,10 @@ def confusable_mistakes(question: Question) -> list[str]:
     """Named mistakes whose value the key's 2 s.f. band accepts (the marker could not tell)."""
     found = []
     for part in question.parts:
-        if part.kind != "numeric":  # a choice or an explanation has no band
+        if part.kind not in ("numeric", "graph"):  # a choice or an explanation has no band
             continue
-        low, high = accepted_band(part.value)
+        # a reading from a graph is right within half a small square; a calculation at 2 s.f.
+        low, high = part.band if part.kind == "graph" else accepted_band(part.value)
         for mistake in part.mistakes:
             same_kind = mistake.unit is None and mistake.direction is None
             if same_kind and low <= mistake.value <= high:

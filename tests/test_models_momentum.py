@@ -11,6 +11,7 @@ from physics_figures.constants import G_EARTH, G_MOON
 from physics_figures.models import (
     MomentumHistory,
     acceleration,
+    area_under_force_time,
     average_force,
     change_in_momentum,
     gravitational_field_strength,
@@ -185,3 +186,24 @@ def test_momentum_history_keeps_its_data_read_only():
     with pytest.raises(ValueError, match="read-only"):
         history.times[0] = 1.0
     assert "(4, 12000)" in repr(history)
+
+
+@SETTINGS
+@given(history=histories)
+def test_the_area_under_a_force_time_graph_of_the_forces_is_the_change_in_momentum(history):
+    # a step force-time graph: each segment's force held for its time, corners doubled
+    times = [t for s in history.segments for t in (s.t0, s.t1)]
+    forces = [s.force for s in history.segments for _ in (0, 1)]
+    unique = [t + i * 1e-12 for i, t in enumerate(times)]  # the doubled corners, a hair apart
+    area = area_under_force_time(unique, forces)
+    assert area == pytest.approx(history.momenta[-1] - history.momenta[0], abs=1e-6)
+
+
+def test_the_area_under_a_trapezium_force_time_graph_is_half_the_sum_of_its_sides_times_its_height():
+    # rises for 0.01 s to 200 N, holds for 0.02 s, falls for 0.01 s: (0.02 + 0.04) / 2 * 200
+    assert area_under_force_time([0, 0.01, 0.03, 0.04], [0, 200, 200, 0]) == pytest.approx(6.0)
+
+
+def test_the_area_under_a_force_time_graph_refuses_times_out_of_order():
+    with pytest.raises(ValueError, match="times"):
+        area_under_force_time([0, 0.02, 0.01], [0, 10, 0])

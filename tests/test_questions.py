@@ -294,7 +294,14 @@ ECF_PARTS = {("quick-check-1", "b"), ("quick-check-3", "b"), ("practice-wall-bou
              ("elastic-both-moving", "b"), ("elastic-both-moving", "c"),
              ("sticking-energy-lost", "b"), ("sticking-energy-lost", "c"),
              ("explosion-three-pieces", "b"), ("skaters-stick-right-angles", "c"),
-             ("oblique-wall-bounce", "b"), ("oblique-wall-bounce", "c")}
+             ("oblique-wall-bounce", "b"), ("oblique-wall-bounce", "c"),
+             ("block-and-hanging-mass", "b"), ("rocket-lift-off", "b"),
+             ("falling-with-drag-constant", "b"), ("sphere-in-liquid", "b"), ("sphere-in-liquid", "c"),
+             # read from a graph, then worked from the readings
+             ("graph-kick-force-time", "b"), ("graph-kick-force-time", "c"),
+             ("graph-cyclist-momentum-time", "c"), ("graph-bounce-momentum-time", "c"),
+             ("graph-skydiver-terminal", "c"), ("graph-ball-acceleration", "c"),
+             ("graph-trolley-collision", "c")}
 
 
 def test_every_part_that_uses_an_earlier_answer_carries_it_forward():
@@ -605,3 +612,70 @@ def test_the_books_question_pages_place_every_question_once_in_book_order():
             assert bank.by_type(kind), f"no question of type {kind} at all"
             number = next(t.title for t in bank.by_type(kind)).rpartition(" ")[2]
             assert f"Quick check {number} <quick-check>" in index, kind
+
+
+# ------------------------------------------------------------------ graphs to read
+
+def _graph(**change) -> q.Graph:
+    fields = {"name": "momentum–time", "quantity": "momentum", "unit": "N s",
+              "points": ((0.0, 1.0), (1.0, 1.0), (1.5, 0.5), (3.0, 0.5)),
+              "time_division": 0.1, "value_division": 0.05, "time_max": 3.0, "value_max": 1.5}
+    return q.Graph(**{**fields, **change})
+
+
+@pytest.mark.parametrize(
+    ("change", "message"),
+    [
+        ({"points": ((0.0, 1.0),)}, "points must hold at least two points"),
+        ({"points": ((0.0, 1.0), (2.0, 1.0), (1.0, 0.5))}, "points must be in increasing time"),
+        ({"points": ((0.0, 1.0), (4.0, 1.0))}, "points must lie within 0 to time_max=3.0 s"),
+        ({"points": ((0.0, 1.0), (1.0, 2.0))}, "points must lie within value_min=0.0 to value_max=1.5"),
+        ({"time_max": 3.05}, "time_max must be 2 to 60 whole small squares of 0.1"),
+        ({"value_division": 0.01}, "value_max must be 2 to 60 whole small squares of 0.01"),
+        ({"value_min": 2.0}, "value_min must be below value_max=1.5"),
+    ],
+)
+def test_a_graph_that_cannot_be_drawn_or_read_is_refused_by_name(change, message):
+    with pytest.raises(ValueError, match=re.escape(message)):
+        _graph(**change)
+
+
+def test_a_graph_reads_the_value_its_line_passes_through():
+    assert _graph().value_at(1.25) == pytest.approx(0.75)
+    with pytest.raises(ValueError, match="time must lie on the drawn line"):
+        _graph().value_at(3.5)
+
+
+def _reading(**change) -> q.GraphPart:
+    fields = {"prompt": "momentum before", "value": 1.0, "unit": "N s", "quantity": "momentum",
+              "tolerance": 0.025, "revisit": "Read the flat part."}
+    return q.GraphPart(**{**fields, **change})
+
+
+def test_a_reading_prints_to_the_places_of_a_small_square_and_is_right_within_half_of_one():
+    part = _reading(value=1.15)
+    assert part.answer_text == "1.15 N s" and part.kind == "graph"
+    assert part.band == pytest.approx((1.125, 1.175))
+    assert _reading(value=240.0, tolerance=10.0).answer_text == "240 N s"
+    assert _reading().browser_data("a")["tolerance"] == 0.025
+
+
+def test_a_reading_refuses_no_tolerance_and_a_mistake_the_marker_would_take_as_right():
+    with pytest.raises(ValueError, match="tolerance must be positive"):
+        _reading(tolerance=0.0)
+    with pytest.raises(ValueError, match="within the reading's tolerance"):
+        _reading(mistakes=(q.Mistake("misread", 1.02, "Read again."),))
+
+
+def _graph_question(**change) -> q.Question:
+    fields = {"key": "graph-test", "givens": (), "parts": (_reading(),), "graph": _graph(),
+              "mark_scheme": (q.Mark("1.00 N s", "B1"),)}
+    return q.Question(**{**fields, **change})
+
+
+def test_a_graph_goes_with_a_part_read_from_it_at_half_a_small_square():
+    assert _graph_question().graph.points[0] == (0.0, 1.0)
+    with pytest.raises(ValueError, match="graph goes with a part read from it"):
+        _graph_question(graph=None)
+    with pytest.raises(ValueError, match="tolerance must be half a small square of the graph"):
+        _graph_question(parts=(_reading(tolerance=0.1),))

@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 
 from ..notation import format_number, round_number
+from ..questions import reading_places
 
 #: Every usual form of a unit, for the marker's messages.
 N_S = "N s or kg m s^-1"
@@ -27,3 +28,16 @@ def w(value: float) -> str:
         if math.isclose(float(round_number(value, sig_figs)), value, rel_tol=1e-9, abs_tol=1e-12):
             return format_number(value, sig_figs)
     return format_number(value, 3)
+
+
+def reading_rule(tolerance: float, unit: str) -> str:
+    """What a graph question says about its readings (text format): the marker accepts half
+    a small square either way."""
+    exact = next(format_number(tolerance, sig_figs) for sig_figs in range(1, _EXACT_UP_TO + 1)
+                 if math.isclose(float(round_number(tolerance, sig_figs)), tolerance, rel_tol=1e-9))
+    return f"Readings from the graph are marked right to within half a small square (± {exact} {unit})."
+
+
+def reading(value: float, tolerance: float) -> str:
+    """A value read from a graph, written to the places of its small squares (12.5, 240)."""
+    return format_number(value, decimals=reading_places(tolerance))

@@ -6,7 +6,10 @@ from __future__ import annotations
 import sympy
 
 from ..models import (
+    MomentumHistory,
     acceleration,
+    area_under_force_time,
+    average_force,
     change_in_momentum,
     impulse,
     kinetic_energy,
@@ -17,11 +20,11 @@ from ..models import (
     weight,
 )
 from ..notation import format_number as n
-from ..questions import Ecf, Given, Mark, Mistake, Part, Question, Step
+from ..questions import Ecf, Given, Graph, GraphPart, Mark, Mistake, Part, Question, Step
 from ..variants import Draw, Template
 from ._common import M_S as _M_S
 from ._common import N_S as _N_S
-from ._common import PER_S, w
+from ._common import PER_S, reading, reading_rule, w
 
 a_answer, mass_symbol, contact_symbol = sympy.symbols("a mass contact")
 
@@ -198,6 +201,162 @@ def car_stopping_time(mass: float = 900.0, speed: float = 12.0, force: float = 3
     )
 
 
+# ---------------------------------------------------------------- reading a graph
+
+b_answer, widths_symbol, interval_symbol = sympy.symbols("b widths interval")
+
+
+def kick_force_time(peak: float = 200.0, rise: float = 0.01, hold: float = 0.03, fall: float = 0.01,
+                    mass: float = 0.45) -> Question:
+    """A force-time graph of a kick: read the peak force, the impulse is the area under the
+    graph (notes: area under a force-time graph = change in momentum), then the speed."""
+    times = (0.0, rise, rise + hold, rise + hold + fall)
+    forces = (0.0, peak, peak, 0.0)
+    area = area_under_force_time(times, forces)
+    speed = velocity_from_momentum(area, mass)
+    contact = times[-1]
+    widths = hold + contact  # the trapezium's two parallel sides, in s
+    graph = Graph("force–time", "force", "N", tuple(zip(times, forces, strict=True)),
+                  time_division=0.002, value_division=10.0, time_max=0.1, value_max=350.0, shaded=True)
+    f, m = reading(peak, 5.0), n(mass, 2)
+    return Question(
+        key="graph-kick-force-time",
+        text=(f"A football of mass {m} kg is at rest. A player kicks it, and the graph shows how the "
+              "force on the ball varies with time while the boot is in contact with it. "
+              f"{reading_rule(5.0, 'N')}"),
+        givens=(Given("mass", mass, "kg", 2),),
+        graph=graph,
+        parts=(
+            GraphPart("largest force on the ball", peak, "N", "force", tolerance=5.0,
+                      revisit="Read the top of the graph against the force axis."),
+            Part("impulse on the ball", area, "N s", "impulse", units=_N_S, shown_sig_figs=2,
+                 revisit="Impulse = change in momentum = the area under the force–time graph.",
+                 ecf=Ecf(a_answer * widths_symbol / 2, {"widths": widths}),
+                 mistakes=(
+                     Mistake("largest force × whole contact time", peak * contact,
+                             "You took the area as a rectangle, largest force × contact time. The force "
+                             "rises and falls: find the area of the trapezium under the line."),
+                     Mistake("only the flat part", peak * hold,
+                             "You found only the area under the flat top. The sloping sides add area "
+                             "too: every part under the line is change in momentum."),
+                     Mistake("largest force × time ÷ 2", peak * contact / 2,
+                             "You treated the area as a triangle. The top is flat for a while: use the "
+                             "trapezium, ½ × (sum of the parallel sides) × height."),
+                 )),
+            Part("speed of the ball as it leaves the boot", speed, "m s^-1", "speed", units=_M_S,
+                 shown_sig_figs=2, ecf=Ecf(b_answer / mass_symbol, {"mass": mass}),
+                 revisit="The ball starts at rest, so its momentum afterwards is the impulse: v = Δp / m.",
+                 mistakes=(
+                     Mistake("impulse × mass", area * mass,
+                             "You multiplied the impulse by the mass. Δp = mv, so v = Δp / m."),
+                     Mistake("force ÷ mass", acceleration(peak, mass),
+                             "That is the largest acceleration, F / m, in m s⁻². The speed comes from "
+                             "the change in momentum: v = Δp / m."),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"{f} N (the top of the graph)", "B1", "a"),
+            Mark(f"impulse = area under the graph = ½ × ({w(hold)} + {w(contact)}) × {f}", "C1", "b"),
+            Mark(f"= {n(area, 2)} N s", "A1", "b"),
+            Mark(f"v = Δp / m = {w(area)} / {m}", "C1", "c"),
+            Mark(f"= {n(speed, 2)} {PER_S}", "A1", "c"),
+        ),
+    )
+
+
+def cyclist_momentum_time(start: float = 240.0, end: float = 640.0, begins: float = 4.0,
+                          lasts: float = 8.0) -> Question:
+    """A momentum-time graph: read two momenta, the resultant force is the gradient (notes:
+    reading a momentum-time graph)."""
+    history = MomentumHistory((0.0, begins, begins + lasts, 20.0), (start, start, end, end))
+    force = float(history.segment_forces[1])
+    graph = Graph("momentum–time", "momentum", "N s", tuple(zip(history.times, history.momenta, strict=True)),
+                  time_division=0.5, value_division=20.0, time_max=20.0, value_max=1000.0)
+    t0, t1 = n(begins, decimals=1), n(begins + lasts, decimals=1)
+    return Question(
+        key="graph-cyclist-momentum-time",
+        text=("The graph shows how the momentum of a cyclist changes as she speeds up along a straight, "
+              f"level road. {reading_rule(10.0, 'N s')}"),
+        givens=(),
+        graph=graph,
+        parts=(
+            GraphPart("momentum before she speeds up", start, "N s", "momentum", units=_N_S,
+                      tolerance=10.0,
+                      revisit="Read the flat part of the line at the start against the momentum axis."),
+            GraphPart("momentum after she speeds up", end, "N s", "momentum", units=_N_S,
+                      tolerance=10.0,
+                      revisit="Read the flat part of the line at the end against the momentum axis."),
+            Part(f"resultant force on her between {t0} s and {t1} s", force, "N", "force",
+                 shown_sig_figs=2,
+                 ecf=Ecf((b_answer - a_answer) / interval_symbol, {"interval": lasts}),
+                 revisit="The resultant force is the gradient of the momentum–time graph: F = Δp / Δt.",
+                 mistakes=(
+                     Mistake("final momentum ÷ time", average_force(end, lasts),
+                             "You divided the final momentum by the time. The force is the change in "
+                             "momentum ÷ time: subtract the momentum before."),
+                     Mistake("time from zero", average_force(end - start, begins + lasts),
+                             f"You measured the time from 0. The momentum changes only from {t0} s to "
+                             f"{t1} s: use that time."),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"{reading(start, 10.0)} N s", "B1", "a"),
+            Mark(f"{reading(end, 10.0)} N s", "B1", "b"),
+            Mark(f"F = gradient = Δp / Δt = ({reading(end, 10.0)} − {reading(start, 10.0)}) / ({t1} − {t0})",
+                 "C1", "c"),
+            Mark(f"= {n(force, 2)} N", "A1", "c"),
+        ),
+    )
+
+
+def ball_bounce_momentum_time(before: float = 2.4, after: float = 1.6, arrives: float = 0.02,
+                              contact: float = 0.03) -> Question:
+    """A momentum-time graph of a ball that bounces back: the momentum changes sign, so
+    Δp = m(u + v) in size (notes: common mistake, forgetting the direction reverses)."""
+    towards, away = "towards the wall", "away from the wall"
+    history = MomentumHistory((0.0, arrives, arrives + contact, 0.1), (before, before, -after, -after))
+    force = float(history.segment_forces[1])  # negative: away from the wall
+    graph = Graph("momentum–time", "momentum", "N s", tuple(zip(history.times, history.momenta, strict=True)),
+                  time_division=0.002, value_division=0.1, time_max=0.1, value_max=3.0, value_min=-3.0)
+    return Question(
+        key="graph-bounce-momentum-time",
+        text=("A ball hits a wall at right angles and bounces straight back. The graph shows its "
+              "momentum, taking the direction towards the wall as positive. "
+              f"{reading_rule(0.05, 'N s')}"),
+        givens=(),
+        graph=graph,
+        parts=(
+            GraphPart("momentum of the ball before it hits the wall", before, "N s", "momentum",
+                      units=_N_S, tolerance=0.05,
+                      revisit="Read the line before the bounce against the momentum axis."),
+            GraphPart("momentum of the ball after it bounces", -after, "N s", "momentum", units=_N_S,
+                      tolerance=0.05, direction="signed", positive=towards,
+                      revisit="After the bounce the ball moves away from the wall: its momentum is "
+                              "negative. Read the line below the time axis."),
+            Part("average force on the ball from the wall", abs(force), "N", "force", shown_sig_figs=2,
+                 direction="choice", choices=(towards, away), answer_direction=away,
+                 ecf=Ecf((b_answer - a_answer) / interval_symbol, {"interval": contact}),
+                 direction_hint="The momentum changes from towards the wall to away from it, so the "
+                                "force on the ball is away from the wall.",
+                 revisit="F = Δp / Δt, with Δp = final − initial momentum, signs included.",
+                 mistakes=(
+                     Mistake("forgot that the ball reverses", average_force(before - after, contact),
+                             "You subtracted the sizes. The momentum changes sign: Δp = (−"
+                             f"{reading(after, 0.05)}) − {reading(before, 0.05)}, so the sizes add."),
+                     Mistake("only the momentum before", average_force(before, contact),
+                             "You used only the momentum before. Δp = final − initial momentum."),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"{reading(before, 0.05)} N s", "B1", "a"),
+            Mark(f"{reading(-after, 0.05)} N s (negative: away from the wall)", "B1", "b"),
+            Mark(f"F = Δp / Δt = ({reading(-after, 0.05)} − {reading(before, 0.05)}) / {w(contact)}", "C1", "c"),
+            Mark(f"= {n(abs(force), 2)} N", "A1", "c"),
+            Mark("<strong>away from the wall</strong>", "B1", "c"),
+        ),
+    )
+
+
 TEMPLATES = (
     Template("quick-check-1", "force-momentum", ("numeric",), "Quick check 1",
              trolley_pushed_from_rest,
@@ -212,4 +371,17 @@ TEMPLATES = (
     Template("practice-stopping-time", "force-momentum", ("numeric",), "Time to stop a car", car_stopping_time,
              {"mass": Draw(900.0, 600.0, 2000.0, 100.0), "speed": Draw(12.0, 5.0, 30.0, 1.0),
               "force": Draw(3600.0, 1000.0, 9900.0, 100.0)}),
+    Template("graph-kick-force-time", "force-momentum", ("graph", "numeric"), "A kick: force–time graph",
+             kick_force_time,
+             {"peak": Draw(200.0, 120.0, 300.0, 10.0), "rise": Draw(0.01, 0.006, 0.02, 0.002),
+              "hold": Draw(0.03, 0.01, 0.04, 0.002), "fall": Draw(0.01, 0.006, 0.02, 0.002),
+              "mass": Draw(0.45, 0.40, 0.50, 0.01)}),
+    Template("graph-cyclist-momentum-time", "force-momentum", ("graph", "numeric"),
+             "A cyclist: momentum–time graph", cyclist_momentum_time,
+             {"start": Draw(240.0, 100.0, 400.0, 20.0), "end": Draw(640.0, 500.0, 900.0, 20.0),
+              "begins": Draw(4.0, 2.0, 6.0, 0.5), "lasts": Draw(8.0, 4.0, 12.0, 0.5)}),
+    Template("graph-bounce-momentum-time", "force-momentum", ("graph", "numeric"),
+             "A bounce: momentum–time graph", ball_bounce_momentum_time,
+             {"before": Draw(2.4, 1.5, 2.9, 0.1), "after": Draw(1.6, 0.5, 2.0, 0.1),
+              "arrives": Draw(0.02, 0.01, 0.04, 0.002), "contact": Draw(0.03, 0.01, 0.05, 0.002)}),
 )

@@ -8,16 +8,19 @@ import math
 import sympy
 
 from ..models import (
+    MomentumHistory,
     explosion_from_rest,
     kinetic_energy,
     momentum,
     stick_together,
     total_kinetic_energy,
+    velocity_after_collision,
+    velocity_from_momentum,
 )
 from ..notation import format_number as n
-from ..questions import Ecf, Given, Mark, Mistake, Part, Question, Step
+from ..questions import Ecf, Given, Graph, GraphPart, Mark, Mistake, Part, Question, Step
 from ..variants import Draw, Template
-from ._common import M_S, PER_S, w
+from ._common import M_S, N_S, PER_S, reading, reading_rule, w
 
 a_answer, m1_symbol, u1_symbol, m2_symbol, speed2_symbol = sympy.symbols("a m1 u1 m2 speed2")
 
@@ -127,6 +130,58 @@ def trolleys_stick(m1: float = 2.0, u1: float = 3.0, m2: float = 1.0, speed2: fl
     )
 
 
+b_answer, mass_b_symbol = sympy.symbols("b mass_b")
+
+
+def trolley_collision_momentum_time(before: float = 1.2, after: float = 0.4, mass_b: float = 0.50,
+                                    hits: float = 1.0, contact: float = 0.3) -> Question:
+    """A momentum-time graph of trolley A hitting trolley B at rest: the momentum A loses, B
+    gains (notes: conservation of momentum; a momentum-time graph)."""
+    history = MomentumHistory((0.0, hits, hits + contact, 3.0), (before, before, after, after))
+    # A's mass is not given: its momenta are m1 u1 and m1 v1, so take m1 = 1 kg with u1, v1
+    # numerically equal to them; conservation gives B's velocity, and B gains what A loses.
+    speed_b = velocity_after_collision(1.0, before, mass_b, 0.0, after)
+    gained = momentum(mass_b, speed_b)
+    graph = Graph("momentum–time", "momentum", "N s", tuple(zip(history.times, history.momenta, strict=True)),
+                  time_division=0.1, value_division=0.05, time_max=3.0, value_max=1.5)
+    mb = n(mass_b, 2)
+    return Question(
+        key="graph-trolley-collision",
+        text=(f"Trolley A runs along a straight, level track and hits trolley B, of mass {mb} kg, which "
+              "is at rest. The graph shows the momentum of trolley A. No external force acts along the "
+              f"track. {reading_rule(0.025, 'N s')}"),
+        givens=(Given("mass of B", mass_b, "kg", 2),),
+        graph=graph,
+        parts=(
+            GraphPart("momentum of A before the collision", before, "N s", "momentum", units=N_S,
+                      tolerance=0.025,
+                      revisit="Read the flat part of the line before the collision."),
+            GraphPart("momentum of A after the collision", after, "N s", "momentum", units=N_S,
+                      tolerance=0.025,
+                      revisit="Read the flat part of the line after the collision."),
+            Part("speed of B after the collision", speed_b, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
+                 ecf=Ecf((a_answer - b_answer) / mass_b_symbol, {"mass_b": mass_b}),
+                 revisit="Momentum is conserved: the momentum A loses, B gains. Then v = p / m.",
+                 mistakes=(
+                     Mistake("gave B the momentum A has after", velocity_from_momentum(after, mass_b),
+                             "You gave B the momentum A has afterwards. B gains the momentum A loses: "
+                             "before − after."),
+                     Mistake("assumed A stops", velocity_from_momentum(before, mass_b),
+                             "You gave B all of A's momentum, as if A stopped. The graph shows A still "
+                             "moving: B gains only what A loses."),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"{reading(before, 0.025)} N s", "B1", "a"),
+            Mark(f"{reading(after, 0.025)} N s", "B1", "b"),
+            Mark(f"momentum B gains = momentum A loses = {reading(before, 0.025)} − {reading(after, 0.025)} "
+                 f"= {w(gained)} N s",
+                 "C1", "c"),
+            Mark(f"v = {w(gained)} / {mb} = {n(speed_b, 2)} {PER_S}", "A1", "c"),
+        ),
+    )
+
+
 TEMPLATES = (
     Template("quick-check-2", "momentum-line", ("numeric",), "Quick check 2", rifle_recoil,
              {"rifle": Draw(4.0, 3.0, 6.0, 0.5), "bullet": Draw(0.010, 0.008, 0.020, 0.001),
@@ -135,4 +190,9 @@ TEMPLATES = (
              trolleys_stick,
              {"m1": Draw(2.0, 1.0, 4.0, 0.5), "u1": Draw(3.0, 1.0, 5.0, 0.5),
               "m2": Draw(1.0, 0.5, 3.0, 0.5), "speed2": Draw(1.5, 0.5, 4.0, 0.5)}),
+    Template("graph-trolley-collision", "momentum-line", ("graph", "numeric"),
+             "A collision: momentum–time graph", trolley_collision_momentum_time,
+             {"before": Draw(1.2, 0.8, 1.4, 0.05), "after": Draw(0.4, 0.1, 0.6, 0.05),
+              "mass_b": Draw(0.50, 0.20, 1.00, 0.05), "hits": Draw(1.0, 0.8, 1.5, 0.1),
+              "contact": Draw(0.3, 0.1, 0.5, 0.1)}),
 )

@@ -27,6 +27,7 @@ from ..models import stick_together
 from ..models.drag import Skydive, ThrowUp
 from ..models.momentum_history import MomentumHistory
 from ..models.two_d import GlancingCollision
+from ..questions import Graph
 from .collisions import collision_alt, collision_caption, plot_collision
 from .drag import (
     drag_against_speed_alt,
@@ -52,6 +53,7 @@ from .momentum_graphs import (
     plot_force_time_area,
     plot_momentum_time,
 )
+from .question_graph import plot_question_graph, question_graph_alt
 from .skydiver import (
     plot_resultant_force,
     plot_velocity_time,
@@ -223,3 +225,9 @@ def example4_triangle(collision: GlancingCollision) -> BookFigure:
         momentum_triangle_caption(collision, names=("X", "Y")),
         momentum_triangle_alt(collision, names=("X", "Y"), figures=3),
     )
+
+
+def question_graph(graph: Graph) -> BookFigure:
+    """The graph a question prints, for one variant (the question directive draws it)."""
+    drawn = plot_question_graph(graph)
+    return BookFigure("question-graph", drawn.axes.figure, "", question_graph_alt(graph))

@@ -33,6 +33,7 @@ from .drag import (
     drag_constant_for_terminal_velocity,
     drag_force,
     earliest_opening,
+    falling_acceleration,
     open_canopy,
     skydive,
     terminal_velocity,
@@ -59,7 +60,7 @@ from .momentum import (
     time_for_momentum_change,
     velocity_from_momentum,
 )
-from .momentum_history import MomentumHistory, Segment
+from .momentum_history import MomentumHistory, Segment, area_under_force_time
 from .newton import (
     Towing,
     acceleration,
@@ -91,6 +92,7 @@ __all__ = [
     "ThrowUp",
     "Towing",
     "acceleration",
+    "area_under_force_time",
     "average_force",
     "canopy_drag_constant",
     "change_in_momentum",
@@ -102,6 +104,7 @@ __all__ = [
     "earliest_opening",
     "elastic_collision",
     "explosion_from_rest",
+    "falling_acceleration",
     "from_components",
     "glancing_collision",
     "gravitational_field_strength",

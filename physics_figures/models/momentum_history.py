@@ -112,3 +112,18 @@ class MomentumHistory:
     def segment_accelerations(self, mass) -> np.ndarray:
         """Acceleration in each segment, a = F / m, m s^-2. mass: kg (> 0)."""
         return self._forces / check.positive("mass", mass, unit="kg")
+
+
+def area_under_force_time(times, forces) -> float:
+    """Impulse = area under a force-time graph of straight lines through (times[i], forces[i]).
+
+    The trapezium rule, exact for straight lines: Σ ½ (F_i + F_i+1)(t_i+1 - t_i), N s.
+    times: s, strictly increasing, at least two; forces: N, signed, the same length.
+    Raises ValueError for fewer than two points, mismatched lengths, times that are not
+    strictly increasing, or a value that is not finite.
+    """
+    times = check.sequence("times", times, unit="s", minimum_length=2)
+    forces = check.sequence("forces", forces, unit="N", minimum_length=2)
+    check.same_length(times=times, forces=forces)
+    check.strictly_increasing("times", times, unit="s")
+    return float(np.sum((forces[1:] + forces[:-1]) / 2 * np.diff(times)))

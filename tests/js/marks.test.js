@@ -50,3 +50,38 @@ test("a self-marked explanation: an A1 counts only with the M1 before it", () =>
   assert.equal(marks([0, 1, 2]), 3);
   assert.equal(markQuestion(explain, { a: { text: " ", ticked: [0] } }).results.a.code, "no-answer");
 });
+
+// A graph question's shape: (a) a reading, right within half a small square (0.25 m/s);
+// (b) worked from it, v²-style so a small difference in the reading shows at 2 s.f.
+const graph = {
+  id: "g", parts: [
+    { id: "a", kind: "graph", value: 20, tolerance: 0.25, unit: "m s^-1", units: "m s^-1", quantity: "velocity",
+      minSf: 1, direction: "none", mistakes: [], revisit: "r" },
+    { id: "b", value: 0.49, unit: "kg m^-1", units: "kg m^-1", quantity: "drag constant", direction: "none",
+      mistakes: [], revisit: "r", ecf: { js: "196/Math.pow(a, 2)", args: ["a"], uses: ["a"], values: {} } }],
+  marks: [{ parts: ["a"], code: "B1" }, { parts: ["b"], code: "C1" }, { parts: ["b"], code: "A1" }]
+};
+const read = (a, b) => markQuestion(graph, { a: { value: a, unit: "m/s" }, b: { value: b, unit: "kg/m" } });
+
+test("a reading within half a small square is right; just outside it is not", () => {
+  assert.equal(read("20.25", "").results.a.code, "correct");
+  assert.equal(read("19.8", "").results.a.code, "correct");
+  assert.equal(read("20", "").results.a.code, "correct"); // no particular significant figures
+  assert.equal(read("20.3", "").results.a.code, "wrong");
+  assert.equal(read("19.7", "").results.a.code, "wrong");
+});
+
+test("a later part worked from a right but inexact reading is right, not ecf", () => {
+  // 196 / 20.2² = 0.480, which is not the key 0.49 at 2 s.f.: it follows from the reading
+  const r = read("20.2", "0.480");
+  assert.equal(r.results.b.code, "correct");
+  assert.match(r.results.b.message, /readings of the graph/);
+  assert.equal(r.marks.earned, 3);
+});
+
+test("a later part worked from a wrong reading earns its marks as ecf", () => {
+  const r = read("28", "0.25");
+  assert.equal(r.results.a.code, "wrong");
+  assert.equal(r.results.b.code, "ecf");
+  assert.deepEqual(r.marks.byPart, { a: [0, 1], b: [2, 2] });
+});

@@ -27,6 +27,7 @@ page shows what a student has done with the bank's templates, by question type::
 from __future__ import annotations
 
 import json
+import os
 from html import escape
 from pathlib import Path
 
@@ -101,6 +102,8 @@ class QuestionDirective(SphinxDirective):
         self.set_source_info(node)
         node += nodes.paragraph("", "", nodes.strong(text=title), classes=["q-title"])
         node += nodes.container("", *text_nodes(data.text), classes=["q-text"])
+        if data.graph is not None:
+            node += self._graph(template.key, data.graph)
         lines = nodes.container(classes=["q-answer-lines"])
         for index, part in enumerate(data.parts):
             lines += answer_lines(data.label(index), part)
@@ -125,6 +128,15 @@ class QuestionDirective(SphinxDirective):
             raise self.error(f"question: no template {key!r} in physics_figures.bank")
         package = Path(bank.__file__).parents[1]
         return bank.TEMPLATES[key], sorted(package.rglob("*.py"))
+
+    def _graph(self, key: str, graph) -> nodes.image:
+        """The printed variant's graph, drawn now as SVG (the site) and PDF (the book): an
+        image Sphinx copies like any other, so every builder picks its own format."""
+        folder = Path(self.env.doctreedir).parent / GRAPHS_DIR
+        drawn = write_graph(folder, f"{key}-0", graph, formats=("svg", "pdf"))
+        here = Path(self.env.srcdir) / Path(self.env.docname).parent
+        uri = Path(os.path.relpath(folder / f"{key}-0", here)).as_posix() + ".*"
+        return nodes.image(uri=uri, alt=drawn.alt, classes=["q-graph"])
 
     def _record(self, data, title: str, worked: worked_answer) -> None:
         for docname, asked in _questions(self.env).items():
@@ -358,6 +370,23 @@ def add_assets(app, pagename, templatename, context, doctree):
 
 
 VARIANTS_DIR = "questions"  # under the site's _static/: one file of variants per template
+GRAPHS_DIR = "question-graphs"  # beside the doctrees: the printed variants' graphs, as sources
+
+
+def write_graph(folder: Path, name: str, graph, *, formats: tuple[str, ...]):
+    """Draw a question's graph into folder/name.<format>, rewriting a file only when its
+    bytes change (so an unchanged graph is not copied again). Returns the BookFigure."""
+    from physics_figures.figures.book import question_graph
+
+    drawn = question_graph(graph)
+    folder.mkdir(parents=True, exist_ok=True)
+    for extension in formats:
+        content = drawn.svg().encode() if extension == "svg" else drawn.pdf()
+        path = folder / f"{name}.{extension}"
+        if not path.exists() or path.read_bytes() != content:
+            path.write_bytes(content)
+    drawn.figure.clear()  # matplotlib keeps figures alive until cleared
+    return drawn
 
 
 def write_variants(app, exception):
@@ -375,7 +404,13 @@ def write_variants(app, exception):
     for key in keys:
         if len(bank.TEMPLATES[key].values) < 2:  # no New numbers: nothing to load
             continue
-        variants = [question.variant_data() for question in bank.TEMPLATES[key].variants]
+        variants = []
+        for index, variant in enumerate(bank.TEMPLATES[key].variants):
+            data = variant.variant_data()
+            if variant.graph is not None:  # its own graph, beside the variants' script
+                drawn = write_graph(folder, f"{key}-{index}", variant.graph, formats=("svg",))
+                data["graph"] = {"src": f"{key}-{index}.svg", "alt": drawn.alt}
+            variants.append(data)
         payload = json.dumps(variants, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
         (folder / f"{key}.js").write_text(
             f"(window.QuestionVariants = window.QuestionVariants || {{}})[{json.dumps(key)}] = {payload};\n",

@@ -309,6 +309,10 @@
     var readings = unit.empty ? [expected] : unit.readings;
     var fitting = readings.filter(function (r) { return sameDims(r.dims, expected.dims); });
     function against(value, scale) {
+      if (part.tolerance) { // read from a graph: right within half a small square either way
+        var near = Math.abs(size - value / scale) <= (part.tolerance / scale) * (1 + 1e-9);
+        return { match: near, matchFewSf: false };
+      }
       var n = { value: size, sfMin: number.sfMin, sfMax: number.sfMax, lead: number.lead };
       return compare(n, value / scale, minSf, checkSf);
     }
@@ -498,20 +502,26 @@
     var results = {};
     data.parts.forEach(function (part) {
       var result = mark(part, answers[part.id] || {});
-      if (result.code !== "correct" && part.ecf) result = carried(part, answers[part.id] || {}, results) || result;
+      if (result.code !== "correct" && part.ecf) result = carried(part, answers[part.id] || {}, results, data) || result;
       results[part.id] = result;
     });
     return { results: results, marks: award(data, results) };
   }
 
-  function carried(part, answer, earlier) {
+  function carried(part, answer, earlier, data) {
     var uses = part.ecf.uses, known = {};
     for (var i = 0; i < uses.length; i++) {
       var before = earlier[uses[i]];
       if (!before || before.si === null || before.si === undefined) return null;
       known[uses[i]] = before.si;
     }
-    if (uses.every(function (id) { return NOT_AN_ERROR.indexOf(earlier[id].code) >= 0; })) return null;
+    // A reading of a graph may be right yet not exact (half a small square either way): a
+    // later part is then worked from the student's own reading, and is simply right.
+    var fromReadings = uses.some(function (id) {
+      return data.parts.some(function (p) { return p.id === id && p.kind === "graph"; });
+    });
+    var allRight = uses.every(function (id) { return NOT_AN_ERROR.indexOf(earlier[id].code) >= 0; });
+    if (allRight && !fromReadings) return null;
     var args = part.ecf.args.map(function (name) { return name in known ? known[name] : part.ecf.values[name]; });
     var value = formula(part.ecf).apply(null, args);
     if (!isFinite(value)) return null;
@@ -519,6 +529,10 @@
     own.value = part.direction === "signed" ? value : Math.abs(value);
     own.mistakes = []; own.gNineEight = null; own.roundedPartWay = [];
     var result = mark(own, answer);
+    if (result.code === "correct" && allRight) {
+      return outcome("correct", "Correct: it follows from your readings of the graph.", { si: result.si });
+    }
+    if (allRight) return null;
     if (result.code === "correct") {
       return outcome("ecf", "Follows correctly from your answer to (" + uses.join("), (") +
         "): error carried forward (ecf), so this part earns its marks.", { si: result.si });
@@ -567,12 +581,25 @@
   // Every checked attempt, for the "Your practice" page (versioned: a later build reads it).
   var PROGRESS = "dynamics-progress-v1";
 
-  function recordAttempt(attempt) {
+  /* Keep an attempt. A self-marked part is scored by the ticks that follow its Check: those
+   * update the question's latest attempt (same variant) instead of adding another. */
+  function recordAttempt(attempt, retick) {
     try {
       var progress = JSON.parse(localStorage.getItem(PROGRESS)) || { version: 1, attempts: [] };
       // Another format under this key (a later build's): leave it whole, never append to it.
       if (progress.version !== 1 || !Array.isArray(progress.attempts)) return;
-      progress.attempts.push(attempt);
+      var list = progress.attempts, last = -1;
+      for (var i = list.length - 1; i >= 0 && retick; i--) {
+        if (list[i].question === attempt.question) { last = i; break; }
+      }
+      if (last >= 0 && list[last].variant === attempt.variant) {
+        attempt.at = list[last].at;
+        list[last] = attempt;
+      } else if (!retick) {
+        list.push(attempt);
+      } else {
+        return; // ticks on a question never checked in this browser: nothing to update
+      }
       localStorage.setItem(PROGRESS, JSON.stringify(progress));
     } catch (e) { /* private mode: progress is not kept */ }
   }
@@ -669,6 +696,7 @@
       }
     }
 
+    /* record: a Check (a new attempt); "ticks": a marking point ticked (updates it). */
     function check(record) {
       var marked = markQuestion(data, answers());
       data.parts.forEach(function (part) {
@@ -695,7 +723,7 @@
           question: key, type: form.getAttribute("data-type"), variant: Number(form.getAttribute("data-variant")),
           earned: marked.marks.earned, available: marked.marks.available, at: Date.now(),
           mistakes: data.parts.map(function (p) { return marked.results[p.id].mistake; }).filter(Boolean)
-        });
+        }, record === "ticks");
       }
     }
 
@@ -741,6 +769,11 @@
     function show(index, variant) {
       data = { id: data.id, parts: variant.parts, marks: variant.marks };
       section.querySelector(".q-text").innerHTML = variant.text;
+      var graph = section.querySelector("img.q-graph");
+      if (graph && variant.graph) { // its own graph, drawn from its numbers
+        graph.src = contentRoot() + "_static/questions/" + variant.graph.src;
+        graph.alt = variant.graph.alt;
+      }
       var scheme = worked && worked.querySelector(".q-scheme");
       if (scheme) scheme.outerHTML = variant.scheme.replace("<ul>", '<ul class="' + scheme.className + '">');
       form.setAttribute("data-variant", String(index));
@@ -753,7 +786,7 @@
     form.addEventListener("submit", function (event) { event.preventDefault(); check(true); });
     form.addEventListener("input", function () { save(storeId(), { answers: answers(), checked: !!(load(storeId()) || {}).checked }); });
     form.addEventListener("change", function (event) { // a ticked marking point re-scores at once
-      if (event.target.classList.contains("q-tick")) check(false);
+      if (event.target.classList.contains("q-tick")) check("ticks");
     });
     form.addEventListener("reset", function (event) {
       event.preventDefault();

@@ -1,0 +1,87 @@
+"""Error carried forward on every dependent part of the bank, in Chromium: for each part
+whose formula uses earlier answers, the student gets those earlier parts wrong, works the
+part from their own wrong values, and the page gives it full marks as "ecf"."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+from browser import open_browser, page_without_errors, serve_site
+
+from physics_figures import bank
+from physics_figures.notation import format_number, plain_number
+
+pytestmark = [pytest.mark.site, pytest.mark.browser]
+
+#: Wrong by these factors, in order, until one is neither right nor a named mistake.
+WRONG_FACTORS = (1.25, 1.4, 0.7, 1.6)
+
+
+def _dependent_parts():
+    for template in bank.TEMPLATES.values():
+        question = template.variant(0)
+        for index, part in enumerate(question.parts):
+            if part.ecf is not None:
+                yield pytest.param(template.key, index, id=f"{template.key}-{question.part_ids[index]}")
+
+
+DEPENDENT = list(_dependent_parts())
+
+
+@pytest.fixture(scope="module")
+def site(site_dir):
+    pages = {}  # template key -> the page that places it
+    for html in sorted(site_dir.rglob("*.html")):
+        for key in re.findall(r'<form class="q-form" data-question="([^"]+)"', html.read_text(encoding="utf-8")):
+            pages.setdefault(key, "/" + html.relative_to(site_dir).as_posix())
+    with serve_site(site_dir) as base_url, open_browser() as browser:
+        yield browser, base_url, pages
+
+
+def _wrong(part, nth: int) -> float:
+    """A value for an earlier part that the marker takes as wrong and as no named mistake; the
+    nth part used is wrong by another factor (scaled alike, an angle from two would be right)."""
+    for factor in WRONG_FACTORS[nth:] + WRONG_FACTORS[:nth]:
+        value = part.value * factor + (4 * part.tolerance if part.kind == "graph" else 0)
+        if not part._accepted(value) and not part._named(abs(value) if part.direction != "signed" else value):
+            return value
+    raise AssertionError(f"{part.prompt}: no wrong value to carry")
+
+
+def _typed(value: float) -> str:
+    return plain_number(format_number(value, 4))
+
+
+def _fill(form, part_id: str, part, value: float, direction: str) -> None:
+    box = form.locator(f'[data-part="{part_id}"]')
+    box.locator("input.q-value").fill(_typed(value if part.direction == "signed" else abs(value)))
+    box.locator("input.q-unit").fill(part.unit)
+    if part.direction == "choice":
+        box.locator("select.q-direction").select_option(direction)
+
+
+@pytest.mark.parametrize(("key", "index"), DEPENDENT)
+def test_a_part_worked_from_wrong_earlier_answers_earns_its_marks_as_ecf(site, key, index):
+    browser, base_url, pages = site
+    assert key in pages, f"no page places {key}"
+    question = bank.TEMPLATES[key].variant(0)
+    target = question.parts[index]
+    answers = {pid: p.value for pid, p in zip(question.part_ids, question.parts, strict=True)}
+    for nth, used in enumerate(target.ecf.uses):
+        answers[used] = _wrong(question.parts[question.part_ids.index(used)], nth)
+    carried = target.ecf.evaluate(answers)
+    with page_without_errors(browser, base_url + pages[key]) as page:
+        form = page.locator(f'form.q-form[data-question="{key}"]')
+        assert form.get_attribute("data-variant") == "0"
+        for pid, part in zip(question.part_ids[:index], question.parts[:index], strict=True):
+            if part.kind in ("numeric", "graph"):
+                _fill(form, pid, part, answers[pid], part.answer_direction)
+        _fill(form, question.part_ids[index], target, carried, target.answer_direction)
+        form.locator("button.q-check").click()
+        box = form.locator(f'[data-part="{question.part_ids[index]}"]')
+        for used in target.ecf.uses:  # the earlier parts really were wrong
+            assert form.locator(f'[data-part="{used}"] .q-feedback').get_attribute("data-code") != "correct"
+        assert box.locator(".q-feedback").get_attribute("data-code") == "ecf", box.locator(".q-feedback").inner_text()
+        earned, available = re.match(r"(\d+)/(\d+) marks? \(ecf\)", box.locator(".q-part-marks").inner_text()).groups()
+        assert earned == available != "0"

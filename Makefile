@@ -52,8 +52,11 @@ html: venv node_modules/.package-lock.json
 	@echo ">>> building the HTML site (pages are executed; cached pages are reused)"
 	$(JB_BUILD)
 
-# The site links the teachers' PDFs, so the book is the HTML plus the PDFs.
+# The site links the teachers' PDFs and a zip of itself (to read from disk, offline), so
+# the book is the HTML, then the PDFs, then the zip of both.
 book: html pdf
+	@echo ">>> packing the site into a zip to open from disk"
+	$(BIN)/python scripts/zip_site.py $(SITE)
 	@echo ">>> done: open $(CURDIR)/$(SITE)/index.html  (or run: make serve)"
 
 test: venv

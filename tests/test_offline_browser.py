@@ -151,3 +151,52 @@ def test_the_precache_lists_every_page_and_what_pages_load_but_no_downloads(site
     sw = (site_dir / offline.SERVICE_WORKER).read_text(encoding="utf-8")
     assert all(f'"{path}"' in sw for path in listed)
     assert offline.precache_size(site_dir) <= 2_000_000  # CLARIFICATIONS: at most 2 MB gzip
+
+
+@pytest.fixture(scope="module")
+def unzipped(site_dir, tmp_path_factory) -> Path:
+    """The zip make book writes, unzipped as a student would (scripts/zip_site.py)."""
+    zipped = site_dir / "download" / "dynamics.zip"
+    assert zipped.is_file(), "no zip of the site: make book writes it (scripts/zip_site.py)"
+    folder = tmp_path_factory.mktemp("copy")
+    shutil.unpack_archive(zipped, folder)
+    return folder / "dynamics"
+
+
+def test_the_zip_opens_from_disk_with_figures_questions_and_search(browser, unzipped):
+    context = browser.new_context()
+    errors: list[str] = []
+    context.on("weberror", lambda error: errors.append(str(error.error)))
+    page = context.new_page()
+    for path in site_pages(unzipped):
+        page.goto((unzipped / path).as_uri(), wait_until="load")
+        if "http-equiv=\"refresh\"" in (unzipped / path).read_text(encoding="utf-8"):  # the root's stub
+            page.wait_for_url((unzipped / INTRO).as_uri())
+            page.wait_for_load_state("load")
+        assert page.title(), f"{path}: no page from disk"
+        shown = page.evaluate(IMAGES_SHOWN)
+        assert all(result is True for result in shown), f"{path}: images not shown from disk: {shown}"
+
+    key = "quick-check-1"
+    page.goto((unzipped / "book/exam/quick-check.html").as_uri())
+    form = page.locator(f'form.q-form[data-question="{key}"]')
+    form.locator('[data-part="a"] input.q-value').fill("15")
+    form.locator('[data-part="a"] input.q-unit').fill("N s")
+    form.locator('[data-part="b"] input.q-value').fill("7.5")
+    form.locator('[data-part="b"] input.q-unit').fill("m/s")
+    form.locator("button.q-check").click()
+    assert form.locator(".q-score").inner_text() == "4/4 marks"
+    form.locator("button.q-new").click()  # the variants come by <script>, which file:// allows
+    page.wait_for_function(f"document.querySelector('form[data-question=\"{key}\"]').dataset.variant !== '0'")
+
+    page.goto((unzipped / "search.html").as_uri() + "?q=terminal+velocity")
+    page.wait_for_function(
+        "[...document.querySelectorAll('#search-results ul.search > li')].length >= 3 && "
+        "[...document.querySelectorAll('#search-results ul.search > li')].slice(0, 3)"
+        ".every(li => li.querySelector('.context') && li.querySelector('.context').textContent.trim())",
+        timeout=20_000)
+    first = page.locator("#search-results ul.search > li").first
+    assert "friction-drag-terminal-velocity" in first.locator("a").first.get_attribute("href")
+    assert "terminal" in first.locator(".context").inner_text().lower()
+    context.close()
+    assert not errors, errors

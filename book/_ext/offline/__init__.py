@@ -7,6 +7,10 @@ content hashes, so a new build (any changed byte) is a new cache.
   notice with a Reload button that activates it and reloads the page.
 * ``manifest.webmanifest`` and two icons: a phone can install the book to its home screen.
 * Registration is skipped on ``file://`` (a copy opened from disk has no service worker).
+* ``_static/search-texts.js``: each page's words, for a copy opened from disk. Sphinx's
+  search fetches a page to show a snippet of it, and a browser refuses fetch() of a local
+  file; static/file-search.js (search page only, file:// only) answers those fetches from
+  this script, which a <script> element may load.
 
 What is precached is what the pages reference (``href``/``src``, a stylesheet's ``url()``),
 the question variants and graphs loaded on New numbers, and the search index: not the PDFs
@@ -21,6 +25,8 @@ import hashlib
 import json
 import posixpath
 import re
+from html import escape
+from html.parser import HTMLParser
 from pathlib import Path
 
 from sphinx.application import Sphinx
@@ -125,6 +131,65 @@ def write_icons(site: Path) -> None:
         figure.savefig(target, dpi=size, facecolor=THEME_COLOUR, metadata={"Software": None})
 
 
+SEARCH_TEXTS = "_static/search-texts.js"
+
+
+#: Elements whose content is no words of the page: maths drawings, scripts, buttons.
+SKIPPED = frozenset({"script", "style", "svg", "button"})
+VOID = frozenset({"area", "base", "br", "col", "embed", "hr", "img", "input", "link", "meta", "source",
+                  "track", "wbr"})
+
+
+class _MainText(HTMLParser):
+    """A page's main content as search snippets need it: its words, and the sections (with
+    their ids, for a result that points into a page); no maths drawings, scripts or styles."""
+
+    def __init__(self):
+        super().__init__(convert_charrefs=True)
+        self.depth = 0  # how deep inside the main content (0: outside it)
+        self.skip_from: int | None = None  # the depth of the element being left out
+        self.out: list[str] = []
+
+    def handle_starttag(self, tag, attrs):
+        attributes = dict(attrs)
+        if self.depth == 0:
+            self.depth = int(tag == "main" or attributes.get("role") == "main")
+            return
+        if tag in VOID:
+            return
+        self.depth += 1
+        if self.skip_from is None and (tag in SKIPPED or "headerlink" in (attributes.get("class") or "")):
+            self.skip_from = self.depth
+        elif tag == "section" and self.skip_from is None:
+            self.out.append(f'<section id="{escape(attributes.get("id", ""))}">')
+
+    def handle_endtag(self, tag):
+        if self.depth == 0 or tag in VOID:
+            return
+        if self.skip_from == self.depth:
+            self.skip_from = None
+        elif tag == "section" and self.skip_from is None:
+            self.out.append("</section>")
+        self.depth -= 1
+
+    def handle_data(self, data):
+        if self.depth and self.skip_from is None and data.strip():
+            self.out.append(escape(" ".join(data.split())) + " ")
+
+
+def page_text(html: str) -> str:
+    """A page's main content, reduced to its words in its sections (see _MainText)."""
+    parser = _MainText()
+    parser.feed(html)
+    return '<div role="main">' + "".join(parser.out) + "</div>"
+
+
+def write_search_texts(site: Path) -> None:
+    texts = {page: page_text((site / page).read_text(encoding="utf-8")) for page in _pages(site)}
+    payload = json.dumps(texts, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
+    (site / SEARCH_TEXTS).write_text(f"window.SearchTexts = {payload};\n", encoding="utf-8")
+
+
 def _page_context(app: Sphinx, pagename, templatename, context, doctree) -> None:
     root = "../" * pagename.count("/")
     context["metatags"] = context.get("metatags", "") + (
@@ -138,6 +203,7 @@ def _build_finished(app: Sphinx, exception) -> None:
     site = Path(app.outdir)
     write_icons(site)
     write_manifest(site, app.config.html_title or app.config.project)
+    write_search_texts(site)
     write_service_worker(site)  # last: it hashes everything the other steps wrote
 
 

@@ -322,12 +322,29 @@ def _name_toggles(toctree):
     return toctree
 
 
+#: Scripts of the theme's extensions, and what a page's body must hold to need each.
+_CODE = re.compile(r'class="highlight')
+ONLY_WHERE_NEEDED = {
+    "clipboard.min.js": _CODE,
+    "copybutton.js": _CODE,
+    "design-tabs.js": re.compile(r"sd-tab-set"),
+    "togglebutton.js": re.compile(r'class="(?:[^"]*\s)?(?:toggle|dropdown)(?:\s[^"]*)?"'),
+}
+
+
 def _page_context(app: Sphinx, pagename: str, templatename: str, context: dict[str, Any], doctree) -> None:
     # Thebe runs code on a remote Binder kernel: not used here, and sphinx-thebe adds its
     # config script twice (a console error). Drop its scripts and stylesheet.
     context["script_files"] = [
         js for js in context.get("script_files", [])
         if "thebe" not in (js.filename or "").lower() and "THEBE" not in js.attributes.get("body", "")
+    ]
+    # Only the scripts a page needs: a copy button only where there is code to copy, tabs
+    # only where there are tabs, the toggle script only where something toggles.
+    body = context.get("body", "")
+    context["script_files"] = [
+        js for js in context["script_files"]
+        if not (need := ONLY_WHERE_NEEDED.get(Path((js.filename or "").split("?")[0]).name)) or need.search(body)
     ]
     stylesheets = [css for css in context.get("css_files", []) if "thebe" not in css.filename]
     # One stylesheet for the screen: the theme's, then every extension's, in their order.

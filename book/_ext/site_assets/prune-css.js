@@ -14,7 +14,8 @@ const SAFELIST = {
   standard: [/^q-/, /^pp-/, /^ex-/, /^offline-/,
 
   ],
-  greedy: [/data-theme/, /data-mode/, /prefers-color-scheme/],
+  // a selector of pseudo-classes alone (the theme's :focus-visible ring) names nothing to find
+  greedy: [/data-theme/, /data-mode/, /prefers-color-scheme/, /focus/],
 };
 
 function pages(folder, out) {

@@ -20,7 +20,19 @@ from ..models import (
     weight,
 )
 from ..notation import format_number as n
-from ..questions import Ecf, Given, Graph, GraphPart, Mark, Mistake, Part, Question, Step
+from ..questions import (
+    ChoicePart,
+    Ecf,
+    Given,
+    Graph,
+    GraphPart,
+    Mark,
+    Mistake,
+    Part,
+    Question,
+    Step,
+    choices_in_order,
+)
 from ..variants import Draw, Template
 from ._common import M_S as _M_S
 from ._common import N_S as _N_S
@@ -357,6 +369,43 @@ def ball_bounce_momentum_time(before: float = 2.4, after: float = 1.6, arrives: 
     )
 
 
+
+def bounce_force_choice(mass_g: float = 60.0, speed_in: float = 12.0, speed_out: float = 8.0,
+                        contact_ms: float = 25.0) -> Question:
+    """Paper 1 style: average force on a ball that bounces straight back. Wrong options are the
+    notes' mistakes: speed change not velocity change, final momentum only, ms not converted."""
+    if speed_out >= speed_in:
+        raise ValueError(f"speed_out must be less than speed_in={speed_in!r} m s^-1: a ball cannot bounce "
+                         f"back faster than it arrived (got speed_out={speed_out!r})")
+    mass, contact = mass_g / 1000, contact_ms / 1000
+    dp = change_in_momentum(mass, -speed_in, speed_out)
+    key = average_force(dp, contact)
+    options, answer = choices_in_order(key, {
+        "speed change not velocity change": (
+            average_force(mass * (speed_in - speed_out), contact),
+            ("You used the change in speed, m(u − v). The ball reverses, so its velocity changes by "
+             "u + v: Δp = m(u + v).")),
+        "final momentum only": (
+            average_force(momentum(mass, speed_out), contact),
+            "You used only the momentum after the bounce. Δp = final − initial momentum, with signs."),
+        "grams not converted": (
+            average_force(change_in_momentum(mass_g, -speed_in, speed_out), contact),
+            f"You used the mass in g. Convert to kg: {n(mass, 2)} kg."),
+    }, sig_figs=2, unit="N")
+    return Question(
+        key="bounce-force-choice",
+        text=(f"A ball of mass {n(mass_g, 2)} g hits a wall at right angles at {n(speed_in, 2)} {PER_S} and "
+              f"rebounds straight back at {n(speed_out, 2)} {PER_S}. It is in contact with the wall for "
+              f"{n(contact_ms, 2)} ms."),
+        givens=(Given("mass", mass_g, "g", 2), Given("speed in", speed_in, "m s^-1", 2),
+                Given("speed out", speed_out, "m s^-1", 2), Given("contact time", contact_ms, "ms", 2)),
+        parts=(ChoicePart("What is the magnitude of the average force exerted on the ball by the wall?",
+                          options, answer,
+                          revisit="F = Δp / Δt, with Δp = m(u + v) for a ball that reverses, in kg and s."),),
+        mark_scheme=(Mark(f"{answer}: F = {n(mass, 2)} × ({n(speed_in, 2)} + {n(speed_out, 2)}) / "
+                          f"{n(contact, 2)} = {n(key, 2)} N", "B1"),),
+    )
+
 TEMPLATES = (
     Template("quick-check-1", "force-momentum", ("numeric",), "Quick check 1",
              trolley_pushed_from_rest,
@@ -384,4 +433,8 @@ TEMPLATES = (
              "A bounce: momentum–time graph", ball_bounce_momentum_time,
              {"before": Draw(2.4, 1.5, 2.9, 0.1), "after": Draw(1.6, 0.5, 2.0, 0.1),
               "arrives": Draw(0.02, 0.01, 0.04, 0.002), "contact": Draw(0.03, 0.01, 0.05, 0.002)}),
+    Template("bounce-force-choice", "force-momentum", ("mcq",), "Average force in a bounce",
+             bounce_force_choice,
+             {"mass_g": Draw(60.0, 40.0, 200.0, 10.0), "speed_in": Draw(12.0, 8.0, 25.0, 1.0),
+              "speed_out": Draw(8.0, 3.0, 15.0, 1.0), "contact_ms": Draw(25.0, 10.0, 50.0, 5.0)}),
 )

@@ -18,7 +18,19 @@ from ..models import (
     velocity_from_momentum,
 )
 from ..notation import format_number as n
-from ..questions import Ecf, Given, Graph, GraphPart, Mark, Mistake, Part, Question, Step
+from ..questions import (
+    ChoicePart,
+    Ecf,
+    Given,
+    Graph,
+    GraphPart,
+    Mark,
+    Mistake,
+    Part,
+    Question,
+    Step,
+    choices_in_order,
+)
 from ..variants import Draw, Template
 from ._common import M_S, N_S, PER_S, reading, reading_rule, w
 
@@ -182,6 +194,41 @@ def trolley_collision_momentum_time(before: float = 1.2, after: float = 0.4, mas
     )
 
 
+
+def stick_choice(m1: float = 3.0, u1: float = 4.0, m2: float = 2.0, speed2: float = 1.0) -> Question:
+    """Paper 1 style: head-on, stick together. Wrong options are the notes' mistakes: the sign of
+    the oncoming body left out, only the first body's mass divided by, the second body ignored."""
+    if m1 * u1 <= m2 * speed2:
+        raise ValueError(f"speed2 must leave the pair moving on in the first body's direction "
+                         f"(m1 u1 > m2 speed2; got m1={m1!r}, u1={u1!r}, m2={m2!r}, speed2={speed2!r})")
+    key = stick_together(m1, u1, m2, -speed2)
+    options, answer = choices_in_order(key, {
+        "sign of the oncoming body left out": (
+            stick_together(m1, u1, m2, speed2),
+            ("The second body moves the other way, so its momentum is negative. Momentum is a vector: "
+             "give each velocity a sign.")),
+        "divided by one mass": (
+            (momentum(m1, u1) - momentum(m2, speed2)) / m1,
+            ("The bodies move off together, so divide the total momentum by the total mass, "
+             "m₁ + m₂.")),
+        "second body ignored": (
+            stick_together(m1, u1, m2, 0.0),
+            "You left out the second body's momentum. It is moving, the other way."),
+    }, sig_figs=2, unit=PER_S)
+    return Question(
+        key="stick-choice",
+        text=(f"A trolley of mass {n(m1, 2)} kg moving at {n(u1, 2)} {PER_S} collides head-on with a "
+              f"trolley of mass {n(m2, 2)} kg moving towards it at {n(speed2, 2)} {PER_S}. "
+              "The trolleys stick together."),
+        givens=(Given("m1", m1, "kg", 2), Given("u1", u1, "m s^-1", 2), Given("m2", m2, "kg", 2),
+                Given("speed 2", speed2, "m s^-1", 2)),
+        parts=(ChoicePart("What is their speed just after the collision?", options, answer,
+                          revisit="m₁u₁ + m₂u₂ = (m₁ + m₂)v, with a minus sign for the trolley moving "
+                                  "the other way."),),
+        mark_scheme=(Mark(f"{answer}: v = ({n(m1, 2)} × {n(u1, 2)} − {n(m2, 2)} × {n(speed2, 2)}) / "
+                          f"({n(m1, 2)} + {n(m2, 2)}) = {n(key, 2)} {PER_S}", "B1"),),
+    )
+
 TEMPLATES = (
     Template("quick-check-2", "momentum-line", ("numeric",), "Quick check 2", rifle_recoil,
              {"rifle": Draw(4.0, 3.0, 6.0, 0.5), "bullet": Draw(0.010, 0.008, 0.020, 0.001),
@@ -195,4 +242,7 @@ TEMPLATES = (
              {"before": Draw(1.2, 0.8, 1.4, 0.05), "after": Draw(0.4, 0.1, 0.6, 0.05),
               "mass_b": Draw(0.50, 0.20, 1.00, 0.05), "hits": Draw(1.0, 0.8, 1.5, 0.1),
               "contact": Draw(0.3, 0.1, 0.5, 0.1)}),
+    Template("stick-choice", "momentum-line", ("mcq",), "Trolleys stick: which speed?", stick_choice,
+             {"m1": Draw(3.0, 2.0, 5.0, 0.5), "u1": Draw(4.0, 3.0, 6.0, 0.5),
+              "m2": Draw(2.0, 0.5, 2.0, 0.5), "speed2": Draw(1.0, 0.5, 2.0, 0.5)}),
 )

@@ -43,6 +43,7 @@ NOT_PRECACHED = re.compile(r"^pdf/|\.ttf$|\.map$|\.zip$")
 ON_DEMAND = ("_static/questions/", "searchindex.js")
 _REFERENCE = re.compile(r'(?:src|href)="([^"#?]+)')
 _CSS_URL = re.compile(r"""url\(\s*["']?([^"')#?]+)""")
+_NAMED = re.compile(r"""["']([\w@./-]+\.[a-z0-9]{2,5})["']""")
 
 
 def _pages(site: Path) -> list[str]:
@@ -80,7 +81,39 @@ def referenced_files(site: Path) -> set[str]:
         path = site / name
         found.update(p.relative_to(site).as_posix() for p in (path.rglob("*") if path.is_dir() else [path])
                      if p.is_file())
+    # a script (or the web app manifest) that names a file in a string loads it
+    every = {p.relative_to(site).as_posix() for p in site.rglob("*") if p.is_file()}
+    for named_by in [f for f in found if f.endswith((".js", ".webmanifest"))]:
+        for name in _NAMED.findall((site / named_by).read_text(encoding="utf-8", errors="replace")):
+            name = re.sub(r"^(\.{0,2}/)+", "", name)
+            found.update(f for f in every if f == name or f.endswith("/" + name))
+    # the licence that comes with a script goes where the script goes
+    found.update(f for f in every if f.endswith(".LICENSE.txt") and f.removesuffix(".LICENSE.txt") in found)
     return found
+
+
+#: Always kept: what a server or a crawler asks for by name, and the offline machinery.
+ENTRY_POINTS = ("index.html", "robots.txt", "objects.inv", ".buildinfo", SERVICE_WORKER, MANIFEST,
+                *ICONS.values(), "download/dynamics.zip")
+
+
+def unreferenced_files(site: Path) -> list[str]:
+    """Files of the site that nothing names (see referenced_files) and no server asks for."""
+    keep = referenced_files(site) | set(ENTRY_POINTS)
+    return sorted(f for p in site.rglob("*") if p.is_file() and (f := p.relative_to(site).as_posix()) not in keep)
+
+
+def remove_unreferenced(site: Path) -> list[str]:
+    """Delete every file nothing names: source maps, unused locales and theme images,
+    fontawesome.js (the icons come from a subset font), stylesheets already bundled,
+    figures of an older build. Sphinx copies its static files again on the next build."""
+    removed = unreferenced_files(site)
+    for name in removed:
+        (site / name).unlink()
+    for folder in sorted((p for p in site.rglob("*") if p.is_dir()), key=lambda p: -len(p.parts)):
+        if not any(folder.iterdir()):
+            folder.rmdir()
+    return removed
 
 
 def precache_list(site: Path) -> list[tuple[str, str]]:
@@ -204,6 +237,7 @@ def _build_finished(app: Sphinx, exception) -> None:
     write_icons(site)
     write_manifest(site, app.config.html_title or app.config.project)
     write_search_texts(site)
+    remove_unreferenced(site)
     write_service_worker(site)  # last: it hashes everything the other steps wrote
 
 

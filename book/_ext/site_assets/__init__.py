@@ -260,6 +260,17 @@ def write_bundle(outdir: Path, name: str, stylesheets: list[str]) -> None:
     target.write_text("\n".join(parts), encoding="utf-8")
 
 
+def bundle_registry(outdir: Path) -> Path:
+    """Which stylesheets make each bundle, kept between builds beside the site (not in it:
+    no page loads it)."""
+    return outdir.parent / f"{outdir.name}-css-bundles.json"
+
+
+def unpruned_bundle(outdir: Path, name: str) -> Path:
+    """Where a bundle is kept as written, before pruning: beside the site, not in it."""
+    return outdir.parent / f"{outdir.name}-css-unpruned" / Path(name).name
+
+
 BUNDLE_LINK = re.compile(rf"_static/{ASSETS}/bundle-[0-9a-f]{{12}}\.css")
 
 
@@ -446,9 +457,9 @@ def _build_finished(app: Sphinx, exception) -> None:
         return
     write_icon_font(app)
     # Rewrite every bundle any page links (also those of pages not written this time:
-    # a stylesheet may have changed), listed in bundles.json between builds.
+    # a stylesheet may have changed), listed between builds beside the site (bundle_registry).
     outdir = Path(app.outdir)
-    registry = outdir / "_static" / ASSETS / "bundles.json"
+    registry = bundle_registry(outdir)
     bundles = json.loads(registry.read_text()) if registry.exists() else {}
     bundles.update(app._site_bundles)
     # a bundle no page links any more (an older build's) is dropped, file and all
@@ -458,6 +469,10 @@ def _build_finished(app: Sphinx, exception) -> None:
         del bundles[name]
     for name, stylesheets in bundles.items():
         write_bundle(outdir, name, stylesheets)
+        # the bundle before pruning, beside the site (tests/test_css_pruning.py compares them)
+        unpruned = unpruned_bundle(outdir, name)
+        unpruned.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(outdir / name, unpruned)
     prune_bundles(app, outdir, sorted(bundles))
     registry.write_text(json.dumps(bundles, indent=1, sort_keys=True))
     write_root_redirect(app)

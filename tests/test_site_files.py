@@ -1,0 +1,44 @@
+"""Every file of the built site is one something uses: a page names it (href, src), a
+stylesheet names it (url()), a script or the web app manifest names it in a string, the
+service worker keeps it, or a server is asked for it by name (index.html, robots.txt, the
+service worker...). Source maps, unused locales, fontawesome.js and stylesheets already
+bundled are removed by the build (book/_ext/offline)."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+
+pytestmark = pytest.mark.site
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _offline():
+    sys.path.insert(0, str(ROOT / "book" / "_ext"))
+    import offline
+
+    return offline
+
+
+def test_every_file_of_the_site_is_referenced(site_dir):
+    unused = _offline().unreferenced_files(site_dir)
+    assert not unused, f"{len(unused)} file(s) that nothing references: {unused[:20]}"
+
+
+def test_no_source_map_locale_or_unused_icon_script_is_shipped(site_dir):
+    files = [p.relative_to(site_dir).as_posix() for p in site_dir.rglob("*") if p.is_file()]
+    assert not [f for f in files if f.endswith((".map", "fontawesome.js")) or "/locales/" in f]
+
+
+def test_a_file_nothing_names_is_found(site_dir, tmp_path):
+    """The check can fail: a stray file in a copy of the site is reported, by name."""
+    offline = _offline()
+    stray = tmp_path / "site" / "_static" / "stray.js"
+    stray.parent.mkdir(parents=True)
+    (tmp_path / "site" / "index.html").write_text('<script src="_static/used.js"></script>', encoding="utf-8")
+    (tmp_path / "site" / "_static" / "used.js").write_text("1", encoding="utf-8")
+    stray.write_text("2", encoding="utf-8")
+    assert offline.unreferenced_files(tmp_path / "site") == ["_static/stray.js"]

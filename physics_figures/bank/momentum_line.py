@@ -229,6 +229,66 @@ def stick_choice(m1: float = 3.0, u1: float = 4.0, m2: float = 2.0, speed2: floa
                           f"({n(m1, 2)} + {n(m2, 2)}) = {n(key, 2)} {PER_S}", "B1"),),
     )
 
+mass_a_symbol, mass_b_symbol_spring, speed_b_symbol = sympy.symbols("mass_a mass_b speed_b")
+
+
+def trolleys_spring_apart(mass_a: float = 1.5, mass_b: float = 0.50, speed_b: float = 1.2) -> Question:
+    """An explosion from rest: a compressed spring pushes two trolleys apart. The momenta are
+    equal and opposite (total zero); the kinetic energy comes from the spring (notes:
+    explosions, and kinetic energy is not conserved)."""
+    v_a = explosion_from_rest(mass_b, mass_a, speed_b)  # signed: B's way is positive, so A's is negative
+    energy = total_kinetic_energy((mass_a, mass_b), (v_a, speed_b))
+    a_, b_, u = n(mass_a, 2), n(mass_b, 2), n(speed_b, 2)
+    directions = ("the same way as B", "the opposite way to B")
+    return Question(
+        key="practice-spring-apart",
+        text=(f"Trolley A, of mass {a_} kg, and trolley B, of mass {b_} kg, are at rest on a level track "
+              "with a compressed spring between them. The spring is released and the trolleys fly apart; "
+              f"B moves off at {u} {PER_S}.\n\n"
+              "(a) Calculate the velocity of A and give its direction.\n\n"
+              "(b) Calculate the energy the spring gave the trolleys as kinetic energy."),
+        givens=(Given("mass of A", mass_a, "kg", 2), Given("mass of B", mass_b, "kg", 2),
+                Given("speed of B", speed_b, "m s^-1", 2)),
+        parts=(
+            Part("velocity of A", abs(v_a), "m s^-1", "velocity", units=M_S, shown_sig_figs=2,
+                 direction="choice", choices=directions, answer_direction="the opposite way to B",
+                 direction_hint="The total momentum stays zero: A's momentum must cancel B's, so A moves "
+                                "the opposite way.",
+                 revisit="The total momentum is zero before, so it is zero after: A's momentum + B's "
+                         "momentum = 0.",
+                 mistakes=(
+                     Mistake("same speed as B", speed_b,
+                             "Equal momenta, not equal speeds: the heavier trolley moves off more slowly."),
+                     Mistake("masses the wrong way up", speed_b * mass_a / mass_b,
+                             f"The masses are the wrong way up: {a_} v = {b_} × {u}, so v = {b_} × {u} / {a_}."),
+                     Mistake("B's momentum given as a speed", momentum(mass_b, speed_b),
+                             f"{b_} × {u} is B's momentum in N s. Divide it by A's mass for A's speed."),
+                 )),
+            Part("kinetic energy the spring gave", energy, "J", "energy", shown_sig_figs=2,
+                 ecf=Ecf(mass_a_symbol * a_answer**2 / 2 + mass_b_symbol_spring * speed_b_symbol**2 / 2,
+                         {"mass_a": mass_a, "mass_b": mass_b, "speed_b": speed_b}),
+                 revisit="Both trolleys start at rest: the spring's energy is the kinetic energy of both, "
+                         "½mv² for A plus ½mv² for B.",
+                 mistakes=(
+                     Mistake("only B's kinetic energy", kinetic_energy(mass_b, speed_b),
+                             "That is B's kinetic energy only. A moves too: add ½mv² for each trolley."),
+                     Mistake("only A's kinetic energy", kinetic_energy(mass_a, v_a),
+                             "That is A's kinetic energy only. B moves too: add ½mv² for each trolley."),
+                     Mistake("kinetic energy from the total momentum", 0.0,
+                             "The total momentum is zero, but kinetic energy is never negative: each "
+                             "trolley has ½mv², and the energies add."),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"Total momentum zero: {a_} v<sub>A</sub> + {b_} × {u} = 0", "C1", "a"),
+            Mark(f"v<sub>A</sub> = {n(v_a, 2)} {PER_S}: {n(abs(v_a), 2)} {PER_S}", "A1", "a"),
+            Mark("the opposite way to B", "B1", "a"),
+            Mark(f"E<sub>k</sub> = ½ × {a_} × {w(abs(v_a))}<sup>2</sup> + ½ × {b_} × {u}<sup>2</sup>", "C1", "b"),
+            Mark(f"= {n(energy, 2)} J", "A1", "b"),
+        ),
+    )
+
+
 TEMPLATES = (
     Template("quick-check-2", "momentum-line", ("numeric",), "Quick check 2", rifle_recoil,
              {"rifle": Draw(4.0, 3.0, 6.0, 0.5), "bullet": Draw(0.010, 0.008, 0.020, 0.001),
@@ -237,6 +297,10 @@ TEMPLATES = (
              trolleys_stick,
              {"m1": Draw(2.0, 1.0, 4.0, 0.5), "u1": Draw(3.0, 1.0, 5.0, 0.5),
               "m2": Draw(1.0, 0.5, 3.0, 0.5), "speed2": Draw(1.5, 0.5, 4.0, 0.5)}),
+    Template("practice-spring-apart", "momentum-line", ("numeric",), "Trolleys pushed apart by a spring",
+             trolleys_spring_apart,
+             {"mass_a": Draw(1.5, 0.5, 3.0, 0.1), "mass_b": Draw(0.50, 0.20, 1.50, 0.05),
+              "speed_b": Draw(1.2, 0.5, 3.0, 0.1)}),
     Template("graph-trolley-collision", "momentum-line", ("graph", "numeric"),
              "A collision: momentum–time graph", trolley_collision_momentum_time,
              {"before": Draw(1.2, 0.8, 1.4, 0.05), "after": Draw(0.4, 0.1, 0.6, 0.05),

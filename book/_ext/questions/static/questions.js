@@ -718,7 +718,13 @@
       section.dispatchEvent(new CustomEvent("q-checked", { bubbles: true,
         detail: { question: data.id, earned: marked.marks.earned, available: marked.marks.available } }));
       save(storeId(), { answers: answers(), checked: true });
-      if (record && key) {
+      // A Check with nothing written is no attempt: it is not kept.
+      var tried = data.parts.some(function (part) {
+        var a = answerOf(part);
+        return part.kind === "mcq" ? !!a.choice : part.kind === "explain" ? !!a.text.trim() :
+          !!(a.value.trim() || a.unit.trim());
+      });
+      if (record && key && tried) {
         recordAttempt({
           question: key, type: form.getAttribute("data-type"), variant: Number(form.getAttribute("data-variant")),
           earned: marked.marks.earned, available: marked.marks.available, at: Date.now(),

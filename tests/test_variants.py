@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import shutil
 import subprocess
 from pathlib import Path
@@ -135,3 +136,15 @@ def test_a_template_names_a_real_type_and_kind():
         Template("x", "kinematics", ("numeric",), "x", build)
     with pytest.raises(ValueError, match=r"kinds must be some of"):
         Template("x", "drag", ("essay",), "x", build)
+
+
+@pytest.mark.parametrize(("template", "index"), VARIANTS)
+def test_feedback_hints_and_prompts_are_plain_text(template, index):
+    """The page shows feedback, hints and prompts as text (not HTML): a tag would show as
+    typed. Units there are written with Unicode superscripts (m s⁻²)."""
+    tag = re.compile(r"</?(sup|sub|em|strong)>")
+    for part in template.variant(index).parts:
+        texts = [part.prompt, getattr(part, "revisit", ""), getattr(part, "direction_hint", "")]
+        texts += [m.feedback for m in getattr(part, "mistakes", ())]
+        texts += [o.feedback for o in getattr(part, "options", ())]
+        assert not [text for text in texts if tag.search(text)], template.key

@@ -190,13 +190,11 @@ _MASS_WEIGHT = (
      "What are the SI base units of force?",
      "kg m s<sup>−2</sup>",
      (("kg m s<sup>−1</sup>", "units of momentum",
-       ("kg m s<sup>−1</sup> is the unit of momentum. Force is momentum ÷ time: kg m s<sup>−1</sup> ÷ s "
-       "= kg m s<sup>−2</sup>.")),
+       ("kg m s⁻¹ is the unit of momentum. Force is momentum ÷ time: kg m s⁻¹ ÷ s = kg m s⁻².")),
       ("N", "the newton taken as a base unit",
-       "The newton is a derived unit. The SI base units are kg, m and s: 1 N = 1 kg m s<sup>−2</sup>."),
+       "The newton is a derived unit. The SI base units are kg, m and s: 1 N = 1 kg m s⁻²."),
       ("kg m<sup>2</sup> s<sup>−2</sup>", "units of energy",
-       ("kg m<sup>2</sup> s<sup>−2</sup> is the joule, force × distance. Force = mass × acceleration: "
-       "kg × m s<sup>−2</sup>.")))),
+       ("kg m² s⁻² is the joule, force × distance. Force = mass × acceleration: kg × m s⁻².")))),
     ("A rocket carrying an astronaut accelerates upwards just after lift-off.",
      "Which statement about the astronaut's weight (the gravitational force on her) is correct?",
      "It is the same as before lift-off, mg.",

@@ -272,6 +272,7 @@ def main() -> None:
         ours = asyncio.run(page_bytes(site, pages))
         print(">>> marking time in Chromium", flush=True)
         marking = asyncio.run(marking_time(site))
+        offline = offline_sizes(site)
         scores = {}
         if not args.no_lighthouse:
             print(f">>> lighthouse on {len(pages)} pages (mobile)", flush=True)
@@ -286,12 +287,22 @@ def main() -> None:
         ours=ours,
         scores=scores,
         marking=marking,
+        offline=offline,
     )
     Path(args.output).write_text(report)
     print(report)
 
 
-def render(*, timings, executed, edited_page, edited_function, default, ours, scores, marking) -> str:
+def offline_sizes(site: Path) -> dict[str, int]:
+    """What the service worker keeps (gzip, as a server sends it) and the whole output folder."""
+    sys.path.insert(0, str(ROOT / "book" / "_ext"))
+    from offline import precache_list, precache_size
+
+    return {"precache": precache_size(site), "precache_files": len(precache_list(site)),
+            "output": sum(p.stat().st_size for p in site.rglob("*") if p.is_file())}
+
+
+def render(*, timings, executed, edited_page, edited_function, default, ours, scores, marking, offline) -> str:
     cold = timings["cold"]
     now = datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC")
     rows = [
@@ -355,6 +366,12 @@ def render(*, timings, executed, edited_page, edited_function, default, ours, sc
         (f"Heaviest page: {heaviest:,} bytes = {heaviest / default['bytes']:.2f} of the default page "
          "(goal: at most 0.30 until the offline issue lands, then 0.12; each page measured on a first "
          "visit, in a fresh browser context with service workers blocked)."),
+        "",
+        "## Offline",
+        "",
+        (f"The service worker keeps {offline['precache_files']} files, {offline['precache']:,} bytes gzip "
+         f"(goal: at most 2 MB). The output folder (before make book adds the PDFs and the zip): "
+         f"{offline['output']:,} bytes."),
         "",
         "## Practice",
         "",

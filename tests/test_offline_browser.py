@@ -17,6 +17,7 @@ import pytest
 from browser import open_browser, serve_site, site_pages
 
 from physics_figures import bank
+from physics_figures.variants import QUESTION_TYPES
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
@@ -59,6 +60,7 @@ def test_after_one_visit_the_whole_book_works_offline(browser, site_dir, subpath
     with serve_site(site_dir, prefix=subpath, cache_control=HOST_CACHE) as base_url:
         context, page, errors = _first_visit(browser, base_url)
         context.set_offline(True)
+        practised = set()  # the question types given new numbers offline
         for path in site_pages(site_dir):
             page.goto(f"{base_url}/{path}", wait_until="load")
             if "http-equiv=\"refresh\"" in (site_dir / path).read_text(encoding="utf-8"):  # the root's stub
@@ -67,6 +69,13 @@ def test_after_one_visit_the_whole_book_works_offline(browser, site_dir, subpath
             assert page.title(), f"{path}: no page offline"
             shown = page.evaluate(IMAGES_SHOWN)
             assert all(result is True for result in shown), f"{path}: images not shown offline: {shown}"
+            fresh = page.locator("form.q-form button.q-new")
+            if fresh.count():  # a question page: new numbers come from the cache
+                practised.add(page.locator("form.q-form").first.get_attribute("data-type"))
+                fresh.first.click()
+                page.wait_for_function("document.querySelector('form.q-form button.q-new').closest('form')"
+                                       ".dataset.variant !== '0'")
+        assert practised == set(QUESTION_TYPES), f"offline, no new numbers for {set(QUESTION_TYPES) - practised}"
 
         # a question marks, and new numbers come from the cache
         key = "graph-kick-force-time"

@@ -216,6 +216,53 @@
       "\". Use symbols such as kg, m, s, N, J, with powers written s^-1 or s-1: for example N s, kg m s^-1 or m/s.");
   }
 
+  /* Units are case-sensitive: "Kg", "M/S", "KG M S^-1" are not units, or not this one. The
+   * same text with its letters re-cased into symbols that give the expected dimensions
+   * (fewest letters changed, then the expected unit's own scale), or null. */
+  function recasedUnit(text, expectedDims, expectedScale) {
+    var t = normalise(text), runs = t.match(/[A-Za-z]+/g) || [];
+    if (!runs.length || runs.some(function (r) { return r.length > 6; })) return null;
+    function casings(run) { // every casing of the run that reads as unit symbols
+      var out = [];
+      for (var bits = 0; bits < (1 << run.length); bits++) {
+        var c = "", changed = 0;
+        for (var i = 0; i < run.length; i++) {
+          var ch = bits & (1 << i) ? run[i].toUpperCase() : run[i].toLowerCase();
+          if (ch !== run[i]) changed += 1;
+          c += ch;
+        }
+        if (UNIT_WORDS[c.toLowerCase()] !== undefined || segmentations(c).length) out.push({ text: c, changed: changed });
+      }
+      return out;
+    }
+    var candidates = [{ text: "", rest: t, changed: 0 }];
+    for (var r = 0; r < runs.length; r++) {
+      var options = casings(runs[r]), next = [];
+      if (!options.length) return null;
+      candidates.forEach(function (c) {
+        var at = c.rest.indexOf(runs[r]);
+        options.forEach(function (o) {
+          next.push({ text: c.text + c.rest.slice(0, at) + o.text, rest: c.rest.slice(at + runs[r].length),
+            changed: c.changed + o.changed });
+        });
+      });
+      if (next.length > 256) return null;
+      candidates = next;
+    }
+    var best = null;
+    candidates.forEach(function (c) {
+      if (!c.changed) return;
+      var full = c.text + c.rest, parsed = parseUnit(full);
+      if (!parsed.ok || parsed.empty) return;
+      var fits = parsed.readings.filter(function (reading) { return sameDims(reading.dims, expectedDims); });
+      if (!fits.length) return;
+      var exact = fits.some(function (reading) { return Math.abs(reading.scale / expectedScale - 1) < 1e-9; });
+      var rank = c.changed * 2 + (exact ? 0 : 1);
+      if (!best || rank < best.rank) best = { text: full, rank: rank };
+    });
+    return best && best.text;
+  }
+
   /* A value typed with its unit in the number box ("15 N s") is split in two. */
   function splitValueAndUnit(text) {
     var t = normalise(text);
@@ -295,9 +342,25 @@
     var number = parseNumber(valueText);
     if (!number.ok) return outcome("unreadable-number", number.message);
     var unit = parseUnit(unitText);
+    var expected = parseUnit(part.unit).readings[0];
+    // A unit in the wrong case: say so, and mark the answer as if it were written right.
+    var fits = unit.ok && unit.readings.some(function (r) { return sameDims(r.dims, expected.dims); });
+    var recased = !fits && !answer.recased && recasedUnit(unitText, expected.dims, expected.scale);
+    if (recased) {
+      if (recased.replace(/\s+/g, "") === normalise(part.unit).replace(/\s+/g, "")) recased = normalise(part.unit);
+      var asMeant = mark(part, { value: valueText, unit: recased, direction: direction, recased: true });
+      var caseNote = "Units are case-sensitive: " + superscript(normalise(unitText)) + " is not " +
+        (unit.ok ? "a unit of " + part.quantity : "a unit") + ". You probably meant " + superscript(recased) + ".";
+      if (asMeant.code === "correct") {
+        return outcome("unit-case", caseNote + " With that unit the answer is right.",
+          { si: asMeant.si, valueRight: true, meant: recased });
+      }
+      asMeant.message = caseNote + " " + asMeant.message;
+      asMeant.meant = recased;
+      return asMeant;
+    }
     if (!unit.ok) return outcome("unreadable-unit", unit.message);
 
-    var expected = parseUnit(part.unit).readings[0];
     var minSf = part.minSf || 2, checkSf = part.checkSf || 3;
     var mode = part.direction || "none";
     var quantity = part.quantity, units = superscript(part.units || part.unit);
@@ -435,10 +498,10 @@
 
   // Outcomes that earn every mark of the part but the A1: the value is right, but its unit
   // is missing or wrong, it has too few s.f., or it was rounded or used g = 9.8 part-way.
-  var ALL_BUT_A1 = ["missing-unit", "prefix", "angle-unit", "more-sf", "g-9.8", "rounded-part-way"];
+  var ALL_BUT_A1 = ["missing-unit", "prefix", "angle-unit", "unit-case", "more-sf", "g-9.8", "rounded-part-way"];
   var WRONG_WAY = ["direction", "sign", "missing-direction"];
   // An earlier answer this good is not an error, so nothing is carried forward from it.
-  var NOT_AN_ERROR = ["correct", "missing-unit", "more-sf", "prefix", "angle-unit"];
+  var NOT_AN_ERROR = ["correct", "missing-unit", "more-sf", "prefix", "angle-unit", "unit-case"];
 
   /* Which mark lines a part's outcome loses: "none", "all", "A1", "direction" or a count kept. */
   function lost(result, part) {
@@ -552,7 +615,7 @@
   }
 
   var engine = {
-    parseNumber: parseNumber, parseUnit: parseUnit, splitValueAndUnit: splitValueAndUnit,
+    parseNumber: parseNumber, parseUnit: parseUnit, splitValueAndUnit: splitValueAndUnit, recasedUnit: recasedUnit,
     mark: mark, markQuestion: markQuestion, award: award, superscript: superscript
   };
 

@@ -704,12 +704,28 @@
     return next;
   }
 
+  /* Feedback that names an idea links the section that teaches it (the build's list, once a
+   * page: book/_ext/questions IDEAS, most specific first). */
+  var ideas = null;
+  function ideaFor(message) {
+    if (ideas === null) {
+      var script = document.querySelector("script.q-ideas");
+      try { ideas = script ? JSON.parse(script.textContent) : []; } catch (e) { ideas = []; }
+    }
+    for (var i = 0; i < ideas.length; i++) {
+      if (new RegExp(ideas[i].pattern, "i").test(message)) return ideas[i];
+    }
+    return null;
+  }
+
   function setUp(section) {
     var data = JSON.parse(section.querySelector("script.q-data").textContent);
     var form = section.querySelector("form.q-form");
     var worked = section.querySelector(".q-worked");
     var score = form.querySelector(".q-score");
     var newButton = form.querySelector("button.q-new");
+    var undoButton = form.querySelector("button.q-undo");
+    var undone = null; // what Clear my answers cleared, until Undo clear or another change
     var key = form.getAttribute("data-question");
     form.hidden = false;
 
@@ -768,6 +784,15 @@
         var selfMarked = result.code === "self-marked";
         if (f.points && selfMarked) f.points.hidden = false;
         f.feedback.textContent = (selfMarked ? "" : right ? "✓ " : "✗ ") + result.message;
+        var idea = !right && !selfMarked && ideaFor(result.message);
+        if (idea) {
+          var link = document.createElement("a");
+          link.className = "q-idea";
+          link.href = idea.href;
+          link.textContent = idea.title;
+          f.feedback.appendChild(document.createTextNode(" Revisit: "));
+          f.feedback.appendChild(link);
+        }
         // One part alone: its marks are the question's, shown once in .q-score.
         if (f.marks && data.parts.length > 1) {
           f.marks.textContent = marksText(got[0], got[1]) + (result.code === "ecf" ? " (ecf)" : "");
@@ -801,6 +826,12 @@
       });
       if (score) score.textContent = "";
       if (worked) { worked.open = false; worked.hidden = true; }
+      dropUndo();
+    }
+
+    function dropUndo() {
+      undone = null;
+      if (undoButton) undoButton.hidden = true;
     }
 
     function restore() {
@@ -847,15 +878,34 @@
     }
 
     form.addEventListener("submit", function (event) { event.preventDefault(); check(true); });
-    form.addEventListener("input", function () { save(storeId(), { answers: answers(), checked: !!(load(storeId()) || {}).checked }); });
+    form.addEventListener("input", function () { dropUndo(); save(storeId(), { answers: answers(), checked: !!(load(storeId()) || {}).checked }); });
     form.addEventListener("change", function (event) { // a ticked marking point re-scores at once
       if (event.target.classList.contains("q-tick")) check("ticks");
     });
+    // Clear my answers can be undone: the cleared answers come back (until the next change).
     form.addEventListener("reset", function (event) {
       event.preventDefault();
+      var before = load(storeId());
       forget(storeId());
       clear();
+      if (before && undoButton) {
+        undone = before;
+        undoButton.hidden = false;
+        undoButton.focus();
+        if (score) score.textContent = "Your answers are cleared. Undo clear brings them back.";
+      }
     });
+    if (undoButton) {
+      undoButton.addEventListener("click", function () {
+        var state = undone;
+        dropUndo();
+        if (!state) return;
+        save(storeId(), state);
+        if (score) score.textContent = "";
+        restore();
+        form.querySelector("button.q-clear").focus();
+      });
+    }
     if (newButton) {
       newButton.addEventListener("click", function () {
         newButton.disabled = true;
@@ -910,8 +960,22 @@
     else if (!button) solution.classList.add("toggle-shown"); // not made a toggle yet: stay open
   }
 
+  /* Print with answers: the page prints its worked answers and mark schemes this once. */
+  function printChoice() {
+    var bar = document.querySelector(".q-print");
+    if (!bar) return;
+    var html = document.documentElement;
+    bar.hidden = false;
+    bar.querySelector("button").addEventListener("click", function () {
+      html.classList.add("q-print-answers");
+      window.print();
+    });
+    window.addEventListener("afterprint", function () { html.classList.remove("q-print-answers"); });
+  }
+
   function start() {
     document.documentElement.classList.add("q-js");
+    printChoice();
     document.addEventListener("q-checked", openSolution);
     Array.prototype.forEach.call(document.querySelectorAll("section.q[data-q]"), setUp);
   }

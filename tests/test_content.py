@@ -120,9 +120,14 @@ LEARNING_OUTCOMES = [
 def test_intro_lists_the_thirteen_learning_outcomes_in_order(site_dir):
     html = page_html(site_dir, "book/intro")
     items = re.search(r"<ol[^>]*>(.*?)</ol>", html, re.DOTALL).group(1)
-    shown = [fragment_text(item)
-             for item in re.findall(r"<li>(.*?)</li>", items, re.DOTALL)]
-    assert shown == [normalise(outcome) for outcome in LEARNING_OUTCOMES]
+    found = re.findall(r"<li>(.*?)</li>", items, re.DOTALL)
+    shown = [fragment_text(item) for item in found]
+    assert len(shown) == len(LEARNING_OUTCOMES)
+    # The notes' words, then the pages that teach the outcome (issue "reading", item 5).
+    for item, text, outcome in zip(found, shown, LEARNING_OUTCOMES, strict=True):
+        assert text.startswith(normalise(outcome)), text
+        assert re.fullmatch(r" Taught in: .+\.", text[len(normalise(outcome)):]), text
+        assert re.search(r'<a class="reference internal" href="understand/[a-z-]+\.html', item), item
 
 
 def test_intro_says_what_is_not_needed_and_points_to_the_recap(site_dir):

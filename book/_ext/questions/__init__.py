@@ -105,8 +105,10 @@ class QuestionDirective(SphinxDirective):
         if data.graph is not None:
             node += self._graph(template.key, data.graph)
         lines = nodes.container(classes=["q-answer-lines"])
+        marks = part_marks(data)
         for index, part in enumerate(data.parts):
-            lines += answer_lines(data.label(index), part)
+            lines += answer_lines(data.label(index), part, marks[index])
+        lines += nodes.paragraph(text=f"Total: {_count(sum(marks), 'mark', 'marks')}", classes=["q-total"])
         node += lines
         node += question_form(data=node["data"], template=node["template"],
                               labels=[data.label(i) for i in range(len(data.parts))],
@@ -151,22 +153,33 @@ class QuestionDirective(SphinxDirective):
         })
 
 
-def answer_lines(label: str, part) -> list[nodes.Node]:
+def part_marks(data) -> list[int]:
+    """The marks of each part, as an exam paper prints them ([2]): each mark line counts for
+    the last part it belongs to (as the browser's marking awards it)."""
+    count = dict.fromkeys(data.part_ids, 0)
+    for line in data.browser_data()["marks"]:
+        count[line["parts"][-1]] += 1
+    return [count[part_id] for part_id in data.part_ids]
+
+
+def answer_lines(label: str, part, marks: int) -> list[nodes.Node]:
     """What a part prints on paper: its options and a box for the letter, lines for an
-    explanation, or a line for a value (and its direction)."""
+    explanation, or a line for a value (and its direction); each ends with the part's
+    marks, [2], as on a Cambridge paper."""
+    tail = f" [{marks}]"
     if part.kind == "mcq":
         options = nodes.enumerated_list(enumtype="upperalpha", classes=["q-options-print"])
         for option in part.options:
             options += nodes.list_item("", *text_nodes(option.text))
         return [nodes.paragraph(text=f"{label}{part.prompt}"), options,
-                nodes.paragraph(text="Answer (A, B, C or D): " + "." * 8)]
+                nodes.paragraph(text="Answer (A, B, C or D): " + "." * 8 + tail)]
     if part.kind == "explain":
         return [nodes.paragraph(text=f"{label}{part.prompt}")] + [
-            nodes.paragraph(text="." * 70) for _ in range(4)]
+            nodes.paragraph(text="." * 70 + (tail if last else "")) for last in (False, False, False, True)]
     line = f"{label}{part.prompt} = " + "." * 28
     if part.direction == "choice":
         line += " direction: " + "." * 16
-    return [nodes.paragraph(text=line)]
+    return [nodes.paragraph(text=line + tail)]
 
 
 def _template_data(template) -> dict:
@@ -251,6 +264,117 @@ def _similar_question(app, docname: str):
     return (practice or found)[0]
 
 
+class book_map(nodes.General, nodes.Element):
+    """A list for the landing page, filled once every page is read: the book's parts with a
+    time estimate, its explorables, or its question pages."""
+
+
+class BookMapDirective(SphinxDirective):
+    """``{book-map} parts`` (or ``explorables``, ``questions``) on the landing page."""
+
+    required_arguments = 1
+
+    def run(self):
+        if self.arguments[0] not in BOOK_MAPS:
+            raise self.error(f"book-map: choose one of {', '.join(BOOK_MAPS)} (got {self.arguments[0]!r})")
+        _map_docs(self.env).add(self.env.docname)
+        return [book_map(what=self.arguments[0])]
+
+
+BOOK_MAPS = ("parts", "explorables", "questions")
+#: The time estimate: reading at WORDS_PER_MINUTE, MINUTES_PER_MARK for each mark of a page's
+#: questions and MINUTES_PER_EXPLORABLE for each explorable, rounded up to 5 minutes a part.
+WORDS_PER_MINUTE, MINUTES_PER_MARK, MINUTES_PER_EXPLORABLE = 100, 1.5, 5
+
+
+def _map_docs(env) -> set[str]:
+    if not hasattr(env, "exam_book_maps"):
+        env.exam_book_maps = set()
+    return env.exam_book_maps
+
+
+def _parts(app) -> list[tuple[str, list[str]]]:
+    """(caption, [pages, sections included]) for each part of the table of contents."""
+    from sphinx import addnodes
+
+    env = app.env
+    root = env.get_doctree(app.config.root_doc)
+    parts = []
+    for toctree in root.findall(addnodes.toctree):
+        pages = []
+        for _, docname in toctree["entries"]:
+            pages.extend(_book_order_from(env, docname))
+        parts.append((toctree.get("caption") or "", pages))
+    return parts
+
+
+def _book_order_from(env, start: str) -> list[str]:
+    order = [start]
+    for child in env.toctree_includes.get(start, []):
+        order.extend(_book_order_from(env, child))
+    return order
+
+
+def _minutes(app, docname: str) -> float:
+    env = app.env
+    words = len(env.get_doctree(docname).astext().split())
+    marks = sum(item["marks"] for item in _questions(env).get(docname, []))
+    explorables = len(getattr(env, "explorables_by_doc", {}).get(docname, ()))
+    return words / WORDS_PER_MINUTE + MINUTES_PER_MARK * marks + MINUTES_PER_EXPLORABLE * explorables
+
+
+def _link(app, fromdoc: str, docname: str, text: str, anchor: str = "") -> nodes.Node:
+    if app.builder.format == "html":
+        uri = app.builder.get_relative_uri(fromdoc, docname) + anchor
+        return nodes.reference("", text, internal=True, refuri=uri)
+    return nodes.Text(text)
+
+
+def _title(app, docname: str) -> str:
+    number = app.env.toc_secnumbers.get(docname, {}).get("")
+    title = app.env.titles[docname].astext()
+    return f"{'.'.join(map(str, number))}. {title}" if number else title
+
+
+def _book_map_content(app, fromdoc: str, what: str) -> list[nodes.Node]:
+    from physics_figures.notation import format_number
+
+    env, items = app.env, nodes.bullet_list(classes=["book-map", f"book-map-{what}"])
+    if what == "parts":
+        for caption, pages in _parts(app):
+            minutes = 5 * -(-sum(_minutes(app, page) for page in pages) // 5)
+            item = nodes.paragraph()
+            item += nodes.strong(text=caption)
+            item += nodes.Text(f" (about {format_number(minutes, decimals=0)} minutes): ")
+            for index, page in enumerate(pages):
+                if index:
+                    item += nodes.Text("; ")
+                item += _link(app, fromdoc, page, _title(app, page))
+            items += nodes.list_item("", item)
+    elif what == "explorables":
+        from explorables import DESCRIPTIONS  # book/_ext/explorables
+
+        for docname in _book_order(env, app.config.root_doc):
+            for name in sorted(getattr(env, "explorables_by_doc", {}).get(docname, ())):
+                title, shows = DESCRIPTIONS[name]
+                item = nodes.paragraph()
+                item += _link(app, fromdoc, docname, title)
+                item += nodes.Text(f" (on “{_title(app, docname)}”): {shows}.")
+                items += nodes.list_item("", item)
+    else:
+        for docname in _book_order(env, app.config.root_doc):
+            asked = [q for q in _questions(env).get(docname, [])]
+            if not asked or docname.rpartition("/")[2].startswith("example-"):
+                continue  # a worked example's try-first part is the example's, listed with it
+            marks = sum(q["marks"] for q in asked)
+            item = nodes.paragraph()
+            item += _link(app, fromdoc, docname, _title(app, docname))
+            item += nodes.Text(f": {_count(len(asked), 'question', 'questions')}, "
+                               f"{_count(marks, 'mark', 'marks')}")
+            items += nodes.list_item("", item)
+    return [items]
+
+
 class AnswerKeyDirective(SphinxDirective):
     """Where the answer key goes: every question of the book, filled in later."""
 
@@ -313,6 +437,7 @@ def purge(app, env, docname):
     _progress_docs(env).discard(docname)
     _try_similar_docs(env).discard(docname)
     _self_test_docs(env).discard(docname)
+    _map_docs(env).discard(docname)
 
 
 def merge(app, env, docnames, other):
@@ -329,11 +454,13 @@ def merge(app, env, docnames, other):
             _try_similar_docs(env).add(docname)
         if docname in _self_test_docs(other):
             _self_test_docs(env).add(docname)
+        if docname in _map_docs(other):
+            _map_docs(env).add(docname)
 
 
 def refresh_answer_keys(app, env, added, changed, removed):
     """A page's questions changed: re-read the pages that hold an answer key or the progress."""
-    pages = _answer_key_docs(env) | _progress_docs(env) | _try_similar_docs(env)
+    pages = _answer_key_docs(env) | _progress_docs(env) | _try_similar_docs(env) | _map_docs(env)
     return sorted(pages) if added | changed | removed else []
 
 
@@ -407,6 +534,8 @@ def _source_page(env, node, docname: str) -> str:
 def resolve(app, doctree, docname):
     """Fill each answer key; outside HTML, questions become plain text with answer lines."""
     html = app.builder.format == "html"
+    for listing in list(doctree.findall(book_map)):
+        listing.replace_self(_book_map_content(app, docname, listing["what"]))
     for similar in list(doctree.findall(try_similar)):
         template, page = _similar_question(app, _source_page(app.env, similar, docname))
         title = app.env.titles[page].astext()
@@ -778,6 +907,8 @@ def setup(app):
     app.add_directive("question", QuestionDirective)
     app.add_directive("answer-key", AnswerKeyDirective)
     app.add_directive("try-similar", TrySimilarDirective)
+    app.add_directive("book-map", BookMapDirective)
+    app.add_node(book_map)
     app.add_node(try_similar)
     app.add_directive("practice-progress", PracticeProgressDirective)
     app.connect("config-inited", add_static_path)

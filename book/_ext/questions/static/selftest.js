@@ -88,7 +88,8 @@
         "Not yet</button></span>" + '<span class="st-kept"></span>';
       item.appendChild(controls);
       var reveal = controls.querySelector(".st-reveal");
-      reveal.textContent = "Show the definition of " + term.charAt(0).toLowerCase() + term.slice(1);
+      var named = /^Newton/.test(term) ? term : term.charAt(0).toLowerCase() + term.slice(1);
+      reveal.textContent = "Show the definition of " + named;
       reveal.setAttribute("aria-controls", definition.id);
       item.classList.add("st-card");
       return { item: item, key: slug(term), term: term, definition: definition, controls: controls,

@@ -70,7 +70,7 @@ def test_a_unit_in_the_wrong_case_says_units_are_case_sensitive(page):
 
 def test_feedback_that_names_an_idea_links_the_section_that_teaches_it(page):
     _go(page, QUICK)
-    page.fill("#q-quick-check-1-b-value", "30")  # momentum × mass: "p = mv, so v = p / m"
+    page.fill("#q-quick-check-1-b-value", "30")  # the bank's named mistake "momentum times mass"
     page.fill("#q-quick-check-1-b-unit", "m/s")
     page.press("#q-quick-check-1-b-unit", "Enter")
     link = page.locator("#q-quick-check-1-b-feedback a.q-idea")
@@ -232,3 +232,30 @@ def test_a_printed_worked_example_keeps_its_solution(page):
     text = page.locator("body").inner_text()
     assert "Take the direction the ball bounces back as positive" in text
     assert page.locator(".q-print").count() == 0  # no choice needed: the solution is the point
+
+
+def test_the_landing_page_says_where_to_start_and_lists_what_there_is(page):
+    _go(page, "/book/intro.html")
+    start = page.get_by_role("link", name="Start here")
+    assert start.first.is_visible()
+    assert start.first.get_attribute("href").endswith("recap.html")
+    # The parts, each with a time estimate and a link to each of its pages.
+    parts = page.locator("ul.book-map-parts > li")
+    assert parts.count() == 3
+    for part in parts.all():
+        assert " minutes): " in part.inner_text()
+        assert part.locator("a").count() >= 1
+    # Every explorable, linked to the page where it runs.
+    explorables = page.locator("ul.book-map-explorables > li a")
+    assert explorables.count() == 4
+    targets = [a.get_attribute("href") for a in explorables.all()]
+    # Every page of questions, linked (worked examples are listed with the examples).
+    questions = page.locator("ul.book-map-questions > li a")
+    assert questions.count() >= 7
+    question_pages = [a.get_attribute("href") for a in questions.all()]
+    for href in targets:
+        _go(page, "/book/" + href)
+        assert page.locator(".explorable").count() == 1, href
+    for href in question_pages:
+        _go(page, "/book/" + href)
+        assert page.locator("form.q-form").count() >= 1, href

@@ -339,11 +339,15 @@ def _part_marks(question) -> list[int]:
     return [count[part_id] for part_id in question.part_ids]
 
 
-@pytest.mark.parametrize("question", all_questions(), ids=lambda q: q.key)
-def test_question_sheet_prints_each_parts_marks_and_the_total(question):
+@pytest.mark.parametrize("number", range(1, len(all_questions()) + 1),
+                         ids=[q.key for q in all_questions()])
+def test_question_sheet_prints_each_parts_marks_and_the_total(number):
     """Cambridge's layout: [n] after each part's answer line, the total under the question."""
+    from physics_figures.bank import TEMPLATES
+
+    question = all_questions()[number - 1]
     sheet = squashed(SHEET)
-    start = sheet.index(squash(textformat.to_plain(question.text))[:60])
+    start = sheet.index(squash(f"{number}. {TEMPLATES[question.key].title}"))
     total = re.compile(r"Total:(\d+)marks?").search(sheet, start)
     assert total, f"{question.key}: no total on the sheet"
     assert int(total[1]) == question.marks == sum(_part_marks(question)), question.key
@@ -422,7 +426,7 @@ WEB_ONLY = re.compile(r"\b(tap|taps|tapping|click|clicks|press|pressing|drag the
 def test_book_pdf_has_no_web_only_wording_and_says_where_each_explorable_is(site_dir):
     import sys
 
-    text = pdf_text(BOOK)
+    text = pdf_text(BOOK).replace("Cambridge University Press", "Cambridge University")
     found = sorted({m[0] for m in WEB_ONLY.finditer(" ".join(text.split()))})
     assert not found, f"the book PDF says {found}"
     sys.path.insert(0, str(ROOT / "book" / "_ext"))

@@ -440,6 +440,6 @@ def test_book_pdf_has_no_web_only_wording_and_says_where_each_explorable_is(site
                  (site_dir / f"{p}.html").read_text(encoding="utf-8")]
         assert len(pages) == 1, name
         heading = re.search(r"<h1>(.*?)<a", (site_dir / f"{pages[0]}.html").read_text(encoding="utf-8"))[1]
-        page = re.sub(r"^[\d.]+\s*", "", unescape(heading))
+        page = re.sub(r"^[\d.]+\s*", "", unescape(re.sub(r"<[^>]+>", "", heading)))
         sentence = f"{title} (in the web version of this book, on the page “{page}”): {shows}."
         assert squash(sentence) in book, f"no sentence for the {name} explorable: {sentence}"

@@ -10,6 +10,7 @@ with answers as a choice).
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import pytest
 from browser import open_browser, serve_site
@@ -73,6 +74,16 @@ def test_feedback_that_names_an_idea_links_the_section_that_teaches_it(page):
     page.fill("#q-quick-check-1-b-value", "30")  # the bank's named mistake "momentum times mass"
     page.fill("#q-quick-check-1-b-unit", "m/s")
     page.press("#q-quick-check-1-b-unit", "Enter")
+    # Every idea of the build's list has its page in the book (none was dropped).
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "book" / "_ext"))
+    try:
+        from questions import IDEAS
+    finally:
+        sys.path.pop(0)
+    ideas = json.loads(page.locator("script.q-ideas").text_content())
+    assert [i["pattern"] for i in ideas] == [pattern for pattern, _, _ in IDEAS]
     link = page.locator("#q-quick-check-1-b-feedback a.q-idea")
     assert link.count() == 1
     assert "momentum" in link.get_attribute("href")
@@ -259,3 +270,11 @@ def test_the_landing_page_says_where_to_start_and_lists_what_there_is(page):
     for href in question_pages:
         _go(page, "/book/" + href)
         assert page.locator("form.q-form").count() >= 1, href
+
+
+def test_the_footer_names_an_open_textbook_not_endorsed_by_cambridge(page):
+    _go(page, "/book/understand/weight.html")
+    footer = page.locator(".bd-footer-content").inner_text()
+    assert "An open textbook for the Cambridge International AS & A Level Physics (9702) syllabus" in footer
+    assert "not produced or endorsed by Cambridge" in footer
+    assert "By Cambridge" not in page.locator("body").inner_text()

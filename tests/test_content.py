@@ -120,9 +120,14 @@ LEARNING_OUTCOMES = [
 def test_intro_lists_the_thirteen_learning_outcomes_in_order(site_dir):
     html = page_html(site_dir, "book/intro")
     items = re.search(r"<ol[^>]*>(.*?)</ol>", html, re.DOTALL).group(1)
-    shown = [fragment_text(item)
-             for item in re.findall(r"<li>(.*?)</li>", items, re.DOTALL)]
-    assert shown == [normalise(outcome) for outcome in LEARNING_OUTCOMES]
+    found = re.findall(r"<li>(.*?)</li>", items, re.DOTALL)
+    shown = [fragment_text(item) for item in found]
+    assert len(shown) == len(LEARNING_OUTCOMES)
+    # The notes' words, then the pages that teach the outcome (issue "reading", item 5).
+    for item, text, outcome in zip(found, shown, LEARNING_OUTCOMES, strict=True):
+        assert text.startswith(normalise(outcome)), text
+        assert re.fullmatch(r" Taught in: .+\.", text[len(normalise(outcome)):]), text
+        assert re.search(r'<a class="reference internal" href="understand/[a-z-]+\.html', item), item
 
 
 def test_intro_says_what_is_not_needed_and_points_to_the_recap(site_dir):
@@ -648,3 +653,25 @@ def test_worked_examples_list_all_five_examples(site_dir):
     for n in range(1, 6):
         assert f'href="example-{n}.html' in html
     assert "drag, upthrust and terminal velocity in a liquid" in page_text(site_dir, "book/exam/worked-examples")
+
+
+# Issue "reading", item 14: each past question as a student searches for it. The notes give
+# the code (9702/21/M/J/23 Q3); the page spells it out and names the paper's file, nothing more.
+PAST_QUESTION_REFERENCES = [
+    ("9702/21/M/J/23 Q3", "May/June 2023, Paper 2, variant 1 (paper 21), question 3", "9702_s23_qp_21"),
+    ("9702/22/M/J/24 Q2", "May/June 2024, Paper 2, variant 2 (paper 22), question 2", "9702_s24_qp_22"),
+    ("9702/23/O/N/24 Q2", "October/November 2024, Paper 2, variant 3 (paper 23), question 2", "9702_w24_qp_23"),
+    ("9702/21/M/J/24 Q3", "May/June 2024, Paper 2, variant 1 (paper 21), question 3", "9702_s24_qp_21"),
+]
+
+
+@pytest.mark.parametrize(("code", "spelled", "file"), PAST_QUESTION_REFERENCES)
+def test_past_questions_give_series_paper_variant_and_question(site_dir, code, spelled, file):
+    # The spelled-out form follows from the notes' code alone: nothing is invented.
+    paper, series, year, question = re.fullmatch(r"9702/(\d\d)/(M/J|O/N)/(\d\d) Q(\d+)", code).groups()
+    assert spelled == (f"{'May/June' if series == 'M/J' else 'October/November'} 20{year}, Paper "
+                       f"{paper[0]}, variant {paper[1]} (paper {paper}), question {question}")
+    assert file == f"9702_{'s' if series == 'M/J' else 'w'}{year}_qp_{paper}"
+    assert_on_page(site_dir, "book/exam/past-questions", [code, spelled + ": search for " + file])
+    codes = re.findall(r"9702/\d\d/[MO]/[JN]/\d\d Q\d+", page_html(site_dir, "book/exam/past-questions"))
+    assert sorted(set(codes)) == sorted(c for c, _, _ in PAST_QUESTION_REFERENCES)

@@ -512,7 +512,8 @@ def test_html_question_has_labelled_boxes_status_feedback_and_a_hidden_worked_an
     page = (source / "_out" / "html" / "asked.html").read_text()
     assert '<form class="q-form" data-question="quick-check-1" data-type="force-momentum" data-variant="0"' in page
     assert page.count('role="status"') == 2
-    assert '<label class="q-field" for="q-quick-check-1-a-value"><span>Value</span>' in page
+    # Named for its part (issue "reading", item 9): "(a) value", not just "Value".
+    assert '<label class="q-field" for="q-quick-check-1-a-value"><span>(a) value</span>' in page
     assert '<details class="q-worked" hidden>' in page
     assert "final momentum = " in page  # the answer line for print and no-JS
     key = page[page.index('<details class="q-key"'):]

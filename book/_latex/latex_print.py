@@ -22,6 +22,11 @@ Nothing here changes the stored doctrees or the HTML build.
 
 from __future__ import annotations
 
+import os
+import subprocess
+from datetime import UTC, datetime
+from pathlib import Path
+
 from docutils import nodes
 from sphinx import addnodes
 from sphinx.application import Sphinx
@@ -152,7 +157,43 @@ class PrintLayout(SphinxPostTransform):
                 return
 
 
+def version_and_date(root: Path, environ=os.environ) -> tuple[str, str]:
+    """The book's version and date, from the commit it is built from: ("version 1a2b3c4",
+    "2026-11-23", the commit's date in UTC). Without a git checkout (.git), "unversioned" and
+    the date of SOURCE_DATE_EPOCH. Never the clock: the same source gives the same PDFs."""
+    if (root / ".git").exists():
+        found = subprocess.run(["git", "-C", str(root), "log", "-1", "--format=%h %ct"],
+                               capture_output=True, text=True, check=False)
+        if found.returncode != 0 or not found.stdout.strip():
+            raise ValueError(f"root={str(root)!r} has a .git but git cannot read its last commit: "
+                             f"{found.stderr.strip()}")
+        commit, seconds = found.stdout.split()
+        return f"version {commit}", _utc_date(int(seconds))
+    epoch = environ.get("SOURCE_DATE_EPOCH", "")
+    if not epoch.isdigit():
+        raise ValueError(f"SOURCE_DATE_EPOCH={epoch!r}: with no .git to date the book from, it must be "
+                         "set to the build's date in whole seconds since 1970 (the Makefile sets it)")
+    return "unversioned", _utc_date(int(epoch))
+
+
+def _utc_date(seconds: int) -> str:
+    return datetime.fromtimestamp(seconds, tz=UTC).strftime("%Y-%m-%d")
+
+
+def stamp_version(app: Sphinx) -> None:
+    """Every PDF (book, sheet, key) shows the version and date on its title and page headers."""
+    if app.builder.format != "latex":
+        return
+    version, date = version_and_date(Path(app.srcdir))
+    app.builder.context["release"] = version.removeprefix("version ")
+    app.builder.context["releasename"] = "Version" if version.startswith("version") else ""
+    app.builder.context["date"] = date
+    if not version.startswith("version"):
+        app.builder.context["release"] = "Unversioned"
+
+
 def setup(app: Sphinx) -> dict:
+    app.connect("builder-inited", stamp_version)
     app.setup_extension("latex_question_sheets")  # same folder: one line in _config.yml
     app.add_post_transform(BrowserOnlyOutputs)
     app.add_post_transform(PrintLayout)

@@ -38,7 +38,10 @@ logger = logging.getLogger(__name__)
 QUESTIONS_TEX = "dynamics-questions.tex"
 ANSWERS_TEX = "dynamics-answers.tex"
 # "(a) speed = ........" or "... = ........ direction: ........" (dots may have become "…")
-ANSWER_LINE = re.compile(r"^(?P<prompt>.*?)\s*=\s*[.…]+(?P<direction>\s*direction:\s*[.…]+)?\s*$")
+ANSWER_LINE = re.compile(r"^(?P<prompt>.*?)\s*=\s*[.…]+(?P<direction>\s*direction:\s*[.…]+)?"
+                         r"(?:\s*\[(?P<marks>\d+)\])?\s*$")
+# "Total: 4 marks" after a question's answer lines (book/_ext/questions)
+TOTAL_LINE = re.compile(r"^Total: (?P<marks>\d+) marks?$")
 
 
 @dataclass
@@ -70,11 +73,15 @@ def _page_of(node: nodes.Node, env) -> str | None:
 def _answer_lines(container: nodes.container) -> None:
     """Each "prompt = ...." paragraph becomes a dotted line (\\dynamicsanswerline)."""
     for paragraph in list(container.findall(nodes.paragraph)):
+        total = TOTAL_LINE.match(paragraph.astext())
+        if total is not None:
+            paragraph.replace_self(_raw_latex(rf"\dynamicstotal{{{total['marks']}}}"))
+            continue
         match = ANSWER_LINE.match(paragraph.astext())
         if match is None:
             continue
         macro = r"\dynamicsanswerlinewithdirection" if match["direction"] else r"\dynamicsanswerline"
-        paragraph.replace_self(_raw_latex(f"{macro}{{{_latex_escape(match['prompt'])}}}"))
+        paragraph.replace_self(_raw_latex(f"{macro}{{{_latex_escape(match['prompt'])}}}{{{match['marks'] or ''}}}"))
 
 
 def _number_title(question: nodes.container, number: int) -> None:
@@ -92,6 +99,13 @@ def _try_first(anchor: str) -> bool:
 
     template = bank.TEMPLATES.get(anchor.removeprefix("question-"))
     return bool(template and template.try_first)
+
+
+def _keep_headings_with_their_text(key: nodes.container) -> None:
+    """No page name or question title of the key stranded at the foot of a page."""
+    for child in list(key.children):
+        if _has_class(child, "q-key-page") or _has_class(child, "q-key-title"):
+            key.insert(key.index(child), _raw_latex(r"\dynamicskeyheading"))
 
 
 def _drop_try_first(key: nodes.container) -> None:
@@ -132,6 +146,7 @@ def prepare(app: Sphinx, doctree: nodes.document, docname: str) -> None:
     for key in doctree.findall(nodes.container):
         if _has_class(key, "q-key"):
             _drop_try_first(key)
+            _keep_headings_with_their_text(key)
             for title in key.findall(nodes.paragraph):
                 if not _has_class(title, "q-key-title"):
                     continue
@@ -223,10 +238,16 @@ def write_sheets(app: Sphinx, exception: Exception | None) -> None:
         logger.warning("the book asks no question: no question sheet or answer key written",
                        type="latex_question_sheets")
         return
+    from physics_figures.constants import G_EARTH
+    from physics_figures.notation import format_number
+
     book = app.builder.document_data[0][2]  # the book's title (_config.yml: title)
+    g = format_number(G_EARTH, 3)
     _write(app, QUESTIONS_TEX, f"{book}: questions",
            "Every quick-check and practice question in the book. Show your working; give "
-           "each answer with its unit.", _sheet_body(app, printed), name_lines=True)
+           "each answer with its unit. The marks for each part are shown in brackets, [2], and "
+           f"each question's total under it. Data: take g = {g} m s⁻² (the acceleration of free "
+           "fall) unless a question gives another value.", _sheet_body(app, printed), name_lines=True)
     if not printed.keys:
         logger.warning("no {answer-key} in the book: no answer key written", type="latex_question_sheets")
         return

@@ -275,3 +275,33 @@ test("the value box alone can hold the unit, in standard form too", () => {
   assert.deepEqual(splitValueAndUnit("11.6 m s⁻²"), ["11.6", "m s^-2"]);
   assert.equal(code(acceleration, "11.6 m s⁻²", "", "upwards"), "correct");
 });
+
+test("a unit in the wrong case says units are case-sensitive and what was meant", () => {
+  const cases = [[mass, "12", "Kg", "kg"], [mass, "12", "KG", "kg"], [speed, "7.5", "M/S", "m/s"],
+    [speed, "7.5", "M S^-1", "m s⁻¹"], [speed, "7.5", "Ms^-1", "m s⁻¹"], [momentum, "15", "n s", "N s"],
+    [momentum, "15", "KG M/S", "kg m/s"]];
+  for (const [part, value, unit, meant] of cases) {
+    const result = mark(part, { value: value, unit: unit });
+    assert.equal(result.code, "unit-case", unit);
+    assert.match(result.message, /^Units are case-sensitive: /, unit);
+    assert.ok(result.message.includes("You probably meant " + meant + "."), unit + ": " + result.message);
+  }
+  // Marked as meant: a right value earns all but the A1; a wrong one is still wrong, with the note.
+  const wrong = mark(mass, { value: "13", unit: "Kg" });
+  assert.equal(wrong.code, "wrong");
+  assert.match(wrong.message, /case-sensitive.*You probably meant kg\./);
+  // Right case, a prefix slip or another quantity's unit: no case note.
+  assert.equal(code(mass, "12", "kg"), "correct");
+  assert.equal(code(mass, "12", "g"), "prefix");
+  assert.equal(code(momentum, "15", "ms"), "wrong-unit");
+  assert.doesNotMatch(mark(momentum, { value: "15", unit: "ms" }).message, /case-sensitive/);
+});
+
+test("a unit in the wrong case loses only the A1", () => {
+  const data = { parts: [Object.assign({ id: "a" }, mass)], marks: [{ parts: ["a"], code: "C1" }, { parts: ["a"], code: "A1" }] };
+  const { results, marks } = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static",
+    "questions.js")).markQuestion(data, { a: { value: "12", unit: "Kg" } });
+  assert.equal(results.a.code, "unit-case");
+  assert.equal(marks.earned, 1);
+  assert.equal(marks.available, 2);
+});

@@ -19,12 +19,36 @@ from pathlib import Path
 
 from docutils import nodes
 from notation import add_notation_script  # book/_ext/notation: the browser's number writer
+from sphinx import addnodes
 from sphinx.application import Sphinx
 from sphinx.util.docutils import SphinxDirective
 
 from physics_figures.explorables import EXPLORABLES, explorable_data
 
 STATIC = Path(__file__).parent / "static"
+#: What each explorable is and shows, for readers who meet it on paper (the book PDF) and for
+#: the list on the landing page: (name, what it shows), a sentence each.
+DESCRIPTIONS = {
+    "skydiver": (
+        "The skydiver explorer",
+        ("it draws a skydiver's velocity\u2013time and resultant force\u2013time graphs, with points "
+         "A to E, as you change her mass, the drag constants of body and parachute, when the "
+         "parachute opens and how long it takes to open")),
+    "collision-lab": (
+        "The collision lab",
+        ("it collides two trolleys, or pushes them apart from rest, with the masses, velocities "
+         "and loss of kinetic energy you choose, and shows that momentum is conserved while "
+         "kinetic energy may not be")),
+    "momentum-triangle": (
+        "The momentum triangle",
+        ("it draws the momenta of two pucks before and after a collision as a closed triangle "
+         "of vectors, as you change the momentum and angle of P after it")),
+    "momentum-time-reader": (
+        "The momentum\u2013time reader",
+        ("it reads a car's momentum\u2013time graph at any time you choose, with the gradient, "
+         "which is the resultant force")),
+}
+
 # Loaded on every page with an explorable, before the explorable's own script.
 SHARED_SCRIPTS = ("explorables/models.js", "explorables/ui.js")
 
@@ -46,7 +70,18 @@ class ExplorableDirective(SphinxDirective):
             f'<script type="application/json" class="explorable-data">{data}</script></div>'
         )
         self.env.explorables_by_doc.setdefault(self.env.docname, set()).add(name)
-        return [nodes.raw("", markup, format="html")]
+        return [nodes.raw("", markup, format="html"), self._on_paper(name)]
+
+    def _on_paper(self, name: str) -> nodes.Node:
+        """Print and PDF: a sentence saying what the explorable shows and on which page of the
+        web version it is (no site address is fixed, so the page is named)."""
+        title, shows = DESCRIPTIONS[name]
+        heading = self.state.document.next_node(nodes.title)
+        page = heading.astext() if heading is not None else self.env.docname
+        text = (f"{title} (in the web version of this book, on the page “{page}”): {shows}.")
+        only = addnodes.only(expr="not html")
+        only += nodes.paragraph(text=text, classes=["explorable-on-paper"])
+        return only
 
 
 def _init_env(app: Sphinx, env, docnames) -> None:

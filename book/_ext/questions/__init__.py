@@ -105,10 +105,13 @@ class QuestionDirective(SphinxDirective):
         if data.graph is not None:
             node += self._graph(template.key, data.graph)
         lines = nodes.container(classes=["q-answer-lines"])
+        marks = part_marks(data)
         for index, part in enumerate(data.parts):
-            lines += answer_lines(data.label(index), part)
+            lines += answer_lines(data.label(index), part, marks[index])
+        lines += nodes.paragraph(text=f"Total: {_count(sum(marks), 'mark', 'marks')}", classes=["q-total"])
         node += lines
         node += question_form(data=node["data"], template=node["template"],
+                              labels=[data.label(i) for i in range(len(data.parts))],
                               legends=[data.label(i) + p.prompt[:1].upper() + p.prompt[1:]
                                        for i, p in enumerate(data.parts)])
         worked = worked_answer()
@@ -150,27 +153,38 @@ class QuestionDirective(SphinxDirective):
         })
 
 
-def answer_lines(label: str, part) -> list[nodes.Node]:
+def part_marks(data) -> list[int]:
+    """The marks of each part, as an exam paper prints them ([2]): each mark line counts for
+    the last part it belongs to (as the browser's marking awards it)."""
+    count = dict.fromkeys(data.part_ids, 0)
+    for line in data.browser_data()["marks"]:
+        count[line["parts"][-1]] += 1
+    return [count[part_id] for part_id in data.part_ids]
+
+
+def answer_lines(label: str, part, marks: int) -> list[nodes.Node]:
     """What a part prints on paper: its options and a box for the letter, lines for an
-    explanation, or a line for a value (and its direction)."""
+    explanation, or a line for a value (and its direction); each ends with the part's
+    marks, [2], as on a Cambridge paper."""
+    tail = f" [{marks}]"
     if part.kind == "mcq":
         options = nodes.enumerated_list(enumtype="upperalpha", classes=["q-options-print"])
         for option in part.options:
             options += nodes.list_item("", *text_nodes(option.text))
         return [nodes.paragraph(text=f"{label}{part.prompt}"), options,
-                nodes.paragraph(text="Answer (A, B, C or D): " + "." * 8)]
+                nodes.paragraph(text="Answer (A, B, C or D): " + "." * 8 + tail)]
     if part.kind == "explain":
         return [nodes.paragraph(text=f"{label}{part.prompt}")] + [
-            nodes.paragraph(text="." * 70) for _ in range(4)]
+            nodes.paragraph(text="." * 70 + (tail if last else "")) for last in (False, False, False, True)]
     line = f"{label}{part.prompt} = " + "." * 28
     if part.direction == "choice":
         line += " direction: " + "." * 16
-    return [nodes.paragraph(text=line)]
+    return [nodes.paragraph(text=line + tail)]
 
 
 def _template_data(template) -> dict:
     return {"key": template.key, "type": template.type, "kinds": list(template.kinds),
-            "variants": len(template.values)}
+            "variants": len(template.values), "tryFirst": bool(template.try_first)}
 
 
 _TAG_NODES = {"sup": nodes.superscript, "sub": nodes.subscript, "em": nodes.emphasis,
@@ -207,6 +221,157 @@ def mark_scheme_nodes(data) -> list[nodes.Node]:
         if code:
             line += [nodes.Text(" "), nodes.strong(text=code)]
         items += nodes.list_item("", line)
+    return [items]
+
+
+class try_similar(nodes.General, nodes.Element):
+    """"Try a similar one": filled, once every page is read, with a link to a practice
+    question of the same type as the page's worked example."""
+
+
+class TrySimilarDirective(SphinxDirective):
+    """At the end of a worked example: a link to a question of the same type to practise."""
+
+    def run(self):
+        _try_similar_docs(self.env).add(self.env.docname)
+        return [try_similar()]
+
+
+def _try_similar_docs(env) -> set[str]:
+    if not hasattr(env, "exam_try_similar"):
+        env.exam_try_similar = set()
+    return env.exam_try_similar
+
+
+def _similar_question(app, docname: str):
+    """(template, page) of the first question in book order, outside the worked examples, of
+    the type of this page's try-first question; practice pages first."""
+    from physics_figures import bank
+
+    env = app.env
+    kinds = {bank.TEMPLATES[k].type for k in _templates_used(env).get(docname, []) if bank.TEMPLATES[k].try_first}
+    if len(kinds) != 1:
+        raise ValueError(f"try-similar on {docname}: the page must ask exactly one worked example's "
+                         f"try-first question (its types: {sorted(kinds)})")
+    kind = kinds.pop()
+    found = [(bank.TEMPLATES[key], page) for page in _book_order(env, app.config.root_doc)
+             for key in _templates_used(env).get(page, [])
+             if bank.TEMPLATES[key].type == kind and not bank.TEMPLATES[key].try_first]
+    if not found:
+        raise ValueError(f"try-similar on {docname}: no question of type {kind!r} is placed outside "
+                         "the worked examples")
+    practice = [f for f in found if "/practice" in f[1]]
+    return (practice or found)[0]
+
+
+class book_map(nodes.General, nodes.Element):
+    """A list for the landing page, filled once every page is read: the book's parts with a
+    time estimate, its explorables, or its question pages."""
+
+
+class BookMapDirective(SphinxDirective):
+    """``{book-map} parts`` (or ``explorables``, ``questions``) on the landing page."""
+
+    required_arguments = 1
+
+    def run(self):
+        if self.arguments[0] not in BOOK_MAPS:
+            raise self.error(f"book-map: choose one of {', '.join(BOOK_MAPS)} (got {self.arguments[0]!r})")
+        _map_docs(self.env).add(self.env.docname)
+        return [book_map(what=self.arguments[0])]
+
+
+BOOK_MAPS = ("parts", "explorables", "questions")
+#: The time estimate: reading at WORDS_PER_MINUTE, MINUTES_PER_MARK for each mark of a page's
+#: questions and MINUTES_PER_EXPLORABLE for each explorable, rounded up to 5 minutes a part.
+WORDS_PER_MINUTE, MINUTES_PER_MARK, MINUTES_PER_EXPLORABLE = 100, 1.5, 5
+
+
+def _map_docs(env) -> set[str]:
+    if not hasattr(env, "exam_book_maps"):
+        env.exam_book_maps = set()
+    return env.exam_book_maps
+
+
+def _parts(app) -> list[tuple[str, list[str]]]:
+    """(caption, [pages, sections included]) for each part of the table of contents."""
+    from sphinx import addnodes
+
+    env = app.env
+    root = env.get_doctree(app.config.root_doc)
+    parts = []
+    for toctree in root.findall(addnodes.toctree):
+        pages = []
+        for _, docname in toctree["entries"]:
+            pages.extend(_book_order_from(env, docname))
+        parts.append((toctree.get("caption") or "", pages))
+    return parts
+
+
+def _book_order_from(env, start: str) -> list[str]:
+    order = [start]
+    for child in env.toctree_includes.get(start, []):
+        order.extend(_book_order_from(env, child))
+    return order
+
+
+def _minutes(app, docname: str) -> float:
+    env = app.env
+    words = len(env.get_doctree(docname).astext().split())
+    marks = sum(item["marks"] for item in _questions(env).get(docname, []))
+    explorables = len(getattr(env, "explorables_by_doc", {}).get(docname, ()))
+    return words / WORDS_PER_MINUTE + MINUTES_PER_MARK * marks + MINUTES_PER_EXPLORABLE * explorables
+
+
+def _link(app, fromdoc: str, docname: str, text: str, anchor: str = "") -> nodes.Node:
+    if app.builder.format == "html":
+        uri = app.builder.get_relative_uri(fromdoc, docname) + anchor
+        return nodes.reference("", text, internal=True, refuri=uri)
+    return nodes.Text(text)
+
+
+def _title(app, docname: str) -> str:
+    number = app.env.toc_secnumbers.get(docname, {}).get("")
+    title = app.env.titles[docname].astext()
+    return f"{'.'.join(map(str, number))}. {title}" if number else title
+
+
+def _book_map_content(app, fromdoc: str, what: str) -> list[nodes.Node]:
+    from physics_figures.notation import format_number
+
+    env, items = app.env, nodes.bullet_list(classes=["book-map", f"book-map-{what}"])
+    if what == "parts":
+        for caption, pages in _parts(app):
+            minutes = 5 * -(-sum(_minutes(app, page) for page in pages) // 5)
+            item = nodes.paragraph()
+            item += nodes.strong(text=caption)
+            item += nodes.Text(f" (about {format_number(minutes, decimals=0)} minutes): ")
+            for index, page in enumerate(pages):
+                if index:
+                    item += nodes.Text("; ")
+                item += _link(app, fromdoc, page, _title(app, page))
+            items += nodes.list_item("", item)
+    elif what == "explorables":
+        from explorables import DESCRIPTIONS  # book/_ext/explorables
+
+        for docname in _book_order(env, app.config.root_doc):
+            for name in sorted(getattr(env, "explorables_by_doc", {}).get(docname, ())):
+                title, shows = DESCRIPTIONS[name]
+                item = nodes.paragraph()
+                item += _link(app, fromdoc, docname, title)
+                item += nodes.Text(f" (on “{_title(app, docname)}”): {shows}.")
+                items += nodes.list_item("", item)
+    else:
+        for docname in _book_order(env, app.config.root_doc):
+            asked = [q for q in _questions(env).get(docname, [])]
+            if not asked or docname.rpartition("/")[2].startswith("example-"):
+                continue  # a worked example's try-first part is the example's, listed with it
+            marks = sum(q["marks"] for q in asked)
+            item = nodes.paragraph()
+            item += _link(app, fromdoc, docname, _title(app, docname))
+            item += nodes.Text(f": {_count(len(asked), 'question', 'questions')}, "
+                               f"{_count(marks, 'mark', 'marks')}")
+            items += nodes.list_item("", item)
     return [items]
 
 
@@ -270,6 +435,9 @@ def purge(app, env, docname):
     _templates_used(env).pop(docname, None)
     _answer_key_docs(env).discard(docname)
     _progress_docs(env).discard(docname)
+    _try_similar_docs(env).discard(docname)
+    _self_test_docs(env).discard(docname)
+    _map_docs(env).discard(docname)
 
 
 def merge(app, env, docnames, other):
@@ -282,11 +450,30 @@ def merge(app, env, docnames, other):
             _templates_used(env)[docname] = _templates_used(other)[docname]
         if docname in _progress_docs(other):
             _progress_docs(env).add(docname)
+        if docname in _try_similar_docs(other):
+            _try_similar_docs(env).add(docname)
+        if docname in _self_test_docs(other):
+            _self_test_docs(env).add(docname)
+        if docname in _map_docs(other):
+            _map_docs(env).add(docname)
 
 
 def refresh_answer_keys(app, env, added, changed, removed):
     """A page's questions changed: re-read the pages that hold an answer key or the progress."""
-    return sorted(_answer_key_docs(env) | _progress_docs(env)) if added | changed | removed else []
+    pages = _answer_key_docs(env) | _progress_docs(env) | _try_similar_docs(env) | _map_docs(env)
+    return sorted(pages) if added | changed | removed else []
+
+
+def _self_test_docs(env) -> set[str]:
+    if not hasattr(env, "definitions_self_test"):
+        env.definitions_self_test = set()
+    return env.definitions_self_test
+
+
+def find_self_tests(app, doctree):
+    """A box of definitions with class self-test: its page loads selftest.js."""
+    if any("self-test" in node["classes"] for node in doctree.findall(nodes.admonition)):
+        _self_test_docs(app.env).add(app.env.docname)
 
 
 def answer_key_has_maths(app, doctree):
@@ -333,9 +520,34 @@ def _answer_key_content(app, fromdoc: str) -> list[nodes.Node]:
     return content
 
 
+def _source_page(env, node, docname: str) -> str:
+    """The page a node came from: in the LaTeX builder's merged book, the nearest section
+    marked with its page; otherwise the page being resolved."""
+    parent = node.parent
+    while parent is not None:
+        if isinstance(parent, nodes.Element) and parent.get("docname") in env.all_docs:
+            return parent["docname"]
+        parent = parent.parent
+    return docname
+
+
 def resolve(app, doctree, docname):
     """Fill each answer key; outside HTML, questions become plain text with answer lines."""
     html = app.builder.format == "html"
+    for listing in list(doctree.findall(book_map)):
+        listing.replace_self(_book_map_content(app, docname, listing["what"]))
+    for similar in list(doctree.findall(try_similar)):
+        template, page = _similar_question(app, _source_page(app.env, similar, docname))
+        title = app.env.titles[page].astext()
+        line = nodes.paragraph(classes=["q-try-similar"])
+        line += nodes.strong(text="Try a similar one: ")
+        if html:
+            uri = app.builder.get_relative_uri(docname, page) + f"#question-{template.key}"
+            line += nodes.reference("", template.title, internal=True, refuri=uri)
+            line += nodes.Text(f" ({title}).")
+        else:
+            line += nodes.Text(f"{template.title}, on the page “{title}”.")
+        similar.replace_self(line)
     for progress in list(doctree.findall(practice_progress)):
         if html:
             progress["data"] = _progress_data(app, docname)
@@ -363,6 +575,9 @@ def add_assets(app, pagename, templatename, context, doctree):
         app.add_css_file("questions.css")
         add_notation_script(app)  # questions.js writes numbers with it
         app.add_js_file("questions.js", loading_method="defer")
+    if pagename in _self_test_docs(app.env):
+        app.add_css_file("selftest.css")
+        app.add_js_file("selftest.js", loading_method="defer")
     if pagename in _progress_docs(app.env):
         app.add_css_file("progress.css")
         add_notation_script(app)
@@ -430,7 +645,17 @@ def add_static_path(app, config):
 # ---------------------------------------------------------------- HTML writer
 
 
+#: Before a page's first question (not a worked example's try-first): printing gives the
+#: questions with room to work; this button prints the worked answers too.
+PRINT_CHOICE = ('<p class="q-print" hidden><button type="button" class="q-print-answers">Print with answers'
+                '</button>Printing this page gives its questions with room for working, without the answers. '
+                'Print with answers adds each worked answer and mark scheme.</p>\n')
+
+
 def visit_question(self, node):
+    if not getattr(self, "_q_print_written", False) and not (node.get("template") or {}).get("tryFirst"):
+        self._q_print_written = True
+        self.body.append(PRINT_CHOICE)
     self.body.append(self.starttag(node, "section", CLASS="q", **{"data-q": node["qid"]}))
     payload = json.dumps(node["data"], ensure_ascii=False).replace("</", "<\\/")
     self.body.append(f'<script type="application/json" class="q-data">{payload}</script>\n')
@@ -446,21 +671,88 @@ def _input(cls: str, ident: str, label: str, described_by: str) -> str:
             f'spellcheck="false" aria-describedby="{described_by}"></label>')
 
 
-def _numeric_html(base: str, part: dict) -> str:
+#: Feedback that names an idea links the section that teaches it: the first pattern (a
+#: JavaScript and Python regular expression, case-insensitive) the message matches, most
+#: specific first. (page, section title or "" for the page's top).
+IDEAS = (
+    (r"third law|third-law|equal (in magnitude )?and opposite|pairs? of forces|same type", "book/understand/third-law", ""),
+    (r"two dimensions|component|perpendicular|\b(cos|sin|tan)\b|at an angle", "book/understand/momentum-in-two-dimensions",
+     "The vector picture"),
+    (r"kinetic energy|elastic", "book/understand/elastic-and-inelastic", "Kinetic energy in the sticking trolleys"),
+    (r"relative speed|speed of (approach|separation)", "book/understand/elastic-and-inelastic", "Relative speed"),
+    (r"explosion|recoil|from rest", "book/understand/conservation-of-momentum", "Explosions"),
+    (r"conserv|total momentum|momentum before|momentum after", "book/understand/conservation-of-momentum",
+     "Using it in a straight line"),
+    (r"area under|impulse|gradient|momentum.time|force.time", "book/understand/momentum-time-graph", ""),
+    (r"terminal|drag|air resistance|upthrust", "book/understand/friction-drag-terminal-velocity", "The skydiver"),
+    (r"friction", "book/understand/friction-drag-terminal-velocity", "Friction and drag"),
+    (r"\blift\b|contact force", "book/understand/weight", "In a lift"),
+    (r"weight|W = mg|gravitational field", "book/understand/weight", ""),
+    (r"rate of change of momentum|change in momentum|Δp|resultant force|F = ma|second law",
+     "book/understand/momentum-and-second-law", "Newton's second law"),
+    (r"momentum", "book/understand/momentum-and-second-law", "Linear momentum"),
+    (r"first law|resists a change|constant velocity|\bmass\b", "book/understand/mass-and-first-law", ""),
+    (r"significant figures|\bs\.f\.|round", "book/exam/getting-the-marks", ""),
+)
+
+
+def _section_anchor(env, docname: str, title: str) -> str | None:
+    """The anchor ("#linear-momentum") of a page's section, found by its title in the page's
+    table of contents; "" for the page's top, None when the page has no such section."""
+    if not title:
+        return ""
+    for reference in env.tocs[docname].findall(nodes.reference):
+        if reference.astext().replace("\u2019", "'") == title:  # smart quotes in headings
+            return reference["anchorname"]
+    return None
+
+
+def _idea_links(translator) -> list[dict]:
+    """IDEAS as links from the page being written: [{pattern, href, title}]."""
+    builder = translator.builder
+    env, here, links = builder.env, builder.current_docname, []
+    for pattern, docname, section in IDEAS:
+        if docname not in env.all_docs:  # a smaller book (a test's) without that page
+            continue
+        anchor = _section_anchor(env, docname, section)
+        if anchor is None:
+            logger.warning(f"questions.IDEAS: page {docname!r} has no section {section!r}")
+            continue
+        page = env.titles[docname].astext()
+        links.append({"pattern": pattern, "href": builder.get_relative_uri(here, docname) + anchor,
+                      "title": f"{section} ({page})" if section else page})
+    return links
+
+
+#: Under the first unit box of a page: how to type units and powers, before any mistake.
+UNIT_HINT = ("Type a unit with its symbols, a space between them and ^ for a power: N s, "
+             "kg m s^-1 or kg m/s, m s^-2. Units are case-sensitive: kg, not Kg.")
+
+
+def _field_label(label: str, name: str) -> str:
+    """A field's name: "(a) value" for part (a) of several, "Value" for a question of one part."""
+    return f"{label.strip()} {name.lower()}" if label.strip() else name
+
+
+def _numeric_html(base: str, part: dict, label: str = "", hint: bool = False) -> str:
     feedback, html = f"{base}-feedback", []
     if part["direction"] == "signed":
         html.append(f'<p class="q-note" id="{base}-note">Give a signed value: positive is '
                     f"{escape(part['positive'])}.</p>")
         feedback += f" {base}-note"
     html.append('<div class="q-fields">')
-    html.append(_input("q-value", f"{base}-value", "Value", feedback))
-    html.append(_input("q-unit", f"{base}-unit", "Unit", feedback))
+    html.append(_input("q-value", f"{base}-value", escape(_field_label(label, "Value")), feedback))
+    html.append(_input("q-unit", f"{base}-unit", escape(_field_label(label, "Unit")),
+                       f"{base}-unit-hint {feedback}" if hint else feedback))
     if part["direction"] == "choice":
         options = "".join(f'<option value="{escape(c)}">{escape(c)}</option>' for c in part["choices"])
-        html.append(f'<label class="q-field" for="{base}-direction"><span>Direction</span>'
+        html.append(f'<label class="q-field" for="{base}-direction"><span>'
+                    f'{escape(_field_label(label, "Direction"))}</span>'
                     f'<select class="q-direction" id="{base}-direction" aria-describedby="{feedback}">'
                     f'<option value="">Choose…</option>{options}</select></label>')
     html.append("</div>")
+    if hint:
+        html.append(f'<p class="q-unit-hint" id="{base}-unit-hint">{escape(UNIT_HINT)}</p>')
     return "".join(html)
 
 
@@ -496,7 +788,12 @@ def visit_question_form(self, node):
                       f' data-variant="0" data-kind="{escape(" ".join(template["kinds"]))}"'
                       f' data-variants="{template["variants"]}"')
     html = [f'<form class="q-form"{attributes} hidden novalidate>']
-    for part, legend in zip(data["parts"], node["legends"], strict=True):
+    if not getattr(self, "_q_ideas_written", False):  # once a page: feedback's links to the ideas
+        self._q_ideas_written = True
+        ideas = json.dumps(_idea_links(self), ensure_ascii=False).replace("</", "<\\/")
+        html.insert(0, f'<script type="application/json" class="q-ideas">{ideas}</script>')
+    labels = node.get("labels") or [""] * len(data["parts"])
+    for part, legend, label in zip(data["parts"], node["legends"], labels, strict=True):
         base = f"q-{data['id']}-{part['id']}"
         kind = part.get("kind", "numeric")
         html.append(f'<fieldset class="q-part" data-part="{part["id"]}" data-kind="{kind}">'
@@ -506,13 +803,16 @@ def visit_question_form(self, node):
         elif kind == "explain":
             html.append(_explain_html(base, part, data))
         else:
-            html.append(_numeric_html(base, part))
+            hint = not getattr(self, "_q_unit_hint_written", False)
+            self._q_unit_hint_written = True  # the translator is one page's: once a page
+            html.append(_numeric_html(base, part, label, hint))
         html.append(f'<p class="q-feedback" id="{base}-feedback" role="status"></p>'
                     '<p class="q-part-marks"></p></fieldset>')
     new = ('<button type="button" class="q-new">New numbers</button>'
            if template and template["variants"] > 1 else "")
     html.append('<div class="q-buttons"><button type="submit" class="q-check">Check</button>'
-                f'{new}<button type="reset" class="q-clear">Clear my answers</button></div>'
+                f'{new}<button type="reset" class="q-clear">Clear my answers</button>'
+                '<button type="button" class="q-undo" hidden>Undo clear</button></div>'
                 '<p class="q-score" aria-live="polite"></p></form>\n')
     self.body.append("".join(html))
     raise nodes.SkipNode
@@ -605,14 +905,19 @@ def setup(app):
     app.add_node(practice_progress, html=(visit_practice_progress, None))
     app.add_directive("question", QuestionDirective)
     app.add_directive("answer-key", AnswerKeyDirective)
+    app.add_directive("try-similar", TrySimilarDirective)
+    app.add_directive("book-map", BookMapDirective)
+    app.add_node(book_map)
+    app.add_node(try_similar)
     app.add_directive("practice-progress", PracticeProgressDirective)
     app.connect("config-inited", add_static_path)
     app.connect("env-purge-doc", purge)
     app.connect("env-merge-info", merge)
     app.connect("env-get-outdated", refresh_answer_keys)
     app.connect("doctree-read", answer_key_has_maths)
+    app.connect("doctree-read", find_self_tests)
     app.connect("doctree-resolved", resolve)
     app.connect("html-page-context", add_assets)
     app.connect("build-finished", write_variants)
     return {"version": __version__, "parallel_read_safe": True, "parallel_write_safe": True,
-            "env_version": 1}
+            "env_version": 2}

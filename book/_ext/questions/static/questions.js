@@ -216,6 +216,53 @@
       "\". Use symbols such as kg, m, s, N, J, with powers written s^-1 or s-1: for example N s, kg m s^-1 or m/s.");
   }
 
+  /* Units are case-sensitive: "Kg", "M/S", "KG M S^-1" are not units, or not this one. The
+   * same text with its letters re-cased into symbols that give the expected dimensions
+   * (fewest letters changed, then the expected unit's own scale), or null. */
+  function recasedUnit(text, expectedDims, expectedScale) {
+    var t = normalise(text), runs = t.match(/[A-Za-z]+/g) || [];
+    if (!runs.length || runs.some(function (r) { return r.length > 6; })) return null;
+    function casings(run) { // every casing of the run that reads as unit symbols
+      var out = [];
+      for (var bits = 0; bits < (1 << run.length); bits++) {
+        var c = "", changed = 0;
+        for (var i = 0; i < run.length; i++) {
+          var ch = bits & (1 << i) ? run[i].toUpperCase() : run[i].toLowerCase();
+          if (ch !== run[i]) changed += 1;
+          c += ch;
+        }
+        if (UNIT_WORDS[c.toLowerCase()] !== undefined || segmentations(c).length) out.push({ text: c, changed: changed });
+      }
+      return out;
+    }
+    var candidates = [{ text: "", rest: t, changed: 0 }];
+    for (var r = 0; r < runs.length; r++) {
+      var options = casings(runs[r]), next = [];
+      if (!options.length) return null;
+      candidates.forEach(function (c) {
+        var at = c.rest.indexOf(runs[r]);
+        options.forEach(function (o) {
+          next.push({ text: c.text + c.rest.slice(0, at) + o.text, rest: c.rest.slice(at + runs[r].length),
+            changed: c.changed + o.changed });
+        });
+      });
+      if (next.length > 256) return null;
+      candidates = next;
+    }
+    var best = null;
+    candidates.forEach(function (c) {
+      if (!c.changed) return;
+      var full = c.text + c.rest, parsed = parseUnit(full);
+      if (!parsed.ok || parsed.empty) return;
+      var fits = parsed.readings.filter(function (reading) { return sameDims(reading.dims, expectedDims); });
+      if (!fits.length) return;
+      var exact = fits.some(function (reading) { return Math.abs(reading.scale / expectedScale - 1) < 1e-9; });
+      var rank = c.changed * 2 + (exact ? 0 : 1);
+      if (!best || rank < best.rank) best = { text: full, rank: rank };
+    });
+    return best && best.text;
+  }
+
   /* A value typed with its unit in the number box ("15 N s") is split in two. */
   function splitValueAndUnit(text) {
     var t = normalise(text);
@@ -295,9 +342,25 @@
     var number = parseNumber(valueText);
     if (!number.ok) return outcome("unreadable-number", number.message);
     var unit = parseUnit(unitText);
+    var expected = parseUnit(part.unit).readings[0];
+    // A unit in the wrong case: say so, and mark the answer as if it were written right.
+    var fits = unit.ok && unit.readings.some(function (r) { return sameDims(r.dims, expected.dims); });
+    var recased = !fits && !answer.recased && recasedUnit(unitText, expected.dims, expected.scale);
+    if (recased) {
+      if (recased.replace(/\s+/g, "") === normalise(part.unit).replace(/\s+/g, "")) recased = normalise(part.unit);
+      var asMeant = mark(part, { value: valueText, unit: recased, direction: direction, recased: true });
+      var caseNote = "Units are case-sensitive: " + superscript(normalise(unitText)) + " is not " +
+        (unit.ok ? "a unit of " + part.quantity : "a unit") + ". You probably meant " + superscript(recased) + ".";
+      if (asMeant.code === "correct") {
+        return outcome("unit-case", caseNote + " With that unit the answer is right.",
+          { si: asMeant.si, valueRight: true, meant: recased });
+      }
+      asMeant.message = caseNote + " " + asMeant.message;
+      asMeant.meant = recased;
+      return asMeant;
+    }
     if (!unit.ok) return outcome("unreadable-unit", unit.message);
 
-    var expected = parseUnit(part.unit).readings[0];
     var minSf = part.minSf || 2, checkSf = part.checkSf || 3;
     var mode = part.direction || "none";
     var quantity = part.quantity, units = superscript(part.units || part.unit);
@@ -435,10 +498,10 @@
 
   // Outcomes that earn every mark of the part but the A1: the value is right, but its unit
   // is missing or wrong, it has too few s.f., or it was rounded or used g = 9.8 part-way.
-  var ALL_BUT_A1 = ["missing-unit", "prefix", "angle-unit", "more-sf", "g-9.8", "rounded-part-way"];
+  var ALL_BUT_A1 = ["missing-unit", "prefix", "angle-unit", "unit-case", "more-sf", "g-9.8", "rounded-part-way"];
   var WRONG_WAY = ["direction", "sign", "missing-direction"];
   // An earlier answer this good is not an error, so nothing is carried forward from it.
-  var NOT_AN_ERROR = ["correct", "missing-unit", "more-sf", "prefix", "angle-unit"];
+  var NOT_AN_ERROR = ["correct", "missing-unit", "more-sf", "prefix", "angle-unit", "unit-case"];
 
   /* Which mark lines a part's outcome loses: "none", "all", "A1", "direction" or a count kept. */
   function lost(result, part) {
@@ -552,7 +615,7 @@
   }
 
   var engine = {
-    parseNumber: parseNumber, parseUnit: parseUnit, splitValueAndUnit: splitValueAndUnit,
+    parseNumber: parseNumber, parseUnit: parseUnit, splitValueAndUnit: splitValueAndUnit, recasedUnit: recasedUnit,
     mark: mark, markQuestion: markQuestion, award: award, superscript: superscript
   };
 
@@ -641,12 +704,28 @@
     return next;
   }
 
+  /* Feedback that names an idea links the section that teaches it (the build's list, once a
+   * page: book/_ext/questions IDEAS, most specific first). */
+  var ideas = null;
+  function ideaFor(message) {
+    if (ideas === null) {
+      var script = document.querySelector("script.q-ideas");
+      try { ideas = script ? JSON.parse(script.textContent) : []; } catch (e) { ideas = []; }
+    }
+    for (var i = 0; i < ideas.length; i++) {
+      if (new RegExp(ideas[i].pattern, "i").test(message)) return ideas[i];
+    }
+    return null;
+  }
+
   function setUp(section) {
     var data = JSON.parse(section.querySelector("script.q-data").textContent);
     var form = section.querySelector("form.q-form");
     var worked = section.querySelector(".q-worked");
     var score = form.querySelector(".q-score");
     var newButton = form.querySelector("button.q-new");
+    var undoButton = form.querySelector("button.q-undo");
+    var undone = null; // what Clear my answers cleared, until Undo clear or another change
     var key = form.getAttribute("data-question");
     form.hidden = false;
 
@@ -705,6 +784,15 @@
         var selfMarked = result.code === "self-marked";
         if (f.points && selfMarked) f.points.hidden = false;
         f.feedback.textContent = (selfMarked ? "" : right ? "✓ " : "✗ ") + result.message;
+        var idea = !right && !selfMarked && ideaFor(result.message);
+        if (idea) {
+          var link = document.createElement("a");
+          link.className = "q-idea";
+          link.href = idea.href;
+          link.textContent = idea.title;
+          f.feedback.appendChild(document.createTextNode(" Revisit: "));
+          f.feedback.appendChild(link);
+        }
         // One part alone: its marks are the question's, shown once in .q-score.
         if (f.marks && data.parts.length > 1) {
           f.marks.textContent = marksText(got[0], got[1]) + (result.code === "ecf" ? " (ecf)" : "");
@@ -744,6 +832,12 @@
       });
       if (score) score.textContent = "";
       if (worked) { worked.open = false; worked.hidden = true; }
+      dropUndo();
+    }
+
+    function dropUndo() {
+      undone = null;
+      if (undoButton) undoButton.hidden = true;
     }
 
     function restore() {
@@ -790,15 +884,34 @@
     }
 
     form.addEventListener("submit", function (event) { event.preventDefault(); check(true); });
-    form.addEventListener("input", function () { save(storeId(), { answers: answers(), checked: !!(load(storeId()) || {}).checked }); });
+    form.addEventListener("input", function () { dropUndo(); save(storeId(), { answers: answers(), checked: !!(load(storeId()) || {}).checked }); });
     form.addEventListener("change", function (event) { // a ticked marking point re-scores at once
       if (event.target.classList.contains("q-tick")) check("ticks");
     });
+    // Clear my answers can be undone: the cleared answers come back (until the next change).
     form.addEventListener("reset", function (event) {
       event.preventDefault();
+      var before = load(storeId());
       forget(storeId());
       clear();
+      if (before && undoButton) {
+        undone = before;
+        undoButton.hidden = false;
+        undoButton.focus();
+        if (score) score.textContent = "Your answers are cleared. Undo clear brings them back.";
+      }
     });
+    if (undoButton) {
+      undoButton.addEventListener("click", function () {
+        var state = undone;
+        dropUndo();
+        if (!state) return;
+        save(storeId(), state);
+        if (score) score.textContent = "";
+        restore();
+        form.querySelector("button.q-clear").focus();
+      });
+    }
     if (newButton) {
       newButton.addEventListener("click", function () {
         newButton.disabled = true;
@@ -853,8 +966,22 @@
     else if (!button) solution.classList.add("toggle-shown"); // not made a toggle yet: stay open
   }
 
+  /* Print with answers: the page prints its worked answers and mark schemes this once. */
+  function printChoice() {
+    var bar = document.querySelector(".q-print");
+    if (!bar) return;
+    var html = document.documentElement;
+    bar.hidden = false;
+    bar.querySelector("button").addEventListener("click", function () {
+      html.classList.add("q-print-answers");
+      window.print();
+    });
+    window.addEventListener("afterprint", function () { html.classList.remove("q-print-answers"); });
+  }
+
   function start() {
     document.documentElement.classList.add("q-js");
+    printChoice();
     document.addEventListener("q-checked", openSolution);
     Array.prototype.forEach.call(document.querySelectorAll("section.q[data-q]"), setUp);
   }

@@ -28,6 +28,7 @@ from docutils import nodes
 from docutils.frontend import OptionParser
 from docutils.utils import new_document
 from latex_print import _latex_escape, _raw_latex  # same folder (book/_latex)
+from questions import page_of  # book/_ext/questions: the questions this prints
 from sphinx.application import Sphinx
 from sphinx.util import logging
 from sphinx.util.docutils import SphinxFileOutput
@@ -54,20 +55,6 @@ class Printed:
 
 def _has_class(node: nodes.Node, name: str) -> bool:
     return isinstance(node, nodes.Element) and name in node.get("classes", [])
-
-
-def _page_of(node: nodes.Node, env) -> str | None:
-    """The page a node of the merged doctree came from.
-
-    Sphinx marks each page's sections with their docname when it merges the pages
-    (sphinx-jupyterbook-latex moves the start_of_file markers, so they are no guide).
-    """
-    parent = node.parent
-    while parent is not None:
-        if isinstance(parent, nodes.Element) and parent.get("docname") in env.all_docs:
-            return parent["docname"]
-        parent = parent.parent
-    return None
 
 
 def _answer_lines(container: nodes.container) -> None:
@@ -142,7 +129,7 @@ def prepare(app: Sphinx, doctree: nodes.document, docname: str) -> None:
                 continue
             number_of[container["ids"][0]] = number = len(number_of) + 1
             _number_title(container, number)
-            printed.questions.append((_page_of(container, app.env), container.deepcopy()))
+            printed.questions.append((page_of(container, app.env), container.deepcopy()))
     for key in doctree.findall(nodes.container):
         if _has_class(key, "q-key"):
             _drop_try_first(key)

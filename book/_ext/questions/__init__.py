@@ -520,15 +520,23 @@ def _answer_key_content(app, fromdoc: str) -> list[nodes.Node]:
     return content
 
 
-def _source_page(env, node, docname: str) -> str:
-    """The page a node came from: in the LaTeX builder's merged book, the nearest section
-    marked with its page; otherwise the page being resolved."""
+def page_of(node, env) -> str | None:
+    """The page a node of the merged doctree came from (the LaTeX builder's one book).
+
+    Sphinx marks each page's sections with their docname when it merges the pages
+    (sphinx-jupyterbook-latex moves the start_of_file markers, so they are no guide).
+    """
     parent = node.parent
     while parent is not None:
         if isinstance(parent, nodes.Element) and parent.get("docname") in env.all_docs:
             return parent["docname"]
         parent = parent.parent
-    return docname
+    return None
+
+
+def _source_page(env, node, docname: str) -> str:
+    """The page a node came from: in a merged book the page_of it, else the page resolved."""
+    return page_of(node, env) or docname
 
 
 def resolve(app, doctree, docname):

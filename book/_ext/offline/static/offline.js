@@ -31,7 +31,15 @@
     if (reloading) location.reload(); // the new version took over at the student's request
   });
 
-  navigator.serviceWorker.register(root + "sw.js").then(function (registration) {
+  // After the page has loaded: the book's files then download behind it, not before it.
+  function register() {
+    navigator.serviceWorker.register(root + "sw.js").then(watch)
+      .catch(function () { /* no service worker: the site works online as before */ });
+  }
+  if (document.readyState === "complete") register();
+  else window.addEventListener("load", register);
+
+  function watch(registration) {
     if (registration.waiting && navigator.serviceWorker.controller) offer(registration.waiting);
     registration.addEventListener("updatefound", function () {
       var worker = registration.installing;
@@ -41,5 +49,5 @@
       });
     });
     registration.update().catch(function () { /* offline: the next visit checks again */ });
-  }).catch(function () { /* no service worker: the site works online as before */ });
+  }
 })();

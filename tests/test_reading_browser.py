@@ -142,6 +142,7 @@ def test_every_figure_s_text_is_at_least_11_css_px_on_a_390_px_phone(site_dir):
         page = context.new_page()
         for path in site_pages(site_dir):
             page.goto(f"{base}/{path}", wait_until="load")
+            page.wait_for_load_state("networkidle")  # the root page redirects
             texts = page.evaluate(FIGURE_TEXT)
             measured += len(texts)
             small += [f"{path} {t['figure']}: {t['text']!r} at {t['px']:.1f} px"
@@ -170,6 +171,7 @@ def test_no_page_shows_code_or_a_code_toggle(site_dir):
         page = browser.new_page(viewport=DESKTOP)
         for path in site_pages(site_dir):
             page.goto(f"{base}/{path}", wait_until="load")
+            page.wait_for_load_state("networkidle")  # the root page redirects
             found = page.evaluate("""() => {
               const out = [];
               for (const el of document.querySelectorAll('.cell_input, .cell .highlight, details.hide, .toggle-details, summary'))

@@ -52,6 +52,10 @@ def join_units_in(doctree: nodes.Node) -> None:
         previous = ""  # the text just before, in this block: does it end in a number?
         pending = None  # a text of spaces alone right after a number (MyST splits lines)
         for node in list(block.findall(lambda n: isinstance(n, (nodes.Text, nodes.math)))):
+            if isinstance(node, nodes.Text) and isinstance(node.parent, nodes.math):
+                continue  # the maths' own source, dealt with as its math node
+            if isinstance(node, nodes.math) and node.astext().lstrip().startswith(("^", "_")):
+                continue  # a power written as maths (10$^{-6}$ m): the number goes on to its unit
             if isinstance(node, nodes.math) or _inside_code(node, block):
                 previous, pending = node.astext(), None
                 continue
@@ -64,16 +68,25 @@ def join_units_in(doctree: nodes.Node) -> None:
             after_number = previous[-1:].isdigit() or pending is not None
             joined = join_units(text, after_number=after_number)
             if pending is not None and LEADING_UNIT.match(text):
-                pending.parent.replace(pending, nodes.Text(UNIT_SPACE))  # "2.0" "\n" "m s" -> joined
+                _replace(pending, nodes.Text(UNIT_SPACE))  # "2.0" "\n" "m s" -> joined
             pending = None
             if joined != text:
-                node.parent.replace(node, nodes.Text(joined))
+                _replace(node, nodes.Text(joined))
             previous = joined
 
 
 def _join_late(app: Sphinx, doctree: nodes.document, docname: str) -> None:
     """Text added once the post-transforms have run (e.g. the answer key) is joined too."""
     join_units_in(doctree)
+
+
+def _replace(old: nodes.Text, new: nodes.Text) -> None:
+    """Put ``new`` where ``old`` is. (Element.replace finds a child by ==, and two Text
+    nodes with the same text are equal: it could replace another "\n".)"""
+    parent = old.parent
+    index = next(i for i, child in enumerate(parent.children) if child is old)
+    parent.children[index] = new
+    new.parent = parent
 
 
 def _inside_code(node: nodes.Node, block: nodes.Element) -> bool:

@@ -14,7 +14,11 @@ The rules (Cambridge mark schemes and the SI brochure):
   significant figures (a value that rounds to zero keeps its places: 0.00);
 * the whole part of a number of five digits or more is grouped in threes with a
   narrow no-break space (U+202F): 1500, 30 000;
-* x 10^n when the rounded size is 10^5 or more, or below 10^-3: 1.5 × 10⁵, 2.0 × 10⁻⁴.
+* x 10^n when the rounded size is 10^5 or more, or below 10^-3: 1.5 × 10⁵, 2.0 × 10⁻⁴;
+* a number is joined to its unit, and a unit's symbols to each other, with a no-break
+  space (U+00A0), so "50 m s⁻¹" never breaks across lines: ``format_quantity`` and
+  ``unit_text`` write them so, and ``join_units`` mends prose that was typed by hand
+  (the book's docutils transform, book/_ext/notation, runs it over every page).
 """
 
 from __future__ import annotations
@@ -26,6 +30,8 @@ from decimal import ROUND_HALF_UP, Decimal, localcontext
 MINUS = "\N{MINUS SIGN}"
 #: Groups the digits of 10 000 and above without letting a line break split them.
 DIGIT_GROUP_SEPARATOR = "\N{NARROW NO-BREAK SPACE}"
+#: Joins a number to its unit and a unit's symbols to each other (CLARIFICATIONS, Reading).
+UNIT_SPACE = "\N{NO-BREAK SPACE}"
 TIMES = "\N{MULTIPLICATION SIGN}"
 #: Sizes outside [SMALLEST_PLAIN, LARGEST_PLAIN) are written as a power of ten.
 SMALLEST_PLAIN = Decimal("0.001")
@@ -104,3 +110,59 @@ def plain_number(text: str) -> str:
     text = text.replace(MINUS, "-").replace(DIGIT_GROUP_SEPARATOR, "")
     return re.sub(rf" {TIMES} 10([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)$",
                   lambda m: "e" + m[1].translate(str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")), text)
+
+
+#: Units written straight after the number, with no space: 30°, 5 %.
+_UNSPACED = ("°", "%", "")
+
+
+def unit_text(unit: str) -> str:
+    """A unit as text, its symbols joined by no-break spaces and its powers raised:
+    "m s^-1" -> "m\u00a0s⁻¹", "kg m s^-1" -> "kg\u00a0m\u00a0s⁻¹"."""
+    unit = re.sub(r"\^(-?\d+)", lambda m: m.group(1).translate(_SUPERSCRIPTS), unit)
+    return UNIT_SPACE.join(unit.split())
+
+
+def format_quantity(value: float, sig_figs: int | None, unit: str, *, decimals: int | None = None,
+                    plus: bool = False) -> str:
+    """A value with its unit, never split by a line break: format_quantity(50, 2, "m s^-1")
+    -> "50\u00a0m\u00a0s⁻¹"; format_quantity(30, 2, "°") -> "30°"."""
+    number = format_number(value, sig_figs, decimals=decimals, plus=plus).replace(" ", UNIT_SPACE)
+    written = unit_text(unit)
+    return number + ("" if written in _UNSPACED else UNIT_SPACE) + written
+
+
+#: The unit symbols that ``join_units`` knows in prose: every unit the questions use
+#: (tests/test_notation.py checks that against the bank) and a few the notes add.
+UNIT_SYMBOLS = ("kg", "g", "m", "km", "cm", "mm", "s", "ms", "h", "min", "N", "kN", "J", "kJ", "W", "kW",
+                "Pa", "kPa", "K", "mol", "rad", "Hz")
+_POWER = "(?:[⁻]?[⁰¹²³⁴⁵⁶⁷⁸⁹]+)?"
+_SYMBOL = rf"(?:{'|'.join(sorted(UNIT_SYMBOLS, key=len, reverse=True))}){_POWER}(?![A-Za-z0-9])"
+#: One or more unit symbols, each after a space or a slash: "kg m s⁻¹", "m/s".
+_UNITS = rf"{_SYMBOL}(?:(?:[ \t\n\u00a0\u202f]+|/){_SYMBOL})*"
+#: A number as prose writes it: 12 000, 12\u202f000, −0.25, 1.5 × 10⁵.
+_NUMBER = (rf"(?<![\w.]){MINUS}?(?:\d{{1,3}}(?:[ \u202f]\d{{3}})+(?![\d.])|\d+(?:\.\d+)?)"
+           rf"(?:[ \u00a0\u202f]?{TIMES}[ \u00a0\u202f]?10[⁻]?[⁰¹²³⁴⁵⁶⁷⁸⁹]+)?")
+VALUE_WITH_UNIT = re.compile(rf"({_NUMBER})([ \t\n\u00a0]+)({_UNITS})")
+#: A unit at the start of a text that follows a number in another node (a glued value).
+LEADING_UNIT = re.compile(rf"^([ \t\n]*)({_UNITS})")
+
+
+def _join_number(number: str) -> str:
+    number = re.sub(r"(?<=\d) (?=\d{3})", DIGIT_GROUP_SEPARATOR, number)  # 12 000 -> 12\u202f000
+    return number.replace(" ", UNIT_SPACE)  # around × 10ⁿ
+
+
+def _join_unit_run(units: str) -> str:
+    return re.sub(r"[ \t\n]+", UNIT_SPACE, units)
+
+
+def join_units(text: str, *, after_number: bool = False) -> str:
+    """``text`` with every number joined to its unit, and the unit's symbols to each other,
+    by no-break spaces: "to 12 000 kg m s" -> "to 12\u202f000\u00a0kg\u00a0m\u00a0s".
+    ``after_number``: the text follows a number written elsewhere (a glued value), so a unit
+    at its very start is joined to it too: " N. This" -> "\u00a0N. This"."""
+    text = VALUE_WITH_UNIT.sub(lambda m: _join_number(m[1]) + UNIT_SPACE + _join_unit_run(m[3]), text)
+    if after_number:
+        text = LEADING_UNIT.sub(lambda m: (UNIT_SPACE if m[1] else "") + _join_unit_run(m[2]), text)
+    return text

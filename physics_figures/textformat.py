@@ -18,6 +18,8 @@ import html
 import re
 from dataclasses import dataclass
 
+from .notation import join_units
+
 TAGS = ("sup", "sub", "em", "strong")
 _TOKEN = re.compile(r"<(/?)([a-z]+)>")
 
@@ -58,11 +60,23 @@ def parse(source: str) -> list[list[Span]]:
     return paragraphs
 
 
+def _joined(spans: list[Span]) -> list[Span]:
+    """Each number joined to its unit by no-break spaces (notation.join_units), also when
+    the unit's text is the next span's: "2.0 m s<sup>−1</sup>" never breaks on a screen."""
+    out, previous = [], ""
+    for span in spans:
+        text = join_units(span.text, after_number=previous[-1:].isdigit())
+        out.append(Span(text, span.tags))
+        previous = text
+    return out
+
+
 def to_html(source: str, *, paragraphs: bool = True) -> str:
-    """HTML for the site and for Moodle; one paragraph without <p> if paragraphs=False."""
+    """HTML for the site and for Moodle; one paragraph without <p> if paragraphs=False.
+    Numbers are joined to their units with no-break spaces (U+00A0)."""
     out = []
     for spans in parse(source):
-        body = "".join(_wrap_html(span) for span in spans)
+        body = "".join(_wrap_html(span) for span in _joined(spans))
         out.append(f"<p>{body}</p>" if paragraphs else body)
     return "\n".join(out) if paragraphs else " ".join(out)
 

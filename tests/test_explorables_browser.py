@@ -219,7 +219,7 @@ def test_skydiver_largest_deceleration_is_a_few_g_just_after_the_parachute_opens
     assert dive.parachute_opens_at < t_d == dive.time[dive.acceleration.argmin()]
     assert value_of(box, "decel") == pytest.approx(largest, rel=1e-6)
     assert 2 < value_of(box, "decelG") < 6
-    assert shown(box, "decelG") == "4.0 g"
+    assert shown(box, "decelG") == "4.0\u00a0g"
     expect(box.locator(".ex-warning")).to_be_hidden()  # empty: nothing unrealistic here
     box.get_by_role("button", name="D", exact=True).click()
     assert value_of(box, "t") == pytest.approx(t_d, rel=1e-12)
@@ -316,10 +316,10 @@ def test_momentum_triangle_reproduces_pucks_p_and_q(visit):
     missing = scenarios.PUCKS_PQ.missing
     assert value_of(box, "q") == pytest.approx(missing.magnitude, rel=1e-9)
     assert round(value_of(box, "q"), 2) == 0.77
-    assert shown(box, "q") == "0.767 N s"
+    assert shown(box, "q") == "0.767\u00a0N\u00a0s"
     assert shown(box, "phi") == "36.8°"
-    assert shown(box, "qAlong") == "0.614 N s"
-    assert shown(box, "qAcross") == "0.460 N s"
+    assert shown(box, "qAlong") == "0.614\u00a0N\u00a0s"
+    assert shown(box, "qAcross") == "0.460\u00a0N\u00a0s"
 
 
 def test_momentum_triangle_angle_by_keyboard_follows_conservation(visit):
@@ -415,7 +415,7 @@ def test_momentum_time_reader_by_keyboard_reads_the_car_graph(visit):
     slider.press("End")
     assert value_of(box, "t") == 16
     assert value_of(box, "f") == history.force_at(16.0) == -2000  # Notes: -12 000 / 6.0
-    assert shown(box, "f") == "\u22122000 N"
+    assert shown(box, "f") == "\u22122000\u00a0N"
 
 
 def test_momentum_time_reader_follows_the_pointer(visit):

@@ -7,7 +7,14 @@ from pathlib import Path
 
 import pytest
 
-from physics_figures.notation import format_number, plain_number, round_number, tex_number
+from physics_figures.notation import (
+    format_number,
+    format_quantity,
+    join_units,
+    plain_number,
+    round_number,
+    tex_number,
+)
 
 CASES = json.loads((Path(__file__).parent / "notation_cases.json").read_text())["cases"]
 
@@ -60,3 +67,34 @@ def test_no_other_code_rounds_a_number_for_print():
         if lines and path.name != "notation.js":
             offenders.append(path.relative_to(root).as_posix())
     assert not offenders, f"format numbers with physics_figures.notation / notation.js: {offenders}"
+
+
+QUANTITIES = json.loads((Path(__file__).parent / "notation_cases.json").read_text())["quantities"]
+
+
+@pytest.mark.parametrize("case", QUANTITIES, ids=lambda c: f"{c['value']}-{c['unit']}")
+def test_format_quantity_joins_number_and_unit_as_the_shared_table_says(case):
+    text = format_quantity(case["value"], case.get("sig_figs"), case["unit"], decimals=case.get("decimals"))
+    assert text == case["text"], case.get("why", "")
+
+
+PROSE = json.loads((Path(__file__).parent / "notation_cases.json").read_text())["prose"]
+
+
+@pytest.mark.parametrize("case", PROSE, ids=lambda c: c["text"].strip())
+def test_join_units_joins_every_number_to_its_unit_in_prose(case):
+    assert join_units(case["text"], after_number=case.get("after_number", False)) == case["joined"], case.get("why")
+
+
+def test_every_unit_the_questions_use_is_one_join_units_knows():
+    from physics_figures.bank import TEMPLATES
+    from physics_figures.notation import UNIT_SYMBOLS
+
+    used = set()
+    for template in TEMPLATES.values():
+        for part in template.variant(0).parts:
+            for symbol in re.split(r"[ /]", getattr(part, "unit", "") or ""):
+                used.add(re.sub(r"\^-?\d+$", "", symbol))
+    used -= {"", "degrees", "per", "%", "°"}
+    assert used, "no units found: the bank's interface changed"
+    assert used <= set(UNIT_SYMBOLS), sorted(used - set(UNIT_SYMBOLS))

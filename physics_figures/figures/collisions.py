@@ -16,7 +16,7 @@ from matplotlib.text import Annotation, Text
 from ..models import total_kinetic_energy, total_momentum
 from ..notation import format_number
 from ._text import MOMENTUM_UNIT, VELOCITY_UNIT, a_or_an, plain
-from .style import MAIN, SECOND, new_axes, styled
+from .style import MAIN, SECOND, SMALL_TEXT, new_axes, styled
 
 
 class CollisionDiagram(NamedTuple):
@@ -51,7 +51,7 @@ def _row(ax, y, masses, velocities, *, joined):
             f"{format_number(m, 2)} kg",
             ha="center",
             va="center",
-            fontsize="small",
+            fontsize=SMALL_TEXT,
             bbox={"facecolor": "white", "edgecolor": "none", "pad": 1},
         )
         blocks.append(block)
@@ -64,7 +64,7 @@ def _row(ax, y, masses, velocities, *, joined):
         right = block.get_x() + block.get_width()
         if v == 0:
             arrows.append(
-                ax.annotate("at rest", xy=(right + 0.1, y + 0.35), va="center", fontsize="small")
+                ax.annotate("at rest", xy=(right + 0.1, y + 0.35), va="center", fontsize=SMALL_TEXT)
             )
             continue
         start = (right + 0.1, y + 0.35) if v > 0 else (block.get_x() - 0.1, y + 0.35)
@@ -89,7 +89,7 @@ def _row(ax, y, masses, velocities, *, joined):
             f"{format_number(abs(v), 2)} {VELOCITY_UNIT}",
             ha="center",
             va="bottom",
-            fontsize="small",
+            fontsize=SMALL_TEXT,
         )
     return blocks, arrows
 
@@ -120,7 +120,7 @@ def plot_collision(
             f"total p = {format_number(p, 2)} {MOMENTUM_UNIT}\ntotal Eₖ = {format_number(ek, 2)} J",
             ha="right",
             va="center",
-            fontsize="small",
+            fontsize=SMALL_TEXT,
         )
     ax.set_xlim(-1.2, 8.0)
     ax.set_ylim(-0.2, 2.5)

@@ -18,7 +18,7 @@ from matplotlib.text import Annotation
 from ..models.drag import Skydive
 from ..notation import format_number
 from ._text import ACCELERATION_UNIT, VELOCITY_UNIT, plain
-from .style import FORCE_COLOURS, book_style, styled
+from .style import FORCE_COLOURS, SMALL_TEXT, book_style, styled
 
 #: Line style of each kind of force, so pairs match in greyscale too.
 FORCE_STYLES = {"weight": "-", "drag": "-", "gravitational": "-", "contact": "--"}
@@ -60,7 +60,7 @@ def _draw_arrow(ax, tail, tip, *, kind, text, text_side="right", text_at=None) -
         textcoords="offset points",
         ha="left" if text_side == "right" else "right",
         va="center",
-        fontsize="small",
+        fontsize=SMALL_TEXT,
     )
     return ForceArrow(arrow, label)
 
@@ -201,9 +201,9 @@ def plot_book_on_table() -> ThirdLawDiagram:
             )
         )
         ax.add_patch(Circle((0, -4.2), 2.8, facecolor="#e8e8e8", edgecolor="#111111"))
-        ax.text(0, -1.45, "Earth", ha="center", va="top", fontsize="small")
-        ax.text(0.8, -0.2, "table", ha="right", va="top", fontsize="small")
-        ax.text(0, 0.17, "book", ha="center", va="center", fontsize="small")
+        ax.text(0, -1.45, "Earth", ha="center", va="top", fontsize=SMALL_TEXT)
+        ax.text(0.8, -0.2, "table", ha="right", va="top", fontsize=SMALL_TEXT)
+        ax.text(0, 0.17, "book", ha="center", va="center", fontsize=SMALL_TEXT)
     left.set_title("forces on the book", fontsize="medium")
     right.set_title("their third-law pairs", fontsize="medium")
     on_book = {

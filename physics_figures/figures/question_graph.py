@@ -25,6 +25,10 @@ _MOST_LABELS = 8
 _LABEL_EVERY = (1, 2, 5, 10)
 
 
+#: Inches: about 310 pt of SVG, so 12 pt ticks are >= 11 CSS px in a 320 px wide box.
+QUESTION_GRAPH_SIZE = (4.2, 3.3)
+
+
 class QuestionGraph(NamedTuple):
     axes: Axes
     line: Line2D
@@ -58,7 +62,9 @@ def _axis(axis, low: float, high: float, division: float) -> None:
 @styled
 def plot_question_graph(graph: Graph, *, ax: Axes | None = None) -> QuestionGraph:
     """The graph on a grid of small squares, labelled every few squares, for reading."""
-    ax = new_axes(ax)
+    # narrower than a book figure: a question's graph sits inside the question's box,
+    # about 320 CSS px wide on a 390 px phone, and its labels must stay >= 11 CSS px there
+    ax = new_axes(ax, figsize=QUESTION_GRAPH_SIZE)
     times = [t for t, _ in graph.points]
     values = [v for _, v in graph.points]
     ax.set_xlim(0, graph.time_max)

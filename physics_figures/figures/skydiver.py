@@ -18,7 +18,7 @@ from matplotlib.text import Text
 from ..models.drag import Skydive
 from ..notation import format_number
 from ._text import ACCELERATION_UNIT, VELOCITY_UNIT, a_or_an, plain
-from .style import GUIDE, MAIN, new_axes, styled, unit_label
+from .style import GUIDE, MAIN, SMALL_TEXT, new_axes, styled, unit_label
 
 POINT_LABELS = ("A", "B", "C", "D", "E")
 # Where each letter sits relative to its marker (points), so letters never sit on the curve.
@@ -84,7 +84,7 @@ def plot_velocity_time(skydive: Skydive, *, ax: Axes | None = None) -> SkydiveGr
             ha=ha,
             va="bottom",
             color=GUIDE,
-            fontsize="small",
+            fontsize=SMALL_TEXT,
         )
     markers, labels = _mark_points(ax, dict(skydive.points))
     ax.set_xlim(0, skydive.duration)
@@ -110,7 +110,7 @@ def _mark_opening(ax: Axes, skydive: Skydive, curve_at_opening: float) -> tuple[
         rotation=90,
         ha="right",
         va="bottom",
-        fontsize="small",
+        fontsize=SMALL_TEXT,
         color=GUIDE,
     )
     return line, label
@@ -141,7 +141,7 @@ def plot_resultant_force(
             xy=shown["D"],
             xytext=(-12, 0),
             textcoords="offset points",
-            fontsize="small",
+            fontsize=SMALL_TEXT,
             ha="right",
             va="bottom",
         )
@@ -153,7 +153,7 @@ def plot_resultant_force(
         textcoords="offset points",
         ha="right",
         va="top",
-        fontsize="small",
+        fontsize=SMALL_TEXT,
         color=GUIDE,
     )
     ax.set_xlim(0, skydive.duration)

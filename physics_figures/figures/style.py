@@ -5,8 +5,9 @@ line styles. Figures are read in three places, so the style serves all three:
 
 * print and greyscale: each series differs by line style or marker as well as
   colour, and lines are thick enough to survive a photocopier;
-* a phone: figures are small (5.6 in wide) with large text, so the SVG shrinks
-  to a 390 px screen and the text stays readable;
+* a phone: a figure is 5.6 in (about 410 pt of SVG) and spans the whole 390 px screen
+  (_static/figures.css), and no text in it is smaller than 12 pt, so every label is
+  drawn at least 11 CSS px high there (tests/test_figure_text_browser.py measures it);
 * colour-blind readers: the Okabe-Ito palette (Okabe & Ito, "Color Universal
   Design", 2008), which stays distinct under the common colour-vision deficiencies.
 
@@ -54,17 +55,21 @@ LINESTYLES = ("-", "--", ":", "-.")
 
 #: Size of a full-width figure, inches (5.6 in = 538 CSS px at 96 dpi).
 FIGSIZE = (5.6, 3.6)
+#: The smallest text in any figure, points: ticks, legends, annotations. A 390 px phone
+#: shows a full-width figure at about 0.93 CSS px a point, so this is >= 11 CSS px there
+#: (CLARIFICATIONS, Reading: figure text). Never "small" or "x-small": they go below it.
+SMALL_TEXT = 12.0
 
 RC_PARAMS: dict[str, object] = {
     # text: one sans-serif family, large enough for a phone
     "font.family": "sans-serif",
     "font.sans-serif": ["DejaVu Sans", "Liberation Sans", "Arial", "sans-serif"],
-    "font.size": 11.5,
-    "axes.titlesize": 11.5,
-    "axes.labelsize": 11.5,
-    "xtick.labelsize": 10.5,
-    "ytick.labelsize": 10.5,
-    "legend.fontsize": 10.5,
+    "font.size": 12.5,
+    "axes.titlesize": 12.5,
+    "axes.labelsize": 12.5,
+    "xtick.labelsize": SMALL_TEXT,
+    "ytick.labelsize": SMALL_TEXT,
+    "legend.fontsize": SMALL_TEXT,
     "mathtext.default": "regular",
     # lines: thick, round, distinct
     "lines.linewidth": 2.2,

@@ -19,7 +19,7 @@ from matplotlib.text import Annotation
 from ..models.two_d import GlancingCollision
 from ..notation import format_number
 from ._text import IMPULSE_UNIT, plain
-from .style import GUIDE, MAIN, PALETTE, SECOND, new_axes, styled
+from .style import GUIDE, MAIN, PALETTE, SECOND, SMALL_TEXT, new_axes, styled
 
 
 class TriangleDiagram(NamedTuple):
@@ -80,7 +80,7 @@ def plot_momentum_triangle(
     ]
     along_m, across_m = corner
     m = collision.missing
-    small = {"textcoords": "offset points", "fontsize": "small"}
+    small = {"textcoords": "offset points", "fontsize": SMALL_TEXT}
     labels = [
         ax.annotate(
             f"{moving} before: {format_number(collision.p_before, 3)} {IMPULSE_UNIT}",

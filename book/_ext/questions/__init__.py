@@ -36,6 +36,8 @@ from notation import add_notation_script  # book/_ext/notation: the browser's nu
 from sphinx.util import logging
 from sphinx.util.docutils import SphinxDirective
 
+from physics_figures.notation import join_units  # a number never parts from its unit
+
 __version__ = "1.0"
 STATIC = Path(__file__).parent / "static"
 logger = logging.getLogger(__name__)
@@ -746,7 +748,7 @@ def _numeric_html(base: str, part: dict, label: str = "", hint: bool = False) ->
     feedback, html = f"{base}-feedback", []
     if part["direction"] == "signed":
         html.append(f'<p class="q-note" id="{base}-note">Give a signed value: positive is '
-                    f"{escape(part['positive'])}.</p>")
+                    f"{escape(join_units(part['positive']))}.</p>")
         feedback += f" {base}-note"
     html.append('<div class="q-fields">')
     html.append(_input("q-value", f"{base}-value", escape(_field_label(label, "Value")), feedback))
@@ -805,7 +807,7 @@ def visit_question_form(self, node):
         base = f"q-{data['id']}-{part['id']}"
         kind = part.get("kind", "numeric")
         html.append(f'<fieldset class="q-part" data-part="{part["id"]}" data-kind="{kind}">'
-                    f"<legend>{escape(legend)}</legend>")
+                    f"<legend>{escape(join_units(legend))}</legend>")
         if kind == "mcq":
             html.append(_options_html(base, part))
         elif kind == "explain":

@@ -71,7 +71,49 @@
     return (x < 0 ? MINUS : opts.plus ? "+" : "") + body;
   }
 
-  var api = { formatNumber: formatNumber, MINUS: MINUS, GROUP: GROUP };
+  /* A number is joined to its unit, and a unit's symbols to each other, by a no-break space
+   * (U+00A0), so "50 m s⁻¹" never breaks across lines (CLARIFICATIONS, Reading). */
+  var UNIT_SPACE = "\u00a0", UNSPACED = { "\u00b0": true, "%": true, "": true };
+
+  /** A unit as text, symbols joined and powers raised: unitText("m s^-1") -> "m\u00a0s⁻¹". */
+  function unitText(unit) {
+    var raised = String(unit).replace(/\^(-?\d+)/g, function (m, power) {
+      return power.split("").map(function (c) { return SUPERSCRIPTS[c]; }).join("");
+    });
+    return raised.split(/\s+/).filter(Boolean).join(UNIT_SPACE);
+  }
+
+  /** A value with its unit, never split by a line break: formatQuantity(50, 2, "m s^-1")
+   *  -> "50\u00a0m\u00a0s⁻¹"; formatQuantity(30, 2, "°") -> "30°". opts as formatNumber. */
+  function formatQuantity(x, sigFigs, unit, opts) {
+    var written = unitText(unit);
+    return formatNumber(x, sigFigs, opts).replace(/ /g, UNIT_SPACE) + (UNSPACED[written] ? "" : UNIT_SPACE) + written;
+  }
+
+  /* Prose: the twin of join_units in physics_figures/notation.py (the same unit symbols). */
+  var SYMBOLS = ["kg", "g", "m", "km", "cm", "mm", "s", "ms", "h", "min", "N", "kN", "J", "kJ", "W", "kW",
+    "Pa", "kPa", "K", "mol", "rad", "Hz"].sort(function (a, b) { return b.length - a.length; });
+  var SYMBOL = "(?:" + SYMBOLS.join("|") + ")(?:\u207b?[\u2070\u00b9\u00b2\u00b3\u2074-\u2079]+)?(?![A-Za-z0-9])";
+  var UNITS = SYMBOL + "(?:(?:[ \\t\\n\u00a0\u202f]+|/)" + SYMBOL + ")*";
+  var NUMBER = "(?<![\\w.])\u2212?(?:\\d{1,3}(?:[ \u202f]\\d{3})+(?![\\d.])|\\d+(?:\\.\\d+)?)" +
+    "(?:[ \u00a0\u202f]?\u00d7[ \u00a0\u202f]?10\u207b?[\u2070\u00b9\u00b2\u00b3\u2074-\u2079]+)?";
+  var VALUE_WITH_UNIT = new RegExp("(" + NUMBER + ")([ \\t\\n\u00a0]+)(" + UNITS + ")", "g");
+  var LEADING_UNIT = new RegExp("^([ \\t\\n]*)(" + UNITS + ")");
+
+  function joinRun(units) { return units.replace(/[ \t\n]+/g, UNIT_SPACE); }
+
+  /** Prose with every number joined to its unit by no-break spaces: "at 50 m s⁻¹" ->
+   *  "at 50\u00a0m\u00a0s⁻¹". afterNumber: a unit at the very start follows a number. */
+  function joinUnits(text, afterNumber) {
+    text = String(text).replace(VALUE_WITH_UNIT, function (m, number, space, units) {
+      return number.replace(/(\d) (?=\d{3})/g, "$1" + GROUP).replace(/ /g, UNIT_SPACE) + UNIT_SPACE + joinRun(units);
+    });
+    if (afterNumber) text = text.replace(LEADING_UNIT, function (m, space, units) { return (space ? UNIT_SPACE : "") + joinRun(units); });
+    return text;
+  }
+
+  var api = { formatNumber: formatNumber, formatQuantity: formatQuantity, unitText: unitText, joinUnits: joinUnits,
+    MINUS: MINUS, GROUP: GROUP, UNIT_SPACE: UNIT_SPACE };
   if (typeof module === "object" && module.exports) module.exports = api;
   else root.Notation = api;
 })(this);

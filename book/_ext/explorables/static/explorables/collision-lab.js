@@ -82,7 +82,8 @@
     var percent = new X.Readout("Kinetic energy lost", "%", { decimals: 1 });
     var most = new X.Readout("Most that can be lost (sticking together)", "%", { decimals: 1 });
     X.nameReadouts({ percent: percent, most: most });
-    var verdict = el("p", { class: "ex-verdict", "aria-live": "polite" });
+    // not a live region: the description below repeats the verdict, and is the one that is read
+    var verdict = el("p", { class: "ex-verdict" });
     var SW = X.widthFor(root), MID = SW / 2, LONGEST = Math.min(110, SW * 0.17);
     var scene = svg("svg", { viewBox: "0 0 " + SW + " 200", class: "ex-plot ex-scene", role: "img", "aria-label": "The two bodies before and after, with their velocities" });
     var description = new X.Description();
@@ -105,7 +106,7 @@
       [before, after].forEach(function (value, i) {
         var o = out[name][i];
         o.setAttribute("data-value", value === null ? "" : String(value));
-        o.textContent = fmt(value, { sf: sf || 3 });
+        o.textContent = X.joinUnits(fmt(value, { sf: sf || 3 }));
       });
     }
 
@@ -134,7 +135,7 @@
       var text;
       if (lab.refusal) {
         verdict.className = "ex-verdict ex-refused";
-        verdict.textContent = fill(data.refusals[lab.refusal], lab.numbers);
+        verdict.textContent = X.joinUnits(fill(data.refusals[lab.refusal], lab.numbers));
         text = "Refused. " + verdict.textContent;
       } else {
         verdict.className = "ex-verdict";
@@ -144,7 +145,7 @@
           : Math.abs(lab.percentLost) < 1e-9
             ? "Kinetic energy is kept (" + fmt(e0) + " J before and after), so the collision is elastic: the relative speed of separation equals that of approach, " + fmt(lab.approachSpeed) + " " + MS + "."
             : "Kinetic energy falls from " + fmt(e0) + " J to " + fmt(e1) + " J (" + fmt(lab.percentLost, { decimals: 1 }) + "% transferred to other forms), so the collision is inelastic: the bodies separate at " + fmt(lab.separationSpeed) + " " + MS + ", slower than they approached at " + fmt(lab.approachSpeed) + " " + MS + ".";
-        verdict.textContent = "Momentum is conserved: " + fmt(lab.momentumBefore) + " " + P + " before and after. " + energy;
+        verdict.textContent = X.joinUnits("Momentum is conserved: " + fmt(lab.momentumBefore) + " " + P + " before and after. " + energy);
         text = "After: A moves at " + fmt(a[0]) + " " + MS + " and B at " + fmt(a[1]) + " " + MS + " (positive to the right). " + verdict.textContent;
       }
       description.set(text);

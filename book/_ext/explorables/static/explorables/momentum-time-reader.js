@@ -29,7 +29,7 @@
     root.appendChild(
       el("section", { class: "ex-panel", "aria-labelledby": title.id }, [
         title,
-        el("p", { class: "ex-hint" }, "The " + fmt(mass) + " kg car. Move along the graph with the slider (arrow keys) or by pointing at the graph."),
+        el("p", { class: "ex-hint" }, X.joinUnits("The " + fmt(mass) + " kg car. Move along the graph with the slider (arrow keys) or by pointing at the graph.")),
         plot.svg,
         el("div", { class: "ex-controls" }, [time.element]),
         el("div", { class: "ex-readouts" }, [r.t.element, r.p.element, r.v.element, r.f.element, r.a.element]),
@@ -58,7 +58,7 @@
       cursor.appendChild(svg("line", { class: "ex-cursor", x1: x, x2: x, y1: plot.box.top, y2: plot.box.bottom }));
       cursor.appendChild(svg("circle", { class: "ex-point", cx: x, cy: y, r: 5 }));
       var right = x < (plot.box.left + plot.box.right) / 2;
-      cursor.appendChild(svg("text", { class: "ex-point-label", x: x + (right ? 10 : -10), y: Math.max(plot.box.top + 14, y - 12), "text-anchor": right ? "start" : "end" }, "gradient " + fmt(f) + " N"));
+      plot.keepInside(cursor.appendChild(svg("text", { class: "ex-point-label", x: x + (right ? 10 : -10), y: Math.max(plot.box.top + 14, y - 12), "text-anchor": right ? "start" : "end" }, "gradient " + fmt(f) + "\u00a0N")));
       var motion = f > 0 ? "a constant resultant force of " + fmt(f) + " N forwards, so the car speeds up"
         : f < 0 ? "a constant resultant force of " + fmt(-f) + " N backwards, so the car slows down"
           : "zero resultant force, so the car keeps a constant velocity";

@@ -34,7 +34,7 @@
     root.appendChild(
       el("section", { class: "ex-panel", "aria-labelledby": title.id }, [
         title,
-        el("p", { class: "ex-hint" }, "Puck P (momentum " + fmt(pIn) + " " + NS + ") hits puck Q at rest. Set P\u2019s momentum afterwards; Q\u2019s follows from conservation of momentum along and across the original line."),
+        el("p", { class: "ex-hint" }, X.joinUnits("Puck P (momentum " + fmt(pIn) + " " + NS + ") hits puck Q at rest. Set P\u2019s momentum afterwards; Q\u2019s follows from conservation of momentum along and across the original line.")),
         el("p", { class: "ex-hint ex-energy-note" }, "Momentum alone allows every setting here, even ones in which the pucks would leave with more kinetic energy than P brought in. A real collision cannot gain kinetic energy (only an explosion, with energy from a store, can), so those outcomes never happen. Which ones they are depends on the masses: the line below works it out for pucks of equal mass."),
         el("div", { class: "ex-controls" }, [size.element, angle.element]),
         picture,
@@ -59,9 +59,9 @@
       var kept = (p * p + q.magnitude * q.magnitude) / (pIn * pIn);
       var gains = kept > 1 + 1e-9;
       energy.className = "ex-verdict ex-energy" + (gains ? " ex-refused" : "");
-      energy.textContent = "If P and Q had equal masses, the kinetic energy after would be " + fmt(100 * kept) + "% of that before: " +
+      energy.textContent = X.joinUnits("If P and Q had equal masses, the kinetic energy after would be " + fmt(100 * kept) + "% of that before: " +
         (gains ? "more than there was, so no real collision could end like this." :
-          kept > 1 - 1e-9 ? "all of it, an elastic collision (P and Q move off at right angles)." : "possible, an inelastic collision.");
+          kept > 1 - 1e-9 ? "all of it, an elastic collision (P and Q move off at right angles)." : "possible, an inelastic collision."));
       description.set(
         "Along the line: " + fmt(pIn) + " = " + fmt(known[0]) + " + " + fmt(q.along) + ", so Q has " + fmt(q.along) + " " + NS +
         " along it. Across the line: 0 = " + fmt(known[1]) + " \u2212 " + fmt(q.across) + ", so Q has " + fmt(q.across) + " " + NS +

@@ -66,14 +66,15 @@
         note,
         el("div", { class: "ex-readouts" }, [r.weight.element, r.vt1.element, r.d1.element, r.vt2.element, r.d2.element, r.decel.element, r.decelG.element]),
         warning,
-        description.element,
+        // the time slider sits right above the velocity graph it moves along
+        el("div", { class: "ex-controls ex-time-controls" }, [time.element, jumps]),
         el("div", { class: "ex-figure-row" }, [
           el("div", { class: "ex-graphs" }, [vPlot.svg, fPlot.svg]),
           el("div", { class: "ex-side" }, [fbd]),
         ]),
-        el("div", { class: "ex-controls" }, [time.element, jumps]),
         el("div", { class: "ex-readouts" }, [r.t.element, r.v.element, r.drag.element, r.force.element, r.acc.element]),
         timeDescription.element,
+        description.element,
       ])
     );
     vPlot.scrub(function (t) { time.set(t); });
@@ -87,8 +88,8 @@
       if (opens.value < earliest) {
         opens.value = earliest;
         opens.show();
-        note.textContent = "The parachute now opens at " + fmt(earliest) + " s: it can open only once the skydiver is falling faster than the parachute’s terminal velocity.";
-      } else note.textContent = "";
+        note.textContent = X.joinUnits("The parachute now opens at " + fmt(earliest) + " s: it can open only once the skydiver is falling faster than the parachute’s terminal velocity.");
+      } else note.textContent = X.joinUnits("");
       dive = M.skydive({ mass: mass.value, bodyDrag: bodyDrag.value, parachuteDrag: chuteDrag.value, parachuteOpensAt: opens.value, openingDuration: fills.value, g: g });
       var p = dive.points;
       var duration = Math.max(p.E[0] + 4, dive.parachuteOpensAt * 1.25);
@@ -106,10 +107,10 @@
       r.decel.set(decel);
       r.decelG.set(inG);
       LABELS.forEach(function (label) { buttons[label].hidden = !(label in p); });
-      warning.textContent = inG > data.unrealisticDecelerationInG
+      warning.textContent = X.joinUnits(inG > data.unrealisticDecelerationInG
         ? "Unrealistic: " + fmt(inG, { sf: 2 }) + " g would injure the skydiver. A canopy that fills in only " + fmt(dive.openingDuration, { sf: 2 }) +
           " s at " + fmt(p.D[1]) + " " + MS + " jerks them to a stop far too hard; real parachutes are made to open over two or three seconds, which keeps the deceleration to a few g."
-        : "";
+        : "");
 
       drawGraphs(duration);
       var rise = p.C
@@ -137,7 +138,8 @@
       ts.sort(function (a, b) { return a - b; });
       ts = ts.filter(function (t) { return t <= duration; });
       var vs = ts.map(dive.velocityAt);
-      var vMax = Math.max(100, dive.terminalVelocityFreefall * 1.1);
+      // the axis fits this run: its fastest speed and a tenth more, up to a round number
+      var vMax = roundUp(Math.max.apply(null, vs.concat([dive.terminalVelocityFreefall])) * 1.1);
       vPlot.setDomain(0, duration, 0, vMax);
       X.clear(vPlot.data);
       X.clear(vPlot.marks);
@@ -149,7 +151,7 @@
         var pt = dive.points[label], x = vPlot.x(pt[0]), y = vPlot.y(pt[1]);
         vPlot.marks.appendChild(svg("circle", { class: "ex-point", cx: x, cy: y, r: 4 }));
         var dy = label === "E" || label === "A" ? -8 : label === "D" ? -8 : 16;
-        vPlot.marks.appendChild(svg("text", { class: "ex-point-label", x: x + (label === "D" ? 8 : label === "A" ? 6 : -4), y: y + dy, "text-anchor": label === "C" ? "end" : "start" }, label));
+        vPlot.keepInside(vPlot.marks.appendChild(svg("text", { class: "ex-point-label", x: x + (label === "D" ? 8 : label === "A" ? 6 : -4), y: y + dy, "text-anchor": label === "C" ? "end" : "start" }, label)));
       });
 
       // resultant force, down positive: W - D; a dip below -6 W is clipped
@@ -166,9 +168,9 @@
         // the label goes on whichever side of the spike has room
         var roomRight = fPlot.box.right - xd > 190, side = roomRight ? 1 : -1;
         fPlot.marks.appendChild(X.arrow(xd + 16 * side, fPlot.box.bottom - 34, xd + 16 * side, fPlot.box.bottom - 4, "ex-b"));
-        fPlot.marks.appendChild(svg("text", { class: "ex-point-label", x: xd + 24 * side, y: fPlot.box.bottom - 14, "text-anchor": roomRight ? "start" : "end" }, "D: " + fmt(fMin) + " N, off the scale"));
+        fPlot.keepInside(fPlot.marks.appendChild(svg("text", { class: "ex-point-label", x: xd + 24 * side, y: fPlot.box.bottom - 14, "text-anchor": roomRight ? "start" : "end" }, "D: " + fmt(fMin) + "\u00a0N, off the scale")));
       }
-      fPlot.marks.appendChild(svg("text", { class: "ex-point-label", x: fPlot.box.left + 6, y: fPlot.y(dive.weight) - 4 }, "A: W"));
+      fPlot.keepInside(fPlot.marks.appendChild(svg("text", { class: "ex-point-label", x: fPlot.box.left + 8, y: fPlot.y(dive.weight) - 6 }, "A: W")));
     }
 
     function showTime() {
@@ -191,6 +193,12 @@
         " N up, so the resultant force is " + (Math.abs(force) < 0.005 * dive.weight ? "about zero" : fmt(Math.abs(force)) + " N " + direction(force)) +
         " and the acceleration " + fmt(Math.abs(acc)) + " " + MS2 + " " + direction(acc) + "."
       );
+    }
+
+    /** The round number (1, 2 or 5 x 10^n steps of a tenth) at or above v: 55 -> 60, 22 -> 25. */
+    function roundUp(v) {
+      var step = Math.pow(10, Math.floor(Math.log10(v))) / 2;
+      return Math.ceil(v / step - 1e-9) * step;
     }
 
     function direction(x) {

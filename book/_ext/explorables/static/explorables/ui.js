@@ -51,6 +51,7 @@
   /* ---- numbers as the notes print them: book/_ext/notation/static/notation.js ---- */
 
   var formatNumber = window.Notation.formatNumber, MINUS = window.Notation.MINUS;
+  var UNIT_SPACE = window.Notation.UNIT_SPACE, unitText = window.Notation.unitText;
 
   /** A read-out: x to opts.sf significant figures (3 unless given) or opts.decimals places;
    *  a dash when there is no value. */
@@ -83,28 +84,58 @@
       type: "number", id: id, min: opts.numberMin !== undefined ? opts.numberMin : opts.min,
       max: opts.numberMax !== undefined ? opts.numberMax : opts.max, step: "any", inputmode: "decimal",
     });
-    var unitText = opts.unit ? el("span", { class: "ex-unit", "aria-hidden": "true" }, opts.unit) : null;
+    var unitLabel = opts.unit ? el("span", { class: "ex-unit", "aria-hidden": "true" }, unitText(opts.unit)) : null;
+    // a typed value out of range is not dropped in silence: this says what the box takes
+    this.message = el("p", { class: "ex-range-message", id: id + "-message" });
+    this.message.hidden = true;
+    this.number.setAttribute("aria-describedby", id + "-message");
     this.element = el("div", { class: "ex-quantity" }, [
       el("label", { for: id, id: id + "-label" }, [opts.label, opts.unit ? el("span", { class: "ex-sr" }, " in " + this.unitSpoken) : null]),
-      el("div", { class: "ex-quantity-inputs" }, [this.range, el("span", { class: "ex-number" }, [this.number, unitText])]),
+      el("div", { class: "ex-quantity-inputs" }, [this.range, el("span", { class: "ex-number" }, [this.number, unitLabel])]),
+      this.message,
     ]);
     this.range.addEventListener("input", function () {
       self.set(Number(self.range.value), self.range);
     });
     this.number.addEventListener("input", function () {
-      if (self.number.value === "" || !self.number.validity.valid) return;
+      if (self.number.value === "" || !self.number.validity.valid) {
+        self.warn(self.number.value === "" && !self.number.validity.badInput ? null : self.number.value);
+        return;
+      }
+      self.warn(null);
       self.set(Number(self.number.value), self.number);
     });
     this.number.addEventListener("change", function () {
-      // tidy the box when the reader leaves it with something out of range or empty
+      // leaving the box with something out of range or empty: the box goes back to the
+      // value in use, and the message (if any) stays to say why
       if (self.number.value === "" || !self.number.validity.valid) self.show();
     });
     this.show();
   }
 
+  /** Say (or stop saying) that `typed` is outside what this quantity takes. */
+  Quantity.prototype.warn = function (typed) {
+    var lo = Number(this.number.min), hi = Number(this.number.max);
+    var unit = this.unit ? (this.unit === "%" || this.unit === "\u00b0" ? "" : UNIT_SPACE) + unitText(this.unit) : "";
+    if (typed === null) {
+      this.message.hidden = true;
+      this.message.textContent = "";
+      this.number.removeAttribute("aria-invalid");
+      return;
+    }
+    var shown = fmt(this.value);
+    this.message.textContent = (isFinite(Number(typed)) && typed !== ""
+      ? typed + " is out of range: "
+      : "That is not a number: ") + "type a value from " + fmt(lo) + " to " + fmt(hi) + unit +
+      " (still using " + shown + unit + ").";
+    this.message.hidden = false;
+    this.number.setAttribute("aria-invalid", "true");
+  };
+
   Quantity.prototype.set = function (value, from) {
     var lo = Number(this.number.min), hi = Number(this.number.max);
     this.value = Math.min(hi, Math.max(lo, value));
+    if (from !== this.number) this.warn(null);
     this.show(from);
     if (this.onChange) this.onChange(this.value);
   };
@@ -138,8 +169,9 @@
 
   Readout.prototype.set = function (value, direction) {
     this.output.setAttribute("data-value", value === null ? "" : String(value));
-    var text = fmt(value, this.opts);
-    if (value !== null && this.unit) text += (this.unit === "%" || this.unit === "\u00b0" ? "" : " ") + this.unit;
+    // the number, its unit and the unit's symbols are joined by no-break spaces (notation.js)
+    var text = fmt(value, this.opts).replace(/ /g, UNIT_SPACE);
+    if (value !== null && this.unit) text += (this.unit === "%" || this.unit === "\u00b0" ? "" : UNIT_SPACE) + unitText(this.unit);
     this.output.textContent = text + (direction ? " " + direction : "");
   };
 
@@ -153,7 +185,7 @@
     var node = this.element;
     // the visible text updates at once; the live region is refreshed when input pauses
     node.setAttribute("aria-busy", "true");
-    node.textContent = text;
+    node.textContent = window.Notation.joinUnits(text); // numbers never part from their units
     clearTimeout(this.timer);
     this.timer = setTimeout(function () {
       node.setAttribute("aria-busy", "false");
@@ -236,6 +268,23 @@
   Plot.prototype.y = function (v) {
     var d = this.dom, b = this.box;
     return b.bottom - ((v - d[2]) / (d[3] - d[2])) * (b.bottom - b.top);
+  };
+
+  /** Keep an annotation (an SVG text already in the plot) inside the frame, clear of it by
+   *  `pad` units: never on a tick label (they sit outside the frame) nor on the frame. */
+  Plot.prototype.keepInside = function (text, pad) {
+    pad = pad === undefined ? 4 : pad;
+    var b = this.box, box;
+    try { box = text.getBBox(); } catch (error) { return text; } // not rendered (hidden): left as it is
+    if (!box.width && !box.height) return text;
+    var dx = 0, dy = 0;
+    if (box.x < b.left + pad) dx = b.left + pad - box.x;
+    else if (box.x + box.width > b.right - pad) dx = b.right - pad - (box.x + box.width);
+    if (box.y < b.top + pad) dy = b.top + pad - box.y;
+    else if (box.y + box.height > b.bottom - pad) dy = b.bottom - pad - (box.y + box.height);
+    if (dx) text.setAttribute("x", Number(text.getAttribute("x")) + dx);
+    if (dy) text.setAttribute("y", Number(text.getAttribute("y")) + dy);
+    return text;
   };
 
   /** SVG path through (xs[i], ys[i]). */
@@ -321,6 +370,7 @@
     el: el,
     svg: svg,
     fmt: fmt,
+    joinUnits: window.Notation.joinUnits,
     MINUS: MINUS,
     Quantity: Quantity,
     Readout: Readout,

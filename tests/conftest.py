@@ -1,6 +1,7 @@
 """Shared fixtures. `make test` builds the site into _build/html before pytest runs."""
 
 import os
+import sys
 from pathlib import Path
 
 import matplotlib
@@ -8,6 +9,10 @@ import pytest
 from hypothesis import settings
 
 matplotlib.use("Agg")
+
+# The book's own Sphinx extensions (site_assets, offline, ...) are importable in tests, as
+# they are in the build (_config.yml's local_extensions).
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "book" / "_ext"))
 
 # One profile for every Hypothesis test: no deadline (a loaded CI machine is slow, and a
 # timing failure says nothing about the physics), and the same examples on every CI run.

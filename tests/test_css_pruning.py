@@ -7,13 +7,13 @@ from __future__ import annotations
 
 import json
 import shutil
-import sys
 from io import BytesIO
 from pathlib import Path
 
 import pytest
 from browser import open_browser, serve_site
 from PIL import Image, ImageChops
+from site_assets import bundle_registry, unpruned_bundle
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
@@ -28,9 +28,6 @@ MODES = ["light", "dark"]
 def unpruned(site_dir, tmp_path_factory) -> Path:
     """A copy of the site with every bundle as written before pruning (site_assets keeps
     that beside the site)."""
-    sys.path.insert(0, str(ROOT / "book" / "_ext"))
-    from site_assets import bundle_registry, unpruned_bundle
-
     copy = tmp_path_factory.mktemp("unpruned") / "html"
     shutil.copytree(site_dir, copy)
     bundles = json.loads(bundle_registry(site_dir).read_text())

@@ -10,9 +10,9 @@ from __future__ import annotations
 
 import re
 import shutil
-import sys
 from pathlib import Path
 
+import offline
 import pytest
 from browser import open_browser, serve_site, site_pages
 
@@ -29,13 +29,6 @@ IMAGES_SHOWN = """() => Promise.all([...document.images].map(image => {
     image.loading = "eager";
     return image.decode().then(() => image.naturalWidth > 0, () => image.currentSrc || image.src);
 }))"""
-
-
-def _offline_extension():
-    sys.path.insert(0, str(ROOT / "book" / "_ext"))
-    import offline
-
-    return offline
 
 
 @pytest.fixture(scope="module")
@@ -136,7 +129,7 @@ def test_a_new_build_is_offered_and_a_reload_shows_its_text(browser, site_dir, t
         html, count = re.subn(r"(<h1>[^<]+)", r"\1 (new edition)", intro.read_text(encoding="utf-8"), count=1)
         assert count == 1
         intro.write_text(html, encoding="utf-8")
-        _offline_extension().write_service_worker(site)
+        offline.write_service_worker(site)
         page.reload()
         assert "(new edition)" not in page.locator("main h1").first.inner_text()  # the cache still serves
         notice = page.locator(".offline-update[role=status]")
@@ -150,7 +143,6 @@ def test_a_new_build_is_offered_and_a_reload_shows_its_text(browser, site_dir, t
 
 
 def test_the_precache_lists_every_page_and_what_pages_load_but_no_downloads(site_dir):
-    offline = _offline_extension()
     listed = dict(offline.precache_list(site_dir))
     for path in site_pages(site_dir):
         assert path in listed, f"{path} is not kept offline"

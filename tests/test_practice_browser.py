@@ -3,6 +3,8 @@ them, and error carried forward from a wrong earlier part."""
 
 from __future__ import annotations
 
+import json
+
 import pytest
 from browser import open_browser, page_without_errors, serve_site
 
@@ -142,7 +144,7 @@ def test_a_multiple_choice_part_names_the_mistake_behind_a_wrong_option(open_pag
     feedback = form.locator(".q-feedback")
     assert feedback.get_attribute("data-code") == "mistake"
     mistake = part.options["ABCD".index(wrong)]
-    assert mistake.feedback in feedback.inner_text()
+    assert mistake.feedback in " ".join(feedback.inner_text().split())  # units joined by no-break spaces
     assert form.locator(".q-score").inner_text() == "0/1 mark"
     form.locator(f'input[type="radio"][value="{part.answer}"]').check()
     form.locator("button.q-check").click()
@@ -181,3 +183,24 @@ def test_an_explanation_is_self_marked_against_its_marking_points(open_page):
     ticks.nth(0).uncheck()  # and a tick taken back is taken back there too: the B1
     progress = page.evaluate("JSON.parse(localStorage.getItem('dynamics-progress-v1'))")
     assert [(a["earned"], a["available"]) for a in progress["attempts"] if a["question"] == key] == [(2, 3)]
+
+
+def test_new_numbers_change_a_prompt_that_holds_a_number(open_page):
+    """A graph read at another time: the part's heading says the new time (prompts, not only
+    the question's text, come with each variant)."""
+    key = "graph-ball-acceleration"
+    template = bank.TEMPLATES[key]
+    page = open_page(key)
+    form = page.locator(f'form.q-form[data-question="{key}"]')
+    printed = template.variant(0).parts[1].prompt
+    for _ in range(len(template.values)):  # a round shows every variant once
+        before = form.get_attribute("data-variant")
+        form.locator("button.q-new").click()
+        page.wait_for_function(f"document.querySelector('form[data-question=\"{key}\"]').dataset.variant "
+                               f"!== {json.dumps(before)}")
+        prompt = template.variant(int(form.get_attribute("data-variant"))).parts[1].prompt
+        legend = " ".join(form.locator('[data-part="b"] legend').inner_text().split())
+        assert legend == f"(b) {prompt[0].upper()}{prompt[1:]}"
+        if prompt != printed:
+            return
+    pytest.fail("no variant reads the graph at another time")

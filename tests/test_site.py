@@ -329,7 +329,11 @@ def test_every_icon_the_site_shows_is_in_the_icon_font(site_dir):
     assert font.exists(), f"{font} is missing: is the site_assets extension registered?"
     in_font = set(TTFont(font).getBestCmap())
     used = {name for page in site_dir.rglob("*.html") for name in re.findall(r"\bfa-[a-z0-9-]+", page.read_text())}
-    css = (site_dir / "_static" / "styles" / "pydata-sphinx-theme.css").read_text()
+    # the theme's stylesheet, as it went into the bundles (the site keeps only pruned bundles)
+    from site_assets import unpruned_bundle  # book/_ext (tests/conftest.py)
+
+    css = "\n".join(unpruned_bundle(site_dir, name.name).read_text()
+                     for name in (site_dir / "_static" / "site-assets").glob("bundle-*.css"))
     missing = []
     for name in sorted(used):
         match = re.search(rf'\.{re.escape(name)}:before\{{content:"\\([0-9a-f]+)"', css) or re.search(

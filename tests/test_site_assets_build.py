@@ -35,15 +35,15 @@ def test_a_stylesheet_edit_alone_reaches_the_site(tmp_path):
     page = "# Title\n\nSome text.\n"
     first = make_book(tmp_path, page)
     assert first.returncode == 0, first.stdout[-3000:]
-    rule = ".a-rule-added-by-the-test { color: red; }"
-    assert rule not in _bundle_text(tmp_path)
+    # on an element every page has, so the pruned bundle keeps it
+    rule, mark = "p { --a-rule-added-by-the-test: 1; }", "--a-rule-added-by-the-test"
+    assert mark not in _bundle_text(tmp_path)
 
     with (tmp_path / "_static" / "site.css").open("a") as css:
         css.write(f"\n{rule}\n")
     second = rebuild(tmp_path)
     assert second.returncode == 0, second.stdout[-3000:]
-    assert rule in (tmp_path / "_build" / "html" / "_static" / "site.css").read_text()
-    assert rule in _bundle_text(tmp_path), "the stylesheet bundle pages link was not rebuilt"
+    assert mark in _bundle_text(tmp_path), "the stylesheet bundle pages link was not rebuilt"
 
     third = rebuild(tmp_path)  # nothing changed since: nothing is rewritten
     assert third.returncode == 0, third.stdout[-3000:]

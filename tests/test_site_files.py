@@ -6,25 +6,13 @@ bundled are removed by the build (book/_ext/offline)."""
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
-
+import offline
 import pytest
 
 pytestmark = pytest.mark.site
 
-ROOT = Path(__file__).resolve().parents[1]
-
-
-def _offline():
-    sys.path.insert(0, str(ROOT / "book" / "_ext"))
-    import offline
-
-    return offline
-
-
 def test_every_file_of_the_site_is_referenced(site_dir):
-    unused = _offline().unreferenced_files(site_dir)
+    unused = offline.unreferenced_files(site_dir)
     assert not unused, f"{len(unused)} file(s) that nothing references: {unused[:20]}"
 
 
@@ -35,7 +23,6 @@ def test_no_source_map_locale_or_unused_icon_script_is_shipped(site_dir):
 
 def test_a_file_nothing_names_is_found(site_dir, tmp_path):
     """The check can fail: a stray file in a copy of the site is reported, by name."""
-    offline = _offline()
     stray = tmp_path / "site" / "_static" / "stray.js"
     stray.parent.mkdir(parents=True)
     (tmp_path / "site" / "index.html").write_text('<script src="_static/used.js"></script>', encoding="utf-8")

@@ -27,7 +27,6 @@ Needs ``node`` and ``npm ci`` (package.json at the repository root pins mathjax)
 
 from __future__ import annotations
 
-import filecmp
 import hashlib
 import html
 import json
@@ -404,6 +403,24 @@ def _config_inited(app: Sphinx, config) -> None:
     app._site_bundles = {}
 
 
+def static_digests(app: Sphinx) -> dict[str, str]:
+    """The content of every static source file (site.css, the extensions' scripts)."""
+    digests = {}
+    for folder in app.config.html_static_path:
+        source = Path(app.confdir, folder)
+        files = source.rglob("*") if source.is_dir() else []
+        for path in sorted(p for p in files if p.is_file() and not p.name.endswith("_t")):  # _t: templates
+            digests[str(path)] = hashlib.sha256(path.read_bytes()).hexdigest()
+    return digests
+
+
+def _static_record(app: Sphinx) -> Path:
+    """The static sources as the last build copied them, kept beside the site: the site
+    itself keeps no bundled stylesheet (book/_ext/offline removes what no page loads)."""
+    outdir = Path(app.outdir)
+    return outdir.parent / f"{outdir.name}-static-digests.json"
+
+
 def _static_changed(app: Sphinx, env, added, changed, removed) -> list[str]:
     """Rebuild the root page when a static file (site.css, a script) changed alone.
 
@@ -412,16 +429,10 @@ def _static_changed(app: Sphinx, env, added, changed, removed) -> list[str]:
     """
     if app.builder.format != "html":
         return []
-    out = Path(app.outdir) / "_static"
-    for folder in app.config.html_static_path:
-        source = Path(app.confdir, folder)
-        files = source.rglob("*") if source.is_dir() else []
-        for path in (p for p in files if p.is_file() and not p.name.endswith("_t")):  # _t: templates
-            target = out / path.relative_to(source)
-            # As Sphinx decides whether to copy: by content (a touched file is not copied).
-            if not target.exists() or not filecmp.cmp(path, target, shallow=False):
-                return [app.config.root_doc]
-    return []
+    record = _static_record(app)
+    if record.exists() and json.loads(record.read_text()) == static_digests(app):
+        return []
+    return [app.config.root_doc]
 
 
 def write_root_redirect(app: Sphinx) -> None:
@@ -467,15 +478,20 @@ def _build_finished(app: Sphinx, exception) -> None:
     for name in sorted(set(bundles) - linked):
         (outdir / name).unlink(missing_ok=True)
         del bundles[name]
-    for name, stylesheets in bundles.items():
+    # Sphinx copies the stylesheets only in a build that writes pages (book/_ext/offline then
+    # removes them again, bundled): with nothing written, the bundles stand as they are.
+    copied = all((outdir / sheet).exists() for sheets in bundles.values() for sheet in sheets)
+    for name, stylesheets in bundles.items() if copied else ():
         write_bundle(outdir, name, stylesheets)
         # the bundle before pruning, beside the site (tests/test_css_pruning.py compares them)
         unpruned = unpruned_bundle(outdir, name)
         unpruned.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(outdir / name, unpruned)
-    prune_bundles(app, outdir, sorted(bundles))
+    if copied:
+        prune_bundles(app, outdir, sorted(bundles))
     registry.write_text(json.dumps(bundles, indent=1, sort_keys=True))
     write_root_redirect(app)
+    _static_record(app).write_text(json.dumps(static_digests(app), indent=1))
     (Path(app.outdir) / "robots.txt").write_text("User-agent: *\nAllow: /\n")
     if not app.config.html_use_index:  # an index page left by an older build is not the book's
         (outdir / "genindex.html").unlink(missing_ok=True)

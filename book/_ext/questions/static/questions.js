@@ -783,7 +783,8 @@
         var right = result.code === "correct" || result.code === "ecf";
         var selfMarked = result.code === "self-marked";
         if (f.points && selfMarked) f.points.hidden = false;
-        f.feedback.textContent = (selfMarked ? "" : right ? "✓ " : "✗ ") + result.message;
+        // a value in the message stays on one line with its unit, as everywhere in the book
+        f.feedback.textContent = (selfMarked ? "" : right ? "✓ " : "✗ ") + Notation.joinUnits(result.message);
         var idea = !right && !selfMarked && ideaFor(result.message);
         if (idea) {
           var link = document.createElement("a");
@@ -847,10 +848,14 @@
       if (saved.checked) check(false);
     }
 
-    /* A variant's options and marking points change with its numbers. */
+    /* A variant's prompts (the time a graph is read at, say), options and marking points
+     * change with its numbers. */
     function relabel() {
       data.parts.forEach(function (part) {
         var f = fields(part);
+        var legend = f.box.querySelector("legend");
+        var prompt = part.prompt.charAt(0).toUpperCase() + part.prompt.slice(1);
+        legend.textContent = Notation.joinUnits((data.parts.length > 1 ? "(" + part.id + ") " : "") + prompt);
         if (part.kind === "mcq") {
           part.options.forEach(function (option, i) {
             f.choices[i].parentNode.querySelector(".q-option-text").innerHTML = option.html;

@@ -35,6 +35,8 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--name", default="worksheet", help="file names: NAME-A.pdf, NAME-key-A.pdf")
     p.add_argument("--title", default="", help="the title on the cover")
     p.add_argument("--out", type=Path, default=Path("sheets"), help="output folder (default sheets/)")
+    p.add_argument("--work", type=Path, default=None,
+                   help="where the LaTeX sources and logs go (default OUT/.tex)")
     p.add_argument("--jobs", type=int, default=None, help="xelatex runs at a time (default: one per core)")
     p.add_argument("--site", action="store_true", help="build the site's sheets (make worksheets)")
     p.add_argument("--list", action="store_true", help="list the types and templates, then stop")
@@ -75,7 +77,7 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     start = time.perf_counter()
     try:
-        pdfs = build(sheets, args.out, parallel=args.jobs)
+        pdfs = build(sheets, args.out, parallel=args.jobs, work=args.work)
     except RuntimeError as error:
         print(f"error: {error}", file=sys.stderr)
         return 1

@@ -1,6 +1,7 @@
 """Typeset sheets with xelatex: each version's question sheet and answer key, in parallel.
 
-For each version the .tex files and the graphs' vector PDFs go into ``<out>/.tex/<name>-<letter>/``
+For each version the .tex files and the graphs' vector PDFs go into ``<work>/<name>-<letter>/``
+(``work`` is ``<out>/.tex`` unless given)
 and xelatex typesets them there (one pass: nothing refers to a later page). The PDFs are
 copied to ``<out>/<name>-A.pdf`` and ``<out>/<name>-key-A.pdf``. No clock reaches the
 files: SOURCE_DATE_EPOCH and FORCE_SOURCE_DATE fix the PDFs' dates and ids, so the same
@@ -38,12 +39,13 @@ def _env() -> dict[str, str]:
     return env
 
 
-def write_sources(sheets: list[Sheet], out: Path) -> list[Job]:
+def write_sources(sheets: list[Sheet], out: Path, work: Path | None = None) -> list[Job]:
     """Write every version's .tex files and graphs; return the typesetting jobs."""
     jobs = []
+    work = out / ".tex" if work is None else work
     for sheet in sheets:
         for version in sheet.versions:
-            folder = out / ".tex" / f"{sheet.name}-{version.letter}"
+            folder = work / f"{sheet.name}-{version.letter}"
             if folder.exists():
                 shutil.rmtree(folder)
             folder.mkdir(parents=True)
@@ -79,7 +81,9 @@ def typeset(jobs: list[Job], *, parallel: int | None = None) -> list[Path]:
         return list(pool.map(_typeset, jobs))
 
 
-def build(sheets: list[Sheet], out: Path, *, parallel: int | None = None) -> list[Path]:
-    """Write and typeset every sheet's versions into ``out``; return the PDFs."""
+def build(sheets: list[Sheet], out: Path, *, parallel: int | None = None,
+          work: Path | None = None) -> list[Path]:
+    """Write and typeset every sheet's versions into ``out`` (the LaTeX in ``work``); return
+    the PDFs."""
     out.mkdir(parents=True, exist_ok=True)
-    return typeset(write_sources(sheets, out), parallel=parallel)
+    return typeset(write_sources(sheets, out, work), parallel=parallel)

@@ -1,3 +1,4 @@
+# ruff: noqa: RUF002  (the docstring quotes typeset text: times and divide signs)
 """A structural check of a Moodle XML question file against Moodle's documented format
 (docs.moodle.org/en/Moodle_XML_format, and what qformat_xml reads), plus the marking rules
 the book gives the export. Returns a list of problems (empty: the file is sound).
@@ -170,7 +171,7 @@ def _check_numerical(question, where) -> list[str]:
         return [*problems, f"{where}: {len(right)} right answers, not 1"]
     if ranges[-1][0] != 100:
         problems.append(f"{where}: the right answer is not after the named mistakes")
-    _, low, high, text = right[0]
+    _, _low, high, text = right[0]
     value = float(text)
     # a calculation is right at 2 s.f. or more; a reading from a graph within its tolerance
     calculation = math.isclose(high - value, 0.5 * 10 ** (math.floor(math.log10(abs(value))) - 1), rel_tol=1e-6)

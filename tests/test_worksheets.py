@@ -11,6 +11,7 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
+from moodle_format import check_file
 
 from physics_figures import bank, worksheets
 from physics_figures.variants import QUESTION_TYPES
@@ -27,7 +28,6 @@ from physics_figures.worksheets import (
 from physics_figures.worksheets import moodle as moodle_export
 from physics_figures.worksheets.__main__ import main
 from physics_figures.worksheets.latex import answer_key, ecf_note, question_sheet, wrong_answers
-from moodle_format import check_file
 
 ROOT = Path(__file__).resolve().parents[1]
 TEMPLATES = bank_templates()
@@ -129,7 +129,7 @@ def test_key_gives_answers_mark_codes_ecf_and_wrong_answers():
 def test_g_equals_ten_wrong_answer_is_the_models_value():
     """The issue's example: 70 kg, 1500 N gives 11.4 m s⁻² with g = 10."""
     question = bank.TEMPLATES["quick-check-3"].variant(0)
-    rows = dict((name, written) for written, name, _ in wrong_answers(question.parts[1]))
+    rows = {name: written for written, name, _ in wrong_answers(question.parts[1])}
     g_ten = next(m for m in question.parts[1].mistakes if m.name == "used g = 10 m s⁻²")
     assert rows["used g = 10 m s⁻²"] == f"{worksheets.latex.format_number(g_ten.value, 3)} m s⁻²"
 
@@ -188,7 +188,7 @@ def small_export():
 
 def test_moodle_export_passes_the_structural_check(small_export):
     root, count = small_export
-    problems, categories = check_file(root)
+    problems, _categories = check_file(root)
     assert not problems, "\n".join(problems[:20])
     assert {"numerical", "multichoice", "essay"} <= set(count)
 

@@ -42,7 +42,6 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \setsansfont{FreeSans}[Extension=.otf,UprightFont=*,BoldFont=*Bold,ItalicFont=*Oblique,BoldItalicFont=*BoldOblique]
 \usepackage{graphicx}
 \usepackage{array}
-\usepackage{longtable}
 \usepackage{needspace}
 \usepackage{enumitem}
 \usepackage{fancyhdr}
@@ -123,7 +122,7 @@ def _cover(sheet: Sheet, version: Version) -> str:
                      for number, item in zip(numbers, version.items, strict=True))
     out = [
         r"\thispagestyle{fancy}",
-        r"{\sffamily\bfseries\LARGE " + tex(sheet.title) + r"\par}",
+        r"{\raggedright\sffamily\bfseries\LARGE " + tex(sheet.title) + r"\par}",
         r"\vspace{4pt}{\sffamily\Large Version " + version.letter + r"\par}",
         r"\vspace{18pt}",
         r"\renewcommand{\arraystretch}{1.9}",
@@ -293,12 +292,11 @@ def _key_part(question: Question, index: int, marks: int) -> list[str]:
         out.append("\\emph{" + tex(note) + "}")
     rows = wrong_answers(part)
     if rows:
-        table = "\n".join(f"{tex(written)} & \\emph{{{tex(name)}}} & {tex(feedback)} \\\\"
+        items = "\n".join(f"\\item \\textbf{{{tex(written)}}}: \\emph{{{tex(name)}}}. {tex(feedback)}"
                           for written, name, feedback in rows)
-        out.append("{\\small\\begin{longtable}{@{}>{\\raggedright}p{2.6cm} >{\\raggedright}p{3.6cm} "
-                   "p{9.3cm}@{}}\n\\multicolumn{3}{@{}l}{\\textbf{Common wrong answers}} \\\\[2pt]\n"
-                   "\\textbf{A student wrote} & \\textbf{Mistake} & \\textbf{What it shows} \\\\ \\hline\n"
-                   + table + "\n\\end{longtable}}")
+        out.append("\\textbf{Common wrong answers} (a student who wrote this made this mistake)\n"
+                   "{\\small\\begin{itemize}[leftmargin=1.5em,itemsep=1pt,topsep=2pt]\n"
+                   + items + "\n\\end{itemize}}")
     return out
 
 
@@ -321,7 +319,7 @@ def _places(part) -> int:
 def answer_key(sheet: Sheet, version: Version) -> str:
     """The LaTeX of one version's answer key."""
     body = [
-        r"{\sffamily\bfseries\LARGE " + tex(sheet.title) + r"\par}",
+        r"{\raggedright\sffamily\bfseries\LARGE " + tex(sheet.title) + r"\par}",
         r"\vspace{4pt}{\sffamily\Large Answer key, version " + version.letter + r"\par}",
         r"\vspace{6pt}",
         tex(f"Total: {version.marks} marks. Seed {sheet.seed}. Mark codes as in Cambridge mark schemes: "

@@ -1,4 +1,4 @@
-# ruff: noqa: RUF001, RUF002  (typeset text: true minus, superscripts)
+
 """The question bank as Moodle XML, for a school's learning platform.
 
 One question category per type (the notes' seven), and inside it one category per
@@ -9,9 +9,9 @@ variant of the template (at least 10; a template with fewer situations gives all
   unit (every usual form, written without spaces, as Moodle strips them from a response)
   and the book's tolerance: half a unit in the second significant figure, so the answer at
   2, 3 or 4 s.f. is right; a reading from a graph is right within half a small square. The
-  named mistakes come first in the file, each with its own feedback and a tolerance that
-  keeps every right rounding out (Moodle takes the first answer whose range holds the
-  response). A part asking for a direction is followed by a multichoice on the direction.
+  named mistakes come first in the file, each with its own feedback, matched as the book's
+  marker matches them, at 3 significant figures, and never where a right rounding falls
+  (Moodle takes the first answer whose range holds the response). A part asking for a direction is followed by a multichoice on the direction.
 * A multiple-choice item is a **multichoice** question, options A to D in the printed
   order, each wrong option with the feedback of the mistake it stands for.
 * A describe-and-explain part is an **essay** question, with the model answer and the
@@ -37,11 +37,11 @@ from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 from .. import textformat
-from ..notation import format_number
+from ..notation import round_number
 from ..questions import OPTION_LETTERS, Question, unit_text
 from ..variants import QUESTION_TYPES, Template
 from . import TYPE_TITLES, bank_templates, part_marks
-from .latex import ecf_note
+from .latex import MISTAKE_SIG_FIGS, ecf_note
 
 #: Moodle's question bank is filled with this many variants of a template at least.
 MOODLE_MIN_VARIANTS = 10
@@ -59,18 +59,21 @@ def tolerance(value: float) -> float:
     return 0.5 * 10 ** (math.floor(math.log10(abs(value))) - 1)
 
 
-def _mistake_tolerance(mistake: float, right: float, others: list[float]) -> float | None:
-    """Half a unit in the mistake's third significant figure, narrowed so that the right
-    answer at 2, 3 or 4 s.f. stays outside, and so that no other mistake's range overlaps
-    it; None when it cannot (then the mistake is left out)."""
-    scale = abs(mistake) if mistake else abs(right)
-    width = 0.5 * 10 ** (math.floor(math.log10(scale)) - 2) if scale else 0.0
-    roundings = [float(format(right, f".{sf}g")) for sf in RIGHT_ROUNDINGS] + [right]
-    nearest = min(abs(r - mistake) for r in roundings)
-    if nearest <= 0:
+def _mistake_range(mistake: float, right: float) -> tuple[float, float] | None:
+    """A named mistake is matched as the book's marker matches it: written to 3 significant
+    figures. So its answer is the mistake at 3 s.f. and its tolerance half a unit in the
+    third figure (two mistakes that differ at 3 s.f. never overlap). None when the right
+    answer at 2, 3 or 4 s.f. would fall in that range (then the mistake is left out)."""
+    if mistake == 0:
+        width = 0.5 * 10 ** (math.floor(math.log10(abs(right))) - 2)
+        centre = 0.0
+    else:
+        centre = float(round_number(mistake, MISTAKE_SIG_FIGS))
+        width = 0.5 * 10 ** (math.floor(math.log10(abs(centre))) - MISTAKE_SIG_FIGS + 1)
+    roundings = [float(round_number(right, sf)) for sf in RIGHT_ROUNDINGS] + [right]
+    if any(abs(r - centre) <= width * (1 + 1e-9) for r in roundings):
         return None
-    apart = [abs(other - mistake) for other in others if other != mistake]
-    return min(width, nearest / 2, *(distance / 2 for distance in apart))
+    return centre, width
 
 
 def _number(value: float) -> str:
@@ -143,13 +146,14 @@ class _Export:
             if mistake.unit is not None or mistake.direction is not None:
                 continue  # another quantity or a direction: not a number to match
             value = mistake.value if part.direction == "signed" else abs(mistake.value)
-            if not any(math.isclose(value, other, rel_tol=1e-9, abs_tol=1e-12) for other in named):
+            typed = round_number(value, MISTAKE_SIG_FIGS)
+            if all(round_number(other, MISTAKE_SIG_FIGS) != typed for other in named):
                 named[value] = mistake
         for value, mistake in named.items():
-            mistake_width = _mistake_tolerance(value, right, list(named))
-            if mistake_width is None:
+            found = _mistake_range(value, right)
+            if found is None:
                 continue
-            self._answer(question, 0, value, mistake_width,
+            self._answer(question, 0, *found,
                          f"<p><strong>{_escape(mistake.name)}.</strong> {_escape(mistake.feedback)}</p>")
         self._answer(question, 100, right, width,
                      f"<p>Right: {_escape(part.answer_text)}.</p>")

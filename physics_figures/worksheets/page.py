@@ -38,7 +38,7 @@ class TeachersFiles:
     def _html(self) -> str:
         rows = []
         for sheet in self.sheets:
-            papers = " ".join(f'<a href="{FROM_PAGE}{paper}" download>{v.letter}</a>'
+            papers = " ".join(f'<a href="{FROM_PAGE}{paper}" download>Version {v.letter}</a>'
                               for v, (paper, _) in zip(sheet.versions, sheet_files(sheet), strict=True))
             keys = " ".join(f'<a href="{FROM_PAGE}{key}" download>Key {v.letter}</a>'
                             for v, (_, key) in zip(sheet.versions, sheet_files(sheet), strict=True))
@@ -56,8 +56,8 @@ class TeachersFiles:
             f"(Moodle XML)</a>: {len(templates)} templates, {variants} variants in all.</p>")
 
     def _markdown(self) -> str:
-        lines = [f"The worksheets are files of the website's `{FOLDER}/` folder "
-                 f"(seed {SITE_SEED}):", ""]
+        lines = [(f"The worksheets are files of the website's `{FOLDER}/` folder "
+                 f"(seed {SITE_SEED}):"), ""]
         for sheet in self.sheets:
             names = ", ".join(f"`{paper}` with `{key}`" for paper, key in sheet_files(sheet))
             lines.append(f"- {sheet.title} ({len(sheet.templates)} questions, {sheet.marks} marks): {names}")

@@ -155,6 +155,10 @@ class _Export:
                 continue
             self._answer(question, 0, *found,
                          f"<p><strong>{_escape(mistake.name)}.</strong> {_escape(mistake.feedback)}</p>")
+        if part.direction == "signed" and right != 0:
+            self._answer(question, 0, -right, width,
+                         f"<p><strong>Sign slip.</strong> The size is right but the sign is wrong: "
+                         f"positive is {_escape(part.positive)}.</p>")
         self._answer(question, 100, right, width,
                      f"<p>Right: {_escape(part.answer_text)}.</p>")
         units = ET.SubElement(question, "units")

@@ -171,7 +171,7 @@ def _check_numerical(question, where) -> list[str]:
         return [*problems, f"{where}: {len(right)} right answers, not 1"]
     if ranges[-1][0] != 100:
         problems.append(f"{where}: the right answer is not after the named mistakes")
-    _, _low, high, text = right[0]
+    text = right[0][3]
     value = float(text)
     # a calculation is right at 2 s.f. or more (the export's questions say when a value is
     # read from the graph instead: that is right within half a small square)

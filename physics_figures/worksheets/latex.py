@@ -75,6 +75,10 @@ def _subscripts(text: str) -> str:
     return "".join(f"\\textsubscript{{{_SUBSCRIPTS[c]}}}" if c in _SUBSCRIPTS else c for c in text)
 
 
+def _marks(count: int) -> str:
+    return f"{count} mark" if count == 1 else f"{count} marks"
+
+
 def tex(plain: str) -> str:
     """Plain text (a prompt, a mistake's name, feedback) for LaTeX; Unicode stays Unicode."""
     return _subscripts("".join(_SPECIAL.get(char, char) for char in plain))
@@ -209,7 +213,7 @@ def question_sheet(sheet: Sheet, version: Version) -> str:
         for index, marks in enumerate(part_marks(question)):
             body.append(_part(question, index, marks))
         body.append(f"\\par\\vspace{{2pt}}\\hfill{{\\small\\itshape [Total for question {number}: "
-                    f"{question.marks} marks]}}\\par")
+                    f"{_marks(question.marks)}]}}\\par")
     body.append(r"\vspace{16pt}\begin{center}\textbf{End of the questions.}\end{center}")
     return _document("\n\n".join(body), footer=f"Version {version.letter}", title=f"{sheet.title} (version {version.letter})")
 
@@ -265,7 +269,8 @@ def _key_part(question: Question, index: int, marks: int) -> list[str]:
     part, label = question.parts[index], question.label(index) or "Answer "
     out = []
     if part.kind == "mcq":
-        out.append(f"\\textbf{{{tex(label)}}}\\textbf{{{tex(part.answer_text)}}} \\hfill [{marks}]")
+        right = part.options[OPTION_LETTERS.index(part.answer)]
+        out.append(f"\\textbf{{{tex(label)}{part.answer}: {rich(right.text)}}} \\hfill [{marks}]")
         wrong = [(letter, option) for letter, option in zip(OPTION_LETTERS, part.options, strict=True)
                  if letter != part.answer]
         out.append("\\begin{itemize}[leftmargin=1.5em,itemsep=0pt,topsep=2pt]\n" + "\n".join(
@@ -332,7 +337,7 @@ def answer_key(sheet: Sheet, version: Version) -> str:
         question = item.question
         body.append(f"\\question{{{number}}}{{\\sffamily\\bfseries {tex(item.template.title)}}} "
                     f"{{\\small ({tex(item.template.key)}, variant {item.variant})}} \\hfill "
-                    f"\\textbf{{[{question.marks} marks]}}\\par")
+                    f"\\textbf{{[{_marks(question.marks)}]}}\\par")
         body.append("{\\small " + rich(question.text) + "}")
         for index, marks in enumerate(part_marks(question)):
             body.append("\\par\\needspace{3\\baselineskip}" + "\n\n".join(_key_part(question, index, marks)))

@@ -53,12 +53,15 @@ html: venv node_modules/.package-lock.json
 	@echo ">>> building the HTML site (pages are executed; cached pages are reused)"
 	$(JB_BUILD)
 
-# The site links the teachers' PDFs, worksheets and Moodle file, so the book is the HTML,
-# then the PDFs, the worksheets and the Moodle XML (in that order, also under make -j).
+# The site links the teachers' PDFs, worksheets and Moodle file, and a zip of itself (to
+# read from disk, offline), so the book is the HTML, then the PDFs, the worksheets, the
+# Moodle XML, then the zip of all (in that order, also under make -j).
 book: html
 	@$(MAKE) --no-print-directory pdf
 	@$(MAKE) --no-print-directory worksheets
 	@$(MAKE) --no-print-directory moodle
+	@echo ">>> packing the site into a zip to open from disk"
+	$(BIN)/python scripts/zip_site.py $(SITE)
 	@echo ">>> done: open $(CURDIR)/$(SITE)/index.html  (or run: make serve)"
 
 # The teacher's kit (book/teachers.md): a worksheet per question type and the mixed 40-mark

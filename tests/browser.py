@@ -74,9 +74,21 @@ class _StaticHandler(http.server.SimpleHTTPRequestHandler):
     def log_message(self, format, *args):
         pass
 
+    #: "/NAME/" to serve the site there (as GitHub Pages serves a project site), "" at the root.
+    prefix = ""
+    #: Cache-Control: "no-cache", or a host's reuse time (GitHub Pages: max-age=600).
+    cache_control = "no-cache"
+
     def end_headers(self):
-        self.send_header("Cache-Control", "no-cache")
+        self.send_header("Cache-Control", self.cache_control)
         super().end_headers()
+
+    def translate_path(self, path):
+        if self.prefix:
+            if not path.startswith(self.prefix):
+                return str(Path(self.directory) / "no such file outside the subpath")
+            path = "/" + path[len(self.prefix):]
+        return super().translate_path(path)
 
     def send_head(self):
         path = Path(self.translate_path(self.path))
@@ -99,18 +111,20 @@ class _StaticHandler(http.server.SimpleHTTPRequestHandler):
 
 
 @contextlib.contextmanager
-def serve_site(site: Path) -> Iterator[str]:
-    """Serve `site` on a free local port in a thread; yield its base URL."""
+def serve_site(site: Path, *, prefix: str = "", cache_control: str = "no-cache") -> Iterator[str]:
+    """Serve `site` on a free local port in a thread; yield its base URL (ending before
+    `prefix`, e.g. "/dynamics/", when the site is served under a subpath)."""
+    handler_class = type("Handler", (_StaticHandler,), {"prefix": prefix, "cache_control": cache_control})
 
     def handler(*args, **kwargs):
-        return _StaticHandler(*args, directory=str(site), **kwargs)
+        return handler_class(*args, directory=str(site), **kwargs)
 
     server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
     server.daemon_threads = True
     thread = threading.Thread(target=server.serve_forever, daemon=True)
     thread.start()
     try:
-        yield f"http://127.0.0.1:{server.server_address[1]}"
+        yield f"http://127.0.0.1:{server.server_address[1]}{prefix.rstrip('/')}"
     finally:
         server.shutdown()
         server.server_close()

@@ -13,6 +13,7 @@ from physics_figures.models import (
     drag_constant_for_terminal_velocity,
     drag_force,
     earliest_opening,
+    falling_acceleration,
     open_canopy,
     skydive,
     terminal_velocity,
@@ -450,3 +451,27 @@ def test_skydive_reports_the_resultant_force_and_the_drag_at_each_terminal_veloc
     assert jump.terminal_drag["C"] == pytest.approx(jump.weight)
     assert jump.terminal_drag["E"] == pytest.approx(jump.weight)
     assert round(jump.terminal_drag["C"]) == 785
+
+
+def test_falling_acceleration_is_the_resultant_force_over_the_mass():
+    # Notes, Drag and terminal velocity: a 68 kg skydiver with 1800 N of drag has
+    # a = (1800 - 667) / 68 = 16.7 m s^-2 upwards, i.e. -16.7 with down positive.
+    from physics_figures.models import upthrust, weight
+    assert falling_acceleration(68, 1800) == pytest.approx(-(1800 - 68 * G_EARTH) / 68)
+    assert round(-falling_acceleration(68, 1800), 1) == 16.7
+    assert falling_acceleration(2.0, 0.0) == pytest.approx(G_EARTH)  # no drag: free fall
+    assert falling_acceleration(70, weight(70)) == pytest.approx(0.0, abs=1e-12)  # terminal velocity
+    u = upthrust(920, 1.5e-6)
+    assert falling_acceleration(0.012, 0.0, upthrust=u) == pytest.approx((0.012 * G_EARTH - u) / 0.012)
+    assert falling_acceleration(70, 0.0, g=1.62) == pytest.approx(1.62)
+
+
+@pytest.mark.parametrize(("call", "message"), [
+    (lambda: falling_acceleration(0, 10), "mass"),
+    (lambda: falling_acceleration(1, -1), "drag"),
+    (lambda: falling_acceleration(1, 1, upthrust=-1),
+     "upthrust"),
+])
+def test_falling_acceleration_refuses_bad_inputs_with_the_rule(call, message):
+    with pytest.raises(ValueError, match=message):
+        call()

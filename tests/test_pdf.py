@@ -254,6 +254,18 @@ def test_question_sheet_asks_each_question_with_space_to_answer(question):
             assert squash(part.prompt) + "=" in sheet, f"{question.key}: no answer line for {part.prompt}"
 
 
+@pytest.mark.parametrize("question", [q for q in all_questions() if q.graph], ids=lambda q: q.key)
+def test_question_sheet_draws_the_graph_a_question_reads_from(question):
+    """The graph is in the sheet as a drawing (its axis labels are text in the vector PDF),
+    right after the question's words, before its answer lines."""
+    sheet = squashed(SHEET)
+    start = sheet.index(squash(textformat.to_plain(question.text))[:60])
+    first_line = sheet.index(squash(question.parts[0].prompt) + "=", start)
+    drawn = sheet[start:first_line]
+    assert squash(f"{question.graph.quantity} / {question.graph.unit}") in drawn, question.key
+    assert squash("time / s") in drawn, question.key
+
+
 def test_question_sheet_gives_no_answer_or_mark_scheme():
     sheet, text = squashed(SHEET), pdf_text(SHEET)
     assert not MARK_CODE.findall(text), "the question sheet shows mark codes (a mark scheme)"

@@ -291,6 +291,12 @@ def test_the_key_prints_the_notes_values_in_the_mark_scheme():
 #: none of those uses an earlier answer.
 ECF_PARTS = {("quick-check-1", "b"), ("quick-check-3", "b"), ("practice-wall-bounce", "b"),
              ("practice-mars-rock", "b"), ("practice-towing", "b"), ("practice-trolleys-stick", "b"),
+             ("elastic-both-moving", "b"), ("elastic-both-moving", "c"),
+             ("sticking-energy-lost", "b"), ("sticking-energy-lost", "c"),
+             ("explosion-three-pieces", "b"), ("skaters-stick-right-angles", "c"),
+             ("oblique-wall-bounce", "b"), ("oblique-wall-bounce", "c"),
+             ("block-and-hanging-mass", "b"), ("rocket-lift-off", "b"),
+             ("falling-with-drag-constant", "b"), ("sphere-in-liquid", "b"), ("sphere-in-liquid", "c"),
              # read from a graph, then worked from the readings
              ("graph-kick-force-time", "b"), ("graph-kick-force-time", "c"),
              ("graph-cyclist-momentum-time", "c"), ("graph-bounce-momentum-time", "c"),
@@ -573,6 +579,7 @@ def test_an_edit_to_the_bank_re_reads_the_page(tmp_path):
 PRACTICE_PAGES = {"newton": "practice-newtons-laws", "drag": "practice-drag",
                   "force-momentum": "practice-force-momentum",
                   "definitions": "practice-definitions", "momentum-line": "practice-momentum-line",
+                  "elastic": "practice-collisions",
                   "two-d": "practice-two-dimensions"}
 PLACED = re.compile(r"```\{question\}[ ]*([^\n]*)\n(.*?)```", re.DOTALL)
 

@@ -188,6 +188,9 @@ def _write(app: Sphinx, targetname: str, title: str, subtitle: str, body: list[n
     ).get_default_values()
     document = new_document(f"<{targetname}>", settings)
     document.extend(body)
+    # a question's graph: pick the PDF of its image, as the book's own write does (the book
+    # prints the same questions, so the files are copied beside it already)
+    builder.post_process_images(document)
     root, _, _, author, themename = builder.document_data[0][:5]
     theme = builder.themes.get(themename)
     document["docclass"] = theme.docclass

@@ -9,7 +9,19 @@ from ..constants import G_EARTH, G_MOON
 from ..models import kinetic_energy, mass_from_weight, momentum, weight
 from ..notation import format_number as n
 from ..notation import round_number
-from ..questions import Ecf, Given, Mark, Mistake, Part, Question, Step
+from ..questions import (
+    OPTION_LETTERS,
+    ChoicePart,
+    Ecf,
+    ExplainPart,
+    Given,
+    Mark,
+    Mistake,
+    Option,
+    Part,
+    Question,
+    Step,
+)
 from ..variants import Draw, Template
 from ._common import N_S, PER_S, PER_S2
 
@@ -129,6 +141,151 @@ def rock_from_mars(mars_weight: float = 5.4, g_mars: float = 3.7) -> Question:
     )
 
 
+#: "Which statement is correct?" on mass, weight and their units: (situation, question, the right
+#: statement, three named misconceptions). Notes, Mass, weight and the definitions: mass is a
+#: scalar, the same everywhere; weight is the force of a gravitational field, W = mg; watch for
+#: mass given a direction, weight described as resisting motion, mass treated as changing with g.
+_MASS_CHANGES = ("mass treated as changing with g",
+                 ("Mass is the property that resists a change in motion: it is the same everywhere. "
+                 "Only the weight, W = mg, changes with g."))
+_SWAPPED = ("mass and weight swapped",
+            "It is the weight that depends on g (W = mg). The mass stays the same wherever the object is.")
+_WEIGHT_FIXED = ("weight taken as fixed, like the mass",
+                 ("Weight is the force of a gravitational field on a mass, W = mg: where g is different, "
+                 "so is the weight, even though the mass is the same."))
+_MASS_WEIGHT = (
+    (f"An astronaut travels from the Earth to the Moon, where g = {n(G_MOON, 3)} {PER_S2}.",
+     "Which statement about her mass and her weight on the Moon is correct?",
+     "Her mass is the same as on the Earth, and her weight is smaller.",
+     (("Her mass and her weight are both smaller than on the Earth.", *_MASS_CHANGES),
+      ("Her mass is smaller than on the Earth, and her weight is the same.", *_SWAPPED),
+      ("Her mass and her weight are both the same as on the Earth.", *_WEIGHT_FIXED))),
+    (("A rock sample is brought back to the Earth from Mars, where the gravitational field strength "
+     "is less than half that on the Earth."),
+     "Which statement about the rock on the Earth, compared with on Mars, is correct?",
+     "Its mass is the same, and its weight is larger.",
+     (("Its mass and its weight are both larger.", *_MASS_CHANGES),
+      ("Its mass and its weight are both the same.", *_WEIGHT_FIXED),
+      ("Its mass is larger, and its weight is the same.", *_SWAPPED))),
+    (("A space probe lands on a planet where the gravitational field strength is twice that on the "
+     "Earth."),
+     "Which statement about the probe on that planet, compared with on the Earth, is correct?",
+     "Its mass is the same, and its weight is twice as large.",
+     (("Its mass is the same, and its weight is half as large.", "weight taken as m / g",
+       "Weight = mass × gravitational field strength, W = mg: a stronger field gives a larger weight."),
+      ("Its mass and its weight are both twice as large.", *_MASS_CHANGES),
+      ("Its mass is twice as large, and its weight is the same.", *_SWAPPED))),
+    ("Mass and weight are often confused.",
+     "Which statement about mass and weight is correct?",
+     "Mass is a scalar; weight is a vector, the force of a gravitational field on a mass.",
+     (("Mass is a vector: it acts downwards, in the direction of the weight.", "mass given a direction",
+       ("Mass has a size only: it is a scalar. Weight, a force, has a direction (towards the centre "
+       "of the planet).")),
+      ("Weight is the property of an object that resists a change in its motion.",
+       "weight described as resisting motion",
+       "That describes mass. Weight is the force on a mass due to a gravitational field, W = mg."),
+      ("Mass is measured in newtons and weight in kilograms.", "units of mass and weight swapped",
+       "Mass is measured in kg; weight is a force, measured in N."))),
+    ("Force is defined as the rate of change of momentum.",
+     "What are the SI base units of force?",
+     "kg m s<sup>−2</sup>",
+     (("kg m s<sup>−1</sup>", "units of momentum",
+       ("kg m s<sup>−1</sup> is the unit of momentum. Force is momentum ÷ time: kg m s<sup>−1</sup> ÷ s "
+       "= kg m s<sup>−2</sup>.")),
+      ("N", "the newton taken as a base unit",
+       "The newton is a derived unit. The SI base units are kg, m and s: 1 N = 1 kg m s<sup>−2</sup>."),
+      ("kg m<sup>2</sup> s<sup>−2</sup>", "units of energy",
+       ("kg m<sup>2</sup> s<sup>−2</sup> is the joule, force × distance. Force = mass × acceleration: "
+       "kg × m s<sup>−2</sup>.")))),
+    ("A rocket carrying an astronaut accelerates upwards just after lift-off.",
+     "Which statement about the astronaut's weight (the gravitational force on her) is correct?",
+     "It is the same as before lift-off, mg.",
+     (("It is larger than before lift-off, because the rocket accelerates upwards.",
+       "weight confused with the contact force",
+       ("The seat pushes up on her harder (the contact force is m(g + a)), but the gravitational force, "
+       "mg, does not depend on how the rocket accelerates.")),
+      ("It is zero, because she is no longer on the ground.", "no weight off the ground",
+       "The Earth's gravitational field still acts on her, so her weight is still mg."),
+      ("It is smaller than before lift-off, because the rocket pushes her upwards.",
+       "weight reduced by the upward push",
+       "The push of the seat is a separate force, the contact force. Her weight, mg, is unchanged."))),
+)
+
+
+def mass_weight_choice(situation: float = 0) -> Question:
+    """Paper 1 style, conceptual: mass and weight, and their units (notes, "Which statement is
+    correct?"). The wrong options are the notes' misconceptions; the key's letter moves."""
+    index = int(situation)
+    what, prompt, right, wrong = _MASS_WEIGHT[index]
+    place = index % len(OPTION_LETTERS)
+    rows = [Option(text, name, feedback) for text, name, feedback in wrong]
+    rows.insert(place, Option(right))
+    return Question(
+        key="mass-weight-choice",
+        text=what,
+        givens=(),
+        parts=(ChoicePart(prompt, tuple(rows), OPTION_LETTERS[place],
+                          revisit="Mass (kg, a scalar) resists a change in motion and is the same "
+                                  "everywhere; weight (N, a vector) is the force of a gravitational "
+                                  "field on a mass, W = mg."),),
+        mark_scheme=(Mark(f"{OPTION_LETTERS[place]}: {right}", "B1"),),
+    )
+
+
+#: Explain mass and weight: (situation, what to explain, the mass point, the conclusion, the model
+#: answer's ending). Notes: mass resists a change in motion and is the same everywhere; weight is
+#: the force of a gravitational field, W = mg.
+_MASS_POINT = ("Mass is the property of an object that resists a change in its motion (its amount of "
+               "matter): it does not depend on where the object is")
+_WEIGHT_POINT = ("Weight is the force on a mass due to a gravitational field: W = mg, so it depends on "
+                 "the gravitational field strength g")
+_EXPLAIN_MASS_WEIGHT = (
+    (f"An astronaut stands on the Moon, where g = {n(G_MOON, 3)} {PER_S2}.",
+     "Explain why her mass on the Moon is the same as on the Earth, but her weight is not.",
+     _MASS_POINT,
+     (f"The Moon's g ({n(G_MOON, 3)} {PER_S2}) is smaller than the Earth's ({n(G_EARTH, 3)} {PER_S2}), "
+     "so her weight is smaller on the Moon, while her mass is the same")),
+    (("A rock sample is brought back to the Earth from Mars, where the gravitational field strength "
+     "is less than half that on the Earth."),
+     "Explain why the rock's weight on the Earth is larger than on Mars, although its mass is the same.",
+     _MASS_POINT,
+     (f"The Earth's g ({n(G_EARTH, 3)} {PER_S2}) is larger than that on Mars, so the same mass has a larger "
+     "weight on the Earth")),
+    (("On the Moon, a bag of flour is measured with a beam balance, which compares it with standard "
+     "masses, and with a spring balance, which measures the force pulling down on it."),
+     ("Explain why the beam balance gives the same reading as on the Earth, but the spring balance "
+     "gives a smaller reading."),
+     ("The beam balance compares the flour with standard masses in the same gravitational field, so it "
+     "measures mass, which does not change from the Earth to the Moon"),
+     ("The Moon's g is smaller than the Earth's, so the weight of the flour, and the spring balance's "
+     "reading, are smaller; the beam balance's reading (the mass) is the same")),
+    ("An astronaut in a spacecraft far from any planet or star pushes a heavy toolbox across the cabin.",
+     ("Explain why the toolbox has almost no weight there, but she still needs a large force to start "
+     "it moving quickly."),
+     _MASS_POINT + ", so the toolbox keeps its large mass, and F = ma needs a large force for a large "
+     "acceleration",
+     ("Far from any planet or star the gravitational field strength g is almost zero, so the weight is "
+     "almost zero, but the mass, and so the force needed to accelerate it, is unchanged")),
+)
+
+
+def mass_weight_explained(situation: float = 0) -> Question:
+    """Describe and explain: why mass stays the same but weight changes with g (notes, Weight:
+    "Mass stays the same; weight depends on where you are")."""
+    what, prompt, mass_point, conclusion = _EXPLAIN_MASS_WEIGHT[int(situation)]
+    return Question(
+        key="mass-weight-explained",
+        text=what,
+        givens=(),
+        parts=(ExplainPart(prompt, f"{mass_point}. {_WEIGHT_POINT}. {conclusion}."),),
+        mark_scheme=(
+            Mark(mass_point, "B1", "a"),
+            Mark(_WEIGHT_POINT, "M1", "a"),
+            Mark(conclusion, "A1", "a"),
+        ),
+    )
+
+
 TEMPLATES = (
     Template("quick-check-5", "definitions", ("numeric",), "Quick check 5", backpack_on_the_moon,
              {"mass": Draw(12.0, 5.0, 40.0, 1.0)}),
@@ -136,4 +293,9 @@ TEMPLATES = (
              {"grams": Draw(57.0, 54.0, 60.0, 1.0), "speed": Draw(50.0, 30.0, 70.0, 1.0)}),
     Template("practice-mars-rock", "definitions", ("numeric",), "Rock from Mars", rock_from_mars,
              {"mars_weight": Draw(5.4, 2.0, 9.0, 0.1)}),
+    Template("mass-weight-choice", "definitions", ("mcq",), "Mass or weight?", mass_weight_choice,
+             {"situation": Draw(0, 0, len(_MASS_WEIGHT) - 1, 1)}, variant_count=len(_MASS_WEIGHT)),
+    Template("mass-weight-explained", "definitions", ("explain",), "Same mass, different weight",
+             mass_weight_explained, {"situation": Draw(0, 0, len(_EXPLAIN_MASS_WEIGHT) - 1, 1)},
+             variant_count=len(_EXPLAIN_MASS_WEIGHT)),
 )

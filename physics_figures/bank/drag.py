@@ -8,14 +8,19 @@ import sympy
 from ..constants import G_EARTH
 from ..models import (
     acceleration,
+    drag_at_terminal_velocity,
     drag_constant_for_terminal_velocity,
     drag_force,
+    falling_acceleration,
+    terminal_velocity,
+    upthrust,
     velocity_from_rest,
     weight,
 )
 from ..notation import format_number as n
 from ..questions import (
     G_TEN,  # the g students use instead of the data's 9.81 m s^-2
+    OPTION_LETTERS,
     ChoicePart,
     Ecf,
     ExplainPart,
@@ -24,6 +29,7 @@ from ..questions import (
     GraphPart,
     Mark,
     Mistake,
+    Option,
     Part,
     Question,
     Step,
@@ -31,6 +37,7 @@ from ..questions import (
 )
 from ..variants import Draw, Template
 from ._common import M_S, M_S2, PER_S, PER_S2, reading, reading_rule
+from ._common import w as working
 
 a_answer, open_drag_symbol, mass_symbol = sympy.symbols("a open_drag mass")
 
@@ -172,9 +179,354 @@ def terminal_velocity_explained(situation: float = 0) -> Question:
     )
 
 
+#: The stone's mass in drag_fraction_choice: the answer does not depend on it, so it is not stated.
+_STONE_MASS = 0.40
+
+
+def drag_fraction_choice(percent: float = 25.0) -> Question:
+    """Paper 1 style: the acceleration of a falling body when the drag is a given fraction of its
+    weight (notes: resultant force = weight − drag; a = resultant / mass). Wrong options: the
+    drag ignored (a = g), the drag added to the weight, the drag taken as the resultant force
+    (below the key when the drag is less than half the weight, so the key is not always A)."""
+    fraction, mass = percent / 100, _STONE_MASS
+    drag = fraction * weight(mass)
+    key = falling_acceleration(mass, drag)
+    p = n(percent, 2)
+    options, answer = choices_in_order(key, {
+        "drag ignored": (
+            falling_acceleration(mass, 0.0),
+            ("That is g, the acceleration with no air resistance at all. The air resistance acts "
+            "upwards, so the resultant force is weight − air resistance, and a is less than g.")),
+        "drag added to the weight": (
+            acceleration(weight(mass) + drag, mass),
+            ("The weight acts downwards and the air resistance upwards, against the motion: "
+            "subtract them, do not add.")),
+        "air resistance used as the resultant force": (
+            acceleration(drag, mass),
+            ("That is the air resistance divided by the mass. The weight still acts: the resultant "
+            "force is weight − air resistance.")),
+    }, sig_figs=3, unit=PER_S2)
+    return Question(
+        key="drag-fraction-choice",
+        text=(f"A stone falls vertically through still air. At one instant the air resistance on the "
+              f"stone is {p}% of its weight. Take g = 9.81 {PER_S2}."),
+        givens=(Given("air resistance as a percentage of the weight", percent, "%", 2),),
+        parts=(ChoicePart("What is the acceleration of the stone at this instant?", options, answer,
+                          revisit="Resultant force = weight − air resistance (they act in opposite "
+                                  "directions), and a = resultant force / mass."),),
+        mark_scheme=(Mark(f"{answer}: resultant force = W − {p}% of W, so a = (1 − {n(fraction, 2)}) × "
+                          f"9.81 = {n(key, 3)} {PER_S2} (downwards)", "B1"),),
+    )
+
+
+#: At a terminal velocity: the situation, the statement that is true, and three named
+#: misconceptions (notes: at terminal velocity the resultant force is zero, weight = drag
+#: (+ upthrust); common mistakes: acceleration g, no drag, drag bigger than the weight,
+#: upthrust forgotten, the velocity or acceleration upwards once the parachute is open).
+_G_WHILE_FALLING = ("acceleration is g while it falls",
+                    ("g is the acceleration only at the very start, when the speed and so the drag are "
+                    "zero. At terminal velocity the velocity is constant, so the acceleration is zero."))
+_NO_DRAG = ("no drag at zero acceleration",
+            ("Zero acceleration means a zero resultant force, not zero drag: the drag has grown with "
+            "the speed until it balances the weight."))
+_DRAG_BIGGER = ("drag greater than the weight",
+                ("If the drag were greater than the weight, the resultant force would be upwards and "
+                "the body would slow down. At a constant velocity the resultant force is zero."))
+_AT_TERMINAL = (
+    ("A skydiver falls vertically at a constant (terminal) velocity before she opens her parachute.",
+     "The air resistance on her equals her weight, so the resultant force on her is zero.",
+     (("Her acceleration is 9.81 m s<sup>−2</sup> downwards, because she is still falling.",
+       *_G_WHILE_FALLING),
+      ("There is no air resistance on her, because her acceleration is zero.", *_NO_DRAG),
+      ("The air resistance on her is greater than her weight, so she cannot speed up.", *_DRAG_BIGGER))),
+    ("A raindrop falls vertically through still air at its terminal velocity.",
+     "The air resistance on the raindrop equals its weight, so its acceleration is zero.",
+     (("The air resistance on the raindrop is zero, because its velocity is constant.", *_NO_DRAG),
+      ("The air resistance is greater than the weight of the raindrop.", *_DRAG_BIGGER),
+      ("The raindrop accelerates at 9.81 m s<sup>−2</sup>, the acceleration of free fall.",
+       *_G_WHILE_FALLING))),
+    ("A steel ball bearing sinks through a tall tube of oil at its terminal velocity.",
+     ("The viscous drag and the upthrust together equal the weight of the ball, so the resultant "
+     "force on it is zero."),
+     (("The viscous drag on the ball equals its weight.", "upthrust forgotten",
+       ("In a liquid the upthrust acts upwards too, and it does not change with speed. At terminal "
+       "velocity weight = drag + upthrust, so the drag is less than the weight.")),
+      ("The ball accelerates at 9.81 m s<sup>−2</sup>, because it is falling.", *_G_WHILE_FALLING),
+      ("The viscous drag on the ball is greater than its weight, so it sinks at a constant speed.",
+       *_DRAG_BIGGER))),
+    ("A skydiver opened her parachute some time ago. She now falls at a new, lower constant velocity.",
+     "The air resistance on her equals her weight, the same size as before the parachute opened.",
+     (("The air resistance on her is greater than her weight, because the parachute is open.",
+       "drag stays greater than the weight with the parachute open",
+       ("The drag is greater than the weight only just after the parachute opens, while she slows. As "
+       "her speed falls the drag falls, until it equals her weight again.")),
+      ("The air resistance on her is less than before the parachute opened, because she is slower.",
+       "less speed, so less drag at the new terminal velocity",
+       ("At both terminal velocities the drag equals her weight. The parachute's large area gives that "
+       "much drag at a lower speed.")),
+      ("Her acceleration is upwards, because the parachute is open.", "acceleration upwards",
+       ("Her acceleration was upwards just after the parachute opened, while she slowed down. Now her "
+       "velocity is constant, so her acceleration is zero.")))),
+    ("A small stone sinks through the water of a deep lake at its terminal velocity.",
+     "The drag of the water and the upthrust together equal the weight of the stone.",
+     (("The drag of the water equals the weight of the stone.", "upthrust forgotten",
+       ("In water the upthrust acts upwards too. At terminal velocity weight = drag + upthrust, so the "
+       "drag is less than the weight.")),
+      ("There is no drag on the stone, because its acceleration is zero.", *_NO_DRAG),
+      ("The stone's acceleration is 9.81 m s<sup>−2</sup>, because nothing holds it up.",
+       *_G_WHILE_FALLING))),
+)
+
+
+def terminal_velocity_choice(situation: float = 0) -> Question:
+    """Paper 1 style, conceptual: what is true at a terminal velocity. The wrong options are the
+    notes' misconceptions; the key's letter moves with the situation."""
+    index = int(situation)
+    what, right, wrong = _AT_TERMINAL[index]
+    place = index % len(OPTION_LETTERS)
+    rows = [Option(text, name, feedback) for text, name, feedback in wrong]
+    rows.insert(place, Option(right))
+    return Question(
+        key="terminal-velocity-choice",
+        text=what,
+        givens=(),
+        parts=(ChoicePart("Which statement is correct?", tuple(rows), OPTION_LETTERS[place],
+                          revisit="At terminal velocity the velocity is constant, so the acceleration "
+                                  "and the resultant force are zero: weight = drag (+ upthrust in a "
+                                  "liquid)."),),
+        mark_scheme=(Mark(f"{OPTION_LETTERS[place]}: {right}", "B1"),),
+    )
+
+
+#: Something moving faster than the speed its drag can hold (a parachute opens, it enters water):
+#: (situation, whose deceleration, the event, why it decelerates, the resultant force, how it ends).
+_SLOWING = (
+    (("A skydiver is falling at terminal velocity when she opens her parachute. She slows down and "
+     "then falls at a lower constant velocity."),
+     "her", "the parachute opens",
+     ("The drag is greater than her weight, so the resultant force on her is upwards, against her "
+     "velocity: she decelerates (a = F / m)"),
+     "the resultant force (drag − weight)",
+     ("until the drag equals her weight again: the resultant force is zero and she falls at a new, "
+     "lower terminal velocity")),
+    (("A drag-racing car crosses the finish line of a straight, level track at high speed. The engine "
+     "is switched off and a braking parachute opens behind the car."),
+     "the car's", "the parachute opens",
+     ("Along the track the drag (with a little friction) is the only force, backwards: the weight acts "
+     "vertically and is balanced by the normal contact force of the track. So the drag is the "
+     "resultant force and the car decelerates (a = F / m)"),
+     "the resultant force (the drag)",
+     ("towards zero as the car slows: with no forward force for the drag to balance, and no weight "
+     "along the level track, there is no terminal velocity (the brakes stop the car)")),
+    (("A heavy steel ball is thrown downwards into a deep lake. It enters the water much faster than "
+     "its terminal velocity in water, and then sinks at a lower constant velocity."),
+     "the ball's", "it enters the water",
+     ("The drag of the water and the upthrust together are greater than the weight, so the resultant "
+     "force is upwards, against its velocity: it decelerates (a = F / m)"),
+     "the resultant force (drag + upthrust − weight; the upthrust and the weight stay the same)",
+     ("until drag + upthrust = weight: the resultant force is zero and the ball sinks at its (lower) "
+     "terminal velocity")),
+    (("A space capsule returning to the Earth falls through the lower atmosphere at a steady speed. "
+     "Its main parachutes then open, and it slows to a lower steady speed for landing."),
+     "the capsule's", "the parachutes open",
+     ("The drag is greater than the capsule's weight, so the resultant force is upwards, against its "
+     "velocity: it decelerates (a = F / m)"),
+     "the resultant force (drag − weight)",
+     ("until the drag equals the weight again: the resultant force is zero and the capsule falls at a "
+     "new, lower terminal velocity")),
+)
+
+
+def deceleration_largest_explained(situation: float = 0) -> Question:
+    """Describe and explain: why the deceleration is largest just after a parachute opens (or a
+    body enters water), and then decreases (notes, points D to E: the drag is largest when the
+    speed is largest; as the speed falls the drag falls, so the deceleration decreases)."""
+    what, whose, event, decelerates, resultant, end = _SLOWING[int(situation)]
+    return Question(
+        key="deceleration-largest-explained",
+        text=what,
+        givens=(),
+        parts=(ExplainPart(
+            f"Explain why {whose} deceleration is largest just after {event}, and describe and explain "
+            "how the deceleration changes after that.",
+            f"Drag increases with speed. Just after {event} the speed is at its largest, so the drag is "
+            f"at its largest. {decelerates}. As the speed falls, the drag falls, so {resultant} "
+            f"decreases and the deceleration decreases, {end}."),),
+        mark_scheme=(
+            Mark(f"The drag increases with speed, and the speed is largest just after {event}, so the "
+                 "drag is largest then", "B1", "a"),
+            Mark(decelerates, "B1", "a"),
+            Mark(f"As the speed falls the drag falls, so {resultant} decreases, so the deceleration "
+                 "decreases", "M1", "a"),
+            Mark(f"The deceleration decreases {end}", "A1", "a"),
+        ),
+    )
+
+
+def falling_with_drag_constant(mass: float = 80.0, k: float = 0.25, speed: float = 30.0) -> Question:
+    """A skydiver with drag D = k v² (k given): the drag and the acceleration at a speed, and the
+    terminal velocity from k v² = m g (notes: drag grows with speed; a = resultant / mass; with a
+    given drag formula, set it equal to the weight)."""
+    d = drag_force(k, speed)
+    w_ = weight(mass)
+    if d >= w_:
+        raise ValueError(f"speed must be below the terminal velocity, so that the drag {n(d, 3)} N is less "
+                         f"than the weight {n(w_, 3)} N (got speed={speed!r})")
+    a = falling_acceleration(mass, d)
+    v_t = terminal_velocity(mass, k)
+    m, kk, v = n(mass, 2), n(k, 2), n(speed, 2)
+    return Question(
+        key="falling-with-drag-constant",
+        text=(f"A skydiver of mass {m} kg falls vertically before opening her parachute. The air "
+              f"resistance on her is D = kv<sup>2</sup>, where v is her speed and k = {kk} kg m<sup>−1</sup>. "
+              f"(a) Calculate the air resistance when her speed is {v} {PER_S}. (b) Calculate the size of "
+              "her acceleration at that speed. (c) Calculate her terminal velocity."),
+        givens=(Given("mass", mass, "kg", 2), Given("k", k, "kg m^-1", 2), Given("speed", speed, "m s^-1", 2)),
+        parts=(
+            Part(f"air resistance at {v} m s⁻¹", d, "N", "force", shown_sig_figs=3,
+                 revisit="D = kv²: square the speed, then multiply by k.",
+                 mistakes=(
+                     Mistake("speed not squared", k * speed,
+                             f"You multiplied k by the speed. D = kv²: square the speed first ({v}²)."),
+                     Mistake("divided by k", speed**2 / k,
+                             "You divided by k. D = kv²: multiply the square of the speed by k."),
+                 )),
+            Part("size of her acceleration at that speed", a, "m s^-2", "acceleration", units=M_S2,
+                 shown_sig_figs=3,
+                 working=(Step("air resistance", d, "N"),),
+                 answer_from=lambda d_: falling_acceleration(mass, d_),
+                 answer_for_g=lambda g: falling_acceleration(mass, d, g=g),
+                 ecf=Ecf((mass_symbol * g_symbol - a_answer) / mass_symbol,
+                         {"mass": mass, "g_earth": G_EARTH}),
+                 revisit="Resultant force = weight − air resistance; a = resultant force / mass.",
+                 mistakes=(
+                     Mistake("drag used as the resultant force", acceleration(d, mass),
+                             "You used the air resistance as the resultant force. The weight still "
+                             "acts: resultant = mg − D."),
+                     Mistake("drag added to the weight", acceleration(w_ + d, mass),
+                             "The weight acts downwards and the air resistance upwards: subtract them, "
+                             "do not add."),
+                     Mistake("acceleration of free fall", G_EARTH,
+                             "g is her acceleration only when there is no air resistance. At this speed "
+                             "the resultant force is mg − D."),
+                 )),
+            Part("terminal velocity", v_t, "m s^-1", "velocity", units=M_S, shown_sig_figs=3,
+                 answer_for_g=lambda g: terminal_velocity(mass, k, g=g),
+                 revisit="At terminal velocity the drag equals the weight: kv² = mg, so v = √(mg / k).",
+                 mistakes=(
+                     Mistake("square root forgotten", w_ / k,
+                             "That is v², not v: kv² = mg gives v² = mg / k; take the square root."),
+                     Mistake("mass used instead of weight", terminal_velocity(mass, k, g=1.0),
+                             "You used the mass for the weight. The drag equals the weight, mg, in N."),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"D = kv<sup>2</sup> = {kk} × {v}<sup>2</sup>", "C1", "a"),
+            Mark(f"= {n(d, 3)} N", "A1", "a"),
+            Mark(f"resultant force = mg − D = {m} × {n(G_EARTH, 3)} − {working(d)} = {working(w_ - d)} N",
+                 "C1", "b"),
+            Mark(f"a = F / m = {working(w_ - d)} / {m}", "C1", "b"),
+            Mark(f"= {n(a, 3)} {PER_S2} (downwards)", "A1", "b"),
+            Mark(f"At terminal velocity kv<sup>2</sup> = mg, so v = √({working(w_)} / {kk})", "C1", "c"),
+            Mark(f"= {n(v_t, 3)} {PER_S}", "A1", "c"),
+        ),
+    )
+
+
+#: Densities a solid metal sphere may have, g cm^-3 (aluminium to lead).
+_METAL_DENSITY = (2.7, 11.3)
+
+
+def sphere_in_liquid(grams: float = 6.3, volume_cm3: float = 0.80, density: float = 920.0) -> Question:
+    """A metal sphere sinking through a liquid: the upthrust, the viscous drag at terminal velocity,
+    and the acceleration at half the terminal velocity when the drag is proportional to the speed
+    (notes: in a liquid weight = drag + upthrust; upthrust ρgV with the liquid's density)."""
+    if not _METAL_DENSITY[0] <= grams / volume_cm3 <= _METAL_DENSITY[1]:
+        raise ValueError(f"grams / volume_cm3 must be a metal's density, {_METAL_DENSITY[0]} to "
+                         f"{_METAL_DENSITY[1]} g cm^-3 (got grams={grams!r}, volume_cm3={volume_cm3!r})")
+    mass, volume = grams / 1000, volume_cm3 * 1e-6
+    w_ = weight(mass)
+    u = upthrust(density, volume)
+    d = drag_at_terminal_velocity(w_, u)
+    a = falling_acceleration(mass, d / 2, upthrust=u)
+    gr, vol, rho = n(grams, 2), n(volume_cm3, 2), n(density, 3)
+    return Question(
+        key="sphere-in-liquid",
+        text=(f"A metal sphere of mass {gr} g and volume {vol} cm<sup>3</sup> sinks through a liquid of "
+              f"density {rho} kg m<sup>−3</sup> and reaches a terminal velocity. The viscous drag on the "
+              "sphere is proportional to its speed. (a) Calculate the upthrust on the sphere. "
+              "(b) Calculate the viscous drag on it at terminal velocity. (c) Calculate the size of its "
+              "acceleration when its speed is half its terminal velocity."),
+        givens=(Given("mass", grams, "g", 2), Given("volume", volume_cm3, "cm^3", 2),
+                Given("density of the liquid", density, "kg m^-3", 3)),
+        parts=(
+            Part("upthrust on the sphere", u, "N", "force", shown_sig_figs=3,
+                 answer_for_g=lambda g: upthrust(density, volume, g=g),
+                 revisit="Upthrust = ρgV, with the density of the liquid and the volume in m³.",
+                 mistakes=(
+                     Mistake("volume left in cm³", upthrust(density, volume_cm3),
+                             f"You used the volume in cm³. Convert it to m³ first: {vol} cm³ = "
+                             f"{vol} × 10⁻⁶ m³."),
+                     Mistake("sphere's density used, not the liquid's", w_,
+                             "That is the sphere's weight. The upthrust uses the density of the "
+                             "liquid: ρgV."),
+                 )),
+            Part("viscous drag at terminal velocity", d, "N", "force", shown_sig_figs=3,
+                 working=(Step("weight of the sphere", w_, "N"), Step("upthrust", u, "N")),
+                 answer_from=lambda w1, u1: drag_at_terminal_velocity(w1, u1),
+                 answer_for_g=lambda g: drag_at_terminal_velocity(weight(mass, g=g),
+                                                                  upthrust(density, volume, g=g)),
+                 ecf=Ecf(mass_symbol * g_symbol - a_answer, {"mass": mass, "g_earth": G_EARTH}),
+                 revisit="At terminal velocity the resultant force is zero: weight = drag + upthrust, "
+                         "so drag = weight − upthrust.",
+                 mistakes=(
+                     Mistake("upthrust forgotten", w_,
+                             "That is the weight. In a liquid the upthrust helps to hold the sphere up: "
+                             "drag = weight − upthrust."),
+                     Mistake("upthrust added to the weight", w_ + u,
+                             "The upthrust acts upwards, with the drag: weight = drag + upthrust, so "
+                             "subtract it."),
+                     Mistake("mass left in grams", weight(grams) - u,
+                             f"You used the mass in g. Convert to kg first: {gr} g = {n(mass, 2)} kg."),
+                 )),
+            Part("size of the acceleration at half the terminal velocity", a, "m s^-2", "acceleration",
+                 units=M_S2, shown_sig_figs=3,
+                 working=(Step("drag at half the terminal velocity", d / 2, "N"), Step("upthrust", u, "N")),
+                 answer_from=lambda d1, u1: falling_acceleration(mass, d1, upthrust=u1),
+                 answer_for_g=lambda g: falling_acceleration(
+                     mass, drag_at_terminal_velocity(weight(mass, g=g), upthrust(density, volume, g=g)) / 2,
+                     g=g, upthrust=upthrust(density, volume, g=g)),
+                 ecf=Ecf((mass_symbol * g_symbol - a_answer - b_answer / 2) / mass_symbol,
+                         {"mass": mass, "g_earth": G_EARTH}),
+                 revisit="The drag is proportional to the speed, so at half the speed it is half the "
+                         "terminal drag. Resultant force = weight − upthrust − drag; a = F / m.",
+                 mistakes=(
+                     Mistake("upthrust forgotten", falling_acceleration(mass, d / 2),
+                             "The upthrust still acts upwards: resultant = weight − upthrust − drag."),
+                     Mistake("acceleration of free fall", G_EARTH,
+                             "g is the acceleration with no drag and no upthrust. Here both act "
+                             "upwards: resultant = weight − upthrust − drag."),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"U = ρgV = {rho} × {n(G_EARTH, 3)} × {vol} × 10<sup>−6</sup>", "C1", "a"),
+            Mark(f"= {n(u, 3)} N", "A1", "a"),
+            Mark(f"W = mg = {n(mass, 2)} × {n(G_EARTH, 3)} = {working(w_)} N", "C1", "b"),
+            Mark("At terminal velocity weight = drag + upthrust, so drag = W − U "
+                 f"= {working(w_)} − {working(u)}", "C1", "b"),
+            Mark(f"= {n(d, 3)} N", "A1", "b"),
+            Mark(f"At half the speed the drag is half: {working(d / 2)} N", "C1", "c"),
+            Mark(f"a = (W − U − D) / m = ({working(w_)} − {working(u)} − {working(d / 2)}) / {n(mass, 2)}",
+                 "C1", "c"),
+            Mark(f"= {n(a, 3)} {PER_S2} (downwards)", "A1", "c"),
+        ),
+    )
+
+
 # ---------------------------------------------------------------- reading a graph
 
 b_answer, c_answer, gravity_symbol = sympy.symbols("b c gravity")
+g_symbol = sympy.Symbol("g_earth")
 #: The velocity-time curves are drawn through a point every this many seconds.
 _CURVE_STEP = 0.1
 
@@ -289,6 +641,20 @@ TEMPLATES = (
     Template("terminal-velocity-explained", "drag", ("explain",), "Why terminal velocity?",
              terminal_velocity_explained, {"situation": Draw(0, 0, len(_FALLERS) - 1, 1)},
              variant_count=len(_FALLERS)),
+    Template("drag-fraction-choice", "drag", ("mcq",), "Air resistance a fraction of the weight",
+             drag_fraction_choice,
+             {"percent": Draw(25.0, 10.0, 90.0, 5.0)}),
+    Template("terminal-velocity-choice", "drag", ("mcq",), "At terminal velocity", terminal_velocity_choice,
+             {"situation": Draw(0, 0, len(_AT_TERMINAL) - 1, 1)}, variant_count=len(_AT_TERMINAL)),
+    Template("deceleration-largest-explained", "drag", ("explain",), "Why is the deceleration largest?",
+             deceleration_largest_explained, {"situation": Draw(0, 0, len(_SLOWING) - 1, 1)},
+             variant_count=len(_SLOWING)),
+    Template("falling-with-drag-constant", "drag", ("numeric",), "Drag D = kv²", falling_with_drag_constant,
+             {"mass": Draw(80.0, 55.0, 99.0, 1.0), "k": Draw(0.25, 0.18, 0.32, 0.01),
+              "speed": Draw(30.0, 15.0, 45.0, 1.0)}),
+    Template("sphere-in-liquid", "drag", ("numeric",), "Sphere sinking in a liquid", sphere_in_liquid,
+             {"grams": Draw(6.3, 2.0, 9.9, 0.1), "volume_cm3": Draw(0.80, 0.30, 2.0, 0.1),
+              "density": Draw(920.0, 800.0, 1260.0, 10.0)}),
     Template("graph-skydiver-terminal", "drag", ("graph", "numeric"), "A skydiver: velocity–time graph",
              skydiver_velocity_time, {"terminal": Draw(50.0, 30.0, 70.0, 1.0), "mass": Draw(70.0, 50.0, 100.0, 1.0)}),
     Template("graph-ball-acceleration", "drag", ("graph", "numeric"), "A falling ball: velocity–time graph",

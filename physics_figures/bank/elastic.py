@@ -3,6 +3,11 @@
 
 from __future__ import annotations
 
+import math
+
+import sympy
+
+from .. import textformat
 from ..models import (
     elastic_collision,
     kinetic_energy,
@@ -10,12 +15,29 @@ from ..models import (
     relative_speed,
     stick_together,
     total_kinetic_energy,
+    total_momentum,
+    velocity_after_collision,
     velocity_from_momentum,
 )
 from ..notation import format_number as n
-from ..questions import Given, Mark, Mistake, Part, Question
+from ..questions import (
+    OPTION_LETTERS,
+    ChoicePart,
+    Ecf,
+    ExplainPart,
+    Given,
+    Mark,
+    Mistake,
+    Option,
+    Part,
+    Question,
+    choices_in_order,
+)
 from ..variants import Draw, Template
 from ._common import M_S, PER_S, w
+
+#: A unit for feedback, which the page shows as plain text.
+_PER_S_PLAIN = "m s⁻¹"
 
 
 def _times(mass: float, symbol: str) -> str:
@@ -86,7 +108,341 @@ def light_ball_hits_heavy_ball(m1: float = 1.0, u1: float = 6.0, m2: float = 2.0
     )
 
 
+
+
+def _moving(velocity: float) -> str:
+    """A signed velocity along the track as the text says it: "2.5 m s⁻¹ to the right", "at rest"."""
+    if velocity == 0:
+        return "at rest"
+    return f"moving at {n(abs(velocity), 2)} {PER_S} to the {'right' if velocity > 0 else 'left'}"
+
+
+#: Head-on collisions in which the bodies bounce apart: what collides, their masses (kg) and
+#: velocities before (u) and the first body's velocity after (v1), signed, positive to the right.
+#: The second body's velocity after comes from momentum; whether kinetic energy is kept comes
+#: from the models (notes: "Elastic and inelastic collisions", "to decide elastic or inelastic").
+_BOUNCES = (
+    ("Two gliders on a level air track", "glider", 0.60, 2.5, 0.40, 0.0, 0.50),
+    ("Two trolleys on a level runway", "trolley", 2.0, 3.0, 1.0, 0.0, 1.5),
+    ("Two steel balls on a smooth groove", "ball", 0.20, 4.0, 0.20, -2.0, -2.0),
+    ("Two pucks on smooth ice", "puck", 0.50, 4.0, 1.5, 0.0, -0.50),
+    ("Two railway trucks on a level track", "truck", 3000.0, 2.0, 2000.0, -0.50, 0.40),
+)
+
+
+def elastic_or_not_choice(situation: float = 0) -> Question:
+    """Paper 1 style: is this collision elastic? Decide from the total kinetic energy (or the
+    relative speeds), not from momentum (always conserved) or from the bodies separating."""
+    what, body, m1, u1, m2, u2, v1 = _BOUNCES[int(situation)]
+    v2 = velocity_after_collision(m1, u1, m2, u2, v1)
+    ke_before = total_kinetic_energy((m1, m2), (u1, u2))
+    ke_after = total_kinetic_energy((m1, m2), (v1, v2))
+    approach, separation = relative_speed(u1, u2), relative_speed(v1, v2)
+    elastic = math.isclose(ke_before, ke_after, rel_tol=1e-9)
+    ke_a_before, ke_a_after = kinetic_energy(m1, u1), kinetic_energy(m1, v1)
+    if elastic and ke_a_after >= ke_a_before:
+        raise ValueError(f"v1 must leave body A with less kinetic energy in an elastic situation, "
+                         f"so the one-body option is a mistake (got v1={v1!r})")
+    energy = f"{w(ke_before)} J before; {w(kinetic_energy(m1, v1))} + {w(kinetic_energy(m2, v2))} = " \
+             f"{w(ke_after)} J after"
+    speeds = f"approach {w(approach)} {PER_S}, separation {w(separation)} {PER_S}"
+    plain_energy, plain_speeds = textformat.to_plain(energy), speeds.replace(PER_S, _PER_S_PLAIN)
+    if elastic:
+        key = Option(f"It is elastic: the relative speed of approach and the relative speed of separation "
+                     f"are both {n(approach, 2)} {PER_S}.")
+        wrong = (
+            Option(f"It is inelastic: {body} A loses kinetic energy in the collision.",
+                   "looked at one body's kinetic energy",
+                   f"A does lose kinetic energy, but B gains exactly as much. Elastic means the "
+                   f"total kinetic energy is kept: {plain_energy}."),
+            Option("It is inelastic: some kinetic energy is lost in every collision.",
+                   "kinetic energy lost in every collision",
+                   "Not in every collision: in an elastic one the total kinetic energy is kept. Compare "
+                   f"the totals, or the relative speeds ({plain_speeds})."),
+            Option("It is inelastic: the relative speeds of approach and separation do not add up to zero.",
+                   "approach + separation = 0",
+                   "Relative speeds are sizes, so they never add to zero. The test for an elastic "
+                   f"collision is that they are equal: {plain_speeds}."),
+        )
+    else:
+        key = Option(f"It is inelastic: the total kinetic energy falls from {n(ke_before, 3)} J to "
+                     f"{n(ke_after, 3)} J.")
+        wrong = (
+            Option("It is elastic: the total momentum is the same before and after.",
+                   "momentum conserved, so elastic",
+                   "Momentum is conserved in every collision, elastic or not, so it cannot decide. "
+                   f"Compare the total kinetic energy: {plain_energy}."),
+            Option(f"It is elastic: the {body}s bounce apart instead of sticking together.",
+                   "the bodies separate, so elastic",
+                   "Bodies that stick together always have an inelastic collision, but bouncing apart "
+                   f"does not make one elastic. Compare the total kinetic energy: {plain_energy}."),
+            Option("It is elastic: kinetic energy is conserved in every collision.",
+                   "kinetic energy conserved in every collision",
+                   "Kinetic energy is conserved only in an elastic collision; momentum is the one "
+                   f"always conserved. Here {plain_energy}."),
+        )
+    turn = int(situation) % len(OPTION_LETTERS)  # the key is not always the same letter
+    options = (*wrong[:turn], key, *wrong[turn:])
+    mass_a, mass_b = n(m1, 2), n(m2, 2)
+    return Question(
+        key="elastic-or-not-choice",
+        text=(f"{what} collide head-on. {body.capitalize()} A of mass {mass_a} kg is {_moving(u1)}, and "
+              f"{body} B of mass {mass_b} kg is {_moving(u2)}. After the collision A is {_moving(v1)} "
+              f"and B is {_moving(v2)}."),
+        givens=(Given("mass of A", m1, "kg", 2), Given("mass of B", m2, "kg", 2),
+                Given("velocity of A after", abs(v1), "m s^-1", 2),
+                Given("velocity of B after", abs(v2), "m s^-1", 2)),
+        parts=(ChoicePart("Which statement about the collision is correct?", options,
+                          OPTION_LETTERS[turn],
+                          revisit="Momentum is conserved in every collision. To decide elastic or "
+                                  "inelastic, compare the total kinetic energy before and after, or "
+                                  "the relative speeds of approach and separation."),),
+        mark_scheme=(Mark(f"{OPTION_LETTERS[turn]}: kinetic energy {energy}; relative speeds: {speeds}, so "
+                          f"{'elastic' if elastic else 'inelastic'}", "B1"),),
+    )
+
+
+def stick_energy_choice(m1: float = 2.0, u1: float = 4.0, m2: float = 1.0, speed2: float = 2.0) -> Question:
+    """Paper 1 style: the kinetic energy transferred when two trolleys moving towards each other
+    stick (notes: sticking trolleys, 24 J -> 18 J). Wrong options: the notes' common mistakes."""
+    u2 = -speed2  # B moves towards A: positive is A's direction
+    if momentum(m2, speed2) >= momentum(m1, u1):
+        raise ValueError(f"A must have more momentum than B ({n(momentum(m2, speed2), 3)} N s), so the "
+                         f"pair moves on in A's direction (got m1={m1!r}, u1={u1!r})")
+    v = stick_together(m1, u1, m2, u2)
+    before = total_kinetic_energy((m1, m2), (u1, u2))
+    after = total_kinetic_energy((m1 + m2,), (v,))
+    key = before - after
+    same_way = stick_together(m1, u1, m2, speed2)
+    # "Forgot one body's kinetic energy": students leave out the lighter trolley B before, or
+    # leave B out of the pair after (which gives too much); which one keeps the key's letter moving.
+    if kinetic_energy(m2, speed2) < 0.1 * (before - after):
+        raise ValueError(f"speed2={speed2!r} m s^-1 gives B too little kinetic energy "
+                         f"({n(kinetic_energy(m2, speed2), 2)} J) for forgetting it to be told from the key")
+    if m2 < m1:
+        forgot_b = {"forgot B's kinetic energy before": (
+            kinetic_energy(m1, u1) - after,
+            ("You left out B's kinetic energy before the collision. Both trolleys were moving: add "
+             "½m₁u₁² and ½m₂u₂²."))}
+    elif kinetic_energy(m2, v) < 0.1 * (before - after):
+        raise ValueError(f"the pair moves too slowly ({n(v, 2)} m s^-1) for leaving B out of the kinetic "
+                         f"energy after to be told from the key (got m1={m1!r}, m2={m2!r})")
+    else:
+        forgot_b = {"left B out of the kinetic energy after": (
+            before - kinetic_energy(m1, v),
+            ("You worked out the kinetic energy after with A's mass only. The trolleys move together "
+             "afterwards: use ½(m₁ + m₂)v²."))}
+    options, answer = choices_in_order(key, {
+        "forgot B's direction": (
+            before - total_kinetic_energy((m1 + m2,), (same_way,)),
+            ("You gave B's velocity the same sign as A's. They move towards each other, so B's momentum "
+            "is negative: the common velocity is (m₁u₁ − m₂u₂) / (m₁ + m₂).")),
+        **forgot_b,
+        "kinetic energy taken as conserved": (
+            0.0,
+            ("Kinetic energy is conserved only in an elastic collision. Trolleys that stick together "
+            "always lose some: work out the total before and after.")),
+    }, sig_figs=2, unit="J")
+    a_mass, b_mass = n(m1, 2), n(m2, 2)
+    return Question(
+        key="stick-energy-choice",
+        text=(f"Trolley A of mass {a_mass} kg, moving at {n(u1, 2)} {PER_S}, collides head-on with trolley B "
+              f"of mass {b_mass} kg, moving towards it at {n(speed2, 2)} {PER_S}. The trolleys stick "
+              "together."),
+        givens=(Given("mass of A", m1, "kg", 2), Given("speed of A", u1, "m s^-1", 2),
+                Given("mass of B", m2, "kg", 2), Given("speed of B", speed2, "m s^-1", 2)),
+        parts=(ChoicePart("How much kinetic energy is transferred to other forms in the collision?",
+                          options, answer,
+                          revisit="Find the common velocity from momentum (with B's velocity negative), "
+                                  "then subtract the total kinetic energy after from the total before."),),
+        mark_scheme=(Mark(f"{answer}: v = ({w(momentum(m1, u1))} − {w(momentum(m2, speed2))}) / "
+                          f"{w(m1 + m2)} = {w(v)} {PER_S}; {w(before)} − {w(after)} = {n(key, 2)} J", "B1"),),
+    )
+
+
+#: Inelastic collisions in an isolated system: what happens, and where the kinetic energy goes.
+_CRASHES = (
+    ("A lump of modelling clay is thrown at a trolley at rest on a smooth, level track and sticks to it.",
+     "the clay and the trolley", "the clay is squashed out of shape"),
+    ("Two railway trucks roll towards each other on a level track, collide and couple together.",
+     "the two trucks", "the buffers and couplings are pushed in and bent"),
+    ("A bullet is fired into a block of wood resting on a smooth, level surface and stays in it.",
+     "the bullet and the block", "the bullet and the wood are deformed"),
+    ("Two cars skid towards each other on an icy road and crash head-on, crumpling their fronts.",
+     "the two cars", "the metal of the crumple zones is bent out of shape"),
+)
+
+
+def collision_energy_explained(situation: float = 0) -> Question:
+    """Describe and explain: in an inelastic collision momentum is still conserved (third law,
+    no external resultant force) while kinetic energy is transferred to other forms (notes:
+    "Elastic and inelastic collisions"; common mistake: using kinetic energy instead of momentum)."""
+    what, bodies, deformed = _CRASHES[int(situation)]
+    return Question(
+        key="collision-energy-explained",
+        text=f"{what} The collision is inelastic.",
+        givens=(),
+        parts=(ExplainPart(
+            "Explain why the total momentum is conserved in the collision, but the total kinetic "
+            "energy is not, and state what happens to the kinetic energy that is lost.",
+            f"During the collision {bodies} push on each other with forces that are equal and opposite "
+            "(Newton's third law) and act for the same time, so their changes in momentum are equal "
+            "and opposite. No resultant external force acts on the system, so the total momentum is "
+            "the same before and after. Kinetic energy is not kept because the collision is inelastic: "
+            f"work is done as {deformed}. The total energy is still conserved: the kinetic energy lost "
+            "is transferred to thermal energy (the bodies warm up), sound and the work of deforming them."),),
+        mark_scheme=(
+            Mark(f"The forces between {bodies} are equal and opposite (third law) and act for the same "
+                 "time, so the changes in momentum are equal and opposite", "B1", "a"),
+            Mark("No resultant external force acts (an isolated system), so the total momentum is conserved",
+                 "B1", "a"),
+            Mark(f"Kinetic energy is transferred to other forms as {deformed}: the total kinetic energy "
+                 "after is less than before", "M1", "a"),
+            Mark("It becomes thermal energy (heating) and sound; the total energy is still conserved",
+                 "A1", "a"),
+        ),
+    )
+
+
+def elastic_both_moving(m1: float = 0.20, u1: float = 3.0, m2: float = 0.30, speed2: float = 1.5) -> Question:
+    """Both bodies moving towards each other, elastic: relative speeds (notes: 5 and 3 m s^-1
+    towards each other approach at 8 m s^-1), then the two equations solved together."""
+    u2 = -speed2  # B moves towards A: positive is A's first direction
+    approach = relative_speed(u1, u2)
+    v1, v2 = elastic_collision(m1, u1, m2, u2)
+    p_before = total_momentum((m1, m2), (u1, u2))
+    if math.isclose(p_before, 0.0, abs_tol=1e-12):  # equal and opposite momenta: the total is zero
+        p_before = 0.0
+    ma, mb, ua, ub = n(m1, 2), n(m2, 2), n(u1, 2), n(speed2, 2)
+    forward = "the direction A moves at first"
+    v_1, v_2 = "v<sub>A</sub>", "v<sub>B</sub>"
+    relative = "Elastic, so relative speed of separation = relative speed of approach: v<sub>B</sub> − v<sub>A</sub>"
+    sym_a, sym_b, sym_m1, sym_m2, sym_u1, sym_u2 = sympy.symbols("a b m_a m_b u_a u_b")
+    b_values = {"m_a": m1, "m_b": m2, "u_a": u1, "u_b": u2}
+    return Question(
+        key="elastic-both-moving",
+        text=(f"Ball A of mass {ma} kg moving at {ua} {PER_S} collides head-on with ball B of mass {mb} kg, "
+              f"moving towards it at {ub} {PER_S}. The collision is elastic. Calculate (a) the relative "
+              "speed of approach, (b) the velocity of A and (c) the velocity of B after the collision. "
+              "Take A's first direction as positive."),
+        givens=(Given("mass of A", m1, "kg", 2), Given("speed of A", u1, "m s^-1", 2),
+                Given("mass of B", m2, "kg", 2), Given("speed of B", speed2, "m s^-1", 2)),
+        parts=(
+            Part("relative speed of approach", approach, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
+                 revisit="Relative speed is how fast the gap closes: moving towards each other, add the speeds.",
+                 mistakes=(
+                     Mistake("subtracted the speeds", relative_speed(u1, speed2),
+                             "You subtracted the speeds. They move towards each other, so the gap closes at "
+                             "the sum: B's velocity is negative, so u₁ − u₂ adds the speeds."),
+                 )),
+            Part("velocity of A after the collision", v1, "m s^-1", "velocity", units=M_S, shown_sig_figs=2,
+                 direction="signed", positive=forward,
+                 ecf=Ecf((sym_m1 * sym_u1 + sym_m2 * sym_u2 - sym_m2 * sym_a) / (sym_m1 + sym_m2), b_values),
+                 revisit="Two equations (1 is A, 2 is B): momentum, m₁u₁ + m₂u₂ = m₁v₁ + m₂v₂ with u₂ "
+                         "negative, and v₂ − v₁ = relative speed of approach. Substitute one into the other.",
+                 mistakes=(
+                     Mistake("forgot B's direction", elastic_collision(m1, u1, m2, speed2)[0],
+                             "You gave B's velocity before the same sign as A's. B moves towards A, so "
+                             f"u₂ = −{ub} {_PER_S_PLAIN}."),
+                     Mistake("treated as sticking together", stick_together(m1, u1, m2, u2),
+                             "That is the common velocity if they stuck together. This collision is "
+                             "elastic: the balls separate as fast as they approached."),
+                 )),
+            Part("velocity of B after the collision", v2, "m s^-1", "velocity", units=M_S, shown_sig_figs=2,
+                 direction="signed", positive=forward,
+                 ecf=Ecf(sym_b + sym_a, {}),
+                 revisit="Relative speed of separation = relative speed of approach: v₂ = v₁ + (relative "
+                         "speed of approach), where 1 is A and 2 is B.",
+                 mistakes=(
+                     Mistake("approach + separation = 0", v1 - approach,
+                             "You took v₁ − v₂ (A's velocity minus B's) as the relative speed of "
+                             "separation. B ends up ahead of A, so v₂ − v₁ = relative speed of approach."),
+                     Mistake("forgot B's direction", elastic_collision(m1, u1, m2, speed2)[1],
+                             "You gave B's velocity before the same sign as A's. B moves towards A, so "
+                             f"u₂ = −{ub} {_PER_S_PLAIN}."),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"Relative speed of approach = {ua} + {ub} = {n(approach, 2)} {PER_S}", "B1", "a"),
+            Mark(f"Momentum: {ma} × {ua} + {mb} × (−{ub}) = {w(p_before)} = {ma}{v_1} + {mb}{v_2}", "C1", "b"),
+            Mark(f"{relative} = {n(approach, 2)}", "C1", "b"),
+            Mark(f"{v_1} = {n(v1, 2)} {PER_S} (a minus sign means A moves back the way it came)", "A1", "b"),
+            Mark(f"{v_2} = {v_1} + relative speed of approach = {n(v1, 2)} + {n(approach, 2)}", "C1", "c"),
+            Mark(f"= {n(v2, 2)} {PER_S}", "A1", "c"),
+        ),
+    )
+
+
+def sticking_energy_lost(m1: float = 0.80, u1: float = 3.0, m2: float = 1.2) -> Question:
+    """Perfectly inelastic: the common velocity, the kinetic energy after and the energy
+    transferred (notes: sticking trolleys, 24 J before, 18 J after, 6.0 J transferred)."""
+    v = stick_together(m1, u1, m2, 0.0)
+    before = kinetic_energy(m1, u1)
+    after = kinetic_energy(m1 + m2, v)
+    lost = before - after
+    ma, mb, ua = n(m1, 2), n(m2, 2), n(u1, 2)
+    total = w(m1 + m2)
+    sym_a, sym_b, sym_m1, sym_m2, sym_u1 = sympy.symbols("a b m_a m_b u_a")
+    return Question(
+        key="sticking-energy-lost",
+        text=(f"Trolley A of mass {ma} kg, moving at {ua} {PER_S} on a level track, hits trolley B of mass "
+              f"{mb} kg, which is at rest. They stick together. Calculate (a) their speed just after the "
+              "collision, (b) their total kinetic energy just after the collision and (c) the kinetic "
+              "energy transferred to other forms."),
+        givens=(Given("mass of A", m1, "kg", 2), Given("speed of A", u1, "m s^-1", 2),
+                Given("mass of B", m2, "kg", 2)),
+        parts=(
+            Part("speed just after the collision", v, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
+                 revisit="Momentum is conserved: m₁u₁ = (m₁ + m₂)v, with the mass of both trolleys after.",
+                 mistakes=(
+                     Mistake("divided by B's mass only", velocity_from_momentum(momentum(m1, u1), m2),
+                             "After sticking, both trolleys move together: divide the momentum by the "
+                             "total mass."),
+                 )),
+            Part("total kinetic energy just after", after, "J", "energy", shown_sig_figs=2,
+                 ecf=Ecf(sympy.Rational(1, 2) * (sym_m1 + sym_m2) * sym_a**2, {"m_a": m1, "m_b": m2}),
+                 revisit="Eₖ = ½mv², with the mass of both trolleys.",
+                 mistakes=(
+                     Mistake("used A's mass only", kinetic_energy(m1, v),
+                             "Both trolleys move after the collision: use their total mass."),
+                     Mistake("forgot the ½", 2 * after,
+                             "Kinetic energy is ½mv²: you left out the ½."),
+                 )),
+            Part("kinetic energy transferred to other forms", lost, "J", "energy", shown_sig_figs=2,
+                 ecf=Ecf(sympy.Rational(1, 2) * sym_m1 * sym_u1**2 - sym_b, {"m_a": m1, "u_a": u1}),
+                 revisit="Energy transferred = total kinetic energy before − total kinetic energy after.",
+                 mistakes=(
+                     Mistake("gave the kinetic energy before", before,
+                             "That is the kinetic energy before. Subtract the kinetic energy after."),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"{ma} × {ua} = {total}v", "C1", "a"),
+            Mark(f"v = {n(v, 2)} {PER_S}", "A1", "a"),
+            Mark(f"E<sub>k</sub> = ½ × {total} × {w(v)}<sup>2</sup>", "C1", "b"),
+            Mark(f"= {n(after, 2)} J", "A1", "b"),
+            Mark(f"Before: ½ × {ma} × {ua}<sup>2</sup> = {w(before)} J", "C1", "c"),
+            Mark(f"Transferred = {w(before)} − {w(after)} = {n(lost, 2)} J", "A1", "c"),
+        ),
+    )
+
+
 TEMPLATES = (
     Template("quick-check-4", "elastic", ("numeric",), "Quick check 4", light_ball_hits_heavy_ball,
              {"m1": Draw(1.0, 0.5, 2.0, 0.1), "u1": Draw(6.0, 2.0, 9.0, 0.5), "m2": Draw(2.0, 1.0, 5.0, 0.5)}),
+    Template("elastic-or-not-choice", "elastic", ("mcq",), "Is it elastic?", elastic_or_not_choice,
+             {"situation": Draw(0, 0, len(_BOUNCES) - 1, 1)}, variant_count=len(_BOUNCES)),
+    Template("stick-energy-choice", "elastic", ("mcq",), "Trolleys that stick", stick_energy_choice,
+             {"m1": Draw(2.0, 1.0, 3.0, 0.5), "u1": Draw(4.0, 2.0, 6.0, 0.5), "m2": Draw(1.0, 1.0, 4.0, 0.5),
+              "speed2": Draw(2.0, 1.0, 3.0, 0.5)}),
+    Template("collision-energy-explained", "elastic", ("explain",), "Where does the energy go?",
+             collision_energy_explained, {"situation": Draw(0, 0, len(_CRASHES) - 1, 1)},
+             variant_count=len(_CRASHES)),
+    Template("elastic-both-moving", "elastic", ("numeric",), "Balls moving towards each other",
+             elastic_both_moving,
+             {"m1": Draw(0.20, 0.10, 0.50, 0.05), "u1": Draw(3.0, 1.0, 6.0, 0.5),
+              "m2": Draw(0.30, 0.10, 0.50, 0.05), "speed2": Draw(1.5, 1.0, 5.0, 0.5)}),
+    Template("sticking-energy-lost", "elastic", ("numeric",), "Energy lost when trolleys stick", sticking_energy_lost,
+             {"m1": Draw(0.80, 0.40, 2.00, 0.10), "u1": Draw(3.0, 1.0, 5.0, 0.5),
+              "m2": Draw(1.2, 0.4, 2.0, 0.1)}),
 )

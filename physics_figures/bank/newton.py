@@ -6,13 +6,35 @@ from __future__ import annotations
 import sympy
 
 from ..constants import G_EARTH
-from ..models import acceleration, lift_contact_force, towing, weight
+from ..models import (
+    acceleration,
+    lift_contact_force,
+    mass_from_weight,
+    thrust_for_acceleration,
+    towing,
+    weight,
+)
 from ..notation import format_number as n
-from ..questions import Ecf, Given, Mark, Mistake, Part, Question, Step
+from ..questions import (
+    OPTION_LETTERS,
+    ChoicePart,
+    Ecf,
+    ExplainPart,
+    Given,
+    Mark,
+    Mistake,
+    Option,
+    Part,
+    Question,
+    Step,
+    choices_in_order,
+)
 from ..variants import Draw, Template
 from ._common import M_S2, PER_S2, w
 
 a_answer, trailer_mass_symbol, trailer_resistance_symbol = sympy.symbols("a trailer_mass trailer_resistance")
+block_mass_symbol, friction_symbol, thrust_symbol, rocket_mass_symbol = sympy.symbols(
+    "block_mass friction thrust rocket_mass")
 
 
 def car_slowing(mass: float = 800.0, driving: float = 1500.0, resistive: float = 2300.0) -> Question:
@@ -143,6 +165,430 @@ def car_towing_trailer(car_mass: float = 1000.0, trailer_mass: float = 500.0, dr
     )
 
 
+#: Situations for "which is a third-law pair?": the situation, the key pair, and the three
+#: misconceptions of the notes as options: (1) the weight and the force that supports the body
+#: (normal reaction or tension), on the same body; (2) two other forces on one body; (3) two
+#: forces that are equal, opposite and on different bodies, but of different types.
+#: Each entry: (text, key, (weight-pair option, its body), (same-body option, its body), different-types option).
+_PAIR_SITUATIONS = (
+    ("A book rests on a horizontal table.",
+     "the gravitational pull of the Earth on the book and the gravitational pull of the book on the Earth",
+     ("the weight of the book and the upward contact force of the table on the book", "book"),
+     ("the upward push of the floor on the table and the downward push of the book on the table", "table"),
+     "the downward push of the book on the table and the upward gravitational pull of the book on the Earth"),
+    ("A person stands on the floor of a lift that is moving upwards at a constant speed.",
+     "the upward push of the lift floor on the person and the downward push of the person on the lift floor",
+     ("the weight of the person and the upward push of the lift floor on the person", "person"),
+     ("the upward pull of the cable on the lift and the weight of the lift", "lift"),
+     ("the downward push of the person on the lift floor and the upward gravitational pull of the "
+      "person on the Earth")),
+    ("A car is driven at a constant velocity along a straight, level road.",
+     "the forward push of the road on a tyre and the backward push of the tyre on the road",
+     ("the weight of the car and the upward contact force of the road on the car", "car"),
+     ("the forward push of the road on the tyres and the air resistance on the car", "car"),
+     "the downward push of the car on the road and the upward gravitational pull of the car on the Earth"),
+    ("An apple hangs at rest from a branch of a tree by its stalk.",
+     "the gravitational pull of the Earth on the apple and the gravitational pull of the apple on the Earth",
+     ("the weight of the apple and the upward pull of the stalk on the apple", "apple"),
+     ("the upward pull of the branch on the stalk and the downward pull of the apple on the stalk", "stalk"),
+     "the downward pull of the apple on the stalk and the upward gravitational pull of the apple on the Earth"),
+    ("A student pushes a box at a constant velocity across a horizontal floor.",
+     "the forward push of the student on the box and the backward push of the box on the student",
+     ("the weight of the box and the upward contact force of the floor on the box", "box"),
+     ("the forward push of the student on the box and the backward friction force of the floor on the box",
+      "box"),
+     "the downward push of the box on the floor and the upward gravitational pull of the box on the Earth"),
+)
+
+
+def third_law_pair_choice(situation: float = 0) -> Question:
+    """Paper 1 style: which pair of forces is a Newton's third law pair? (notes, Newton's third
+    law and "Wrong third-law pairs"). The wrong options are the named misconceptions."""
+    index = int(situation)
+    what, key, (weight_pair, weight_body), (same_body, body), other_types = _PAIR_SITUATIONS[index]
+    rows = [
+        Option(key),
+        Option(weight_pair, "weight and normal reaction taken as a pair",
+               f"These two forces both act on the {weight_body}, and they are of different types "
+               "(one gravitational, one contact). They are equal only because the "
+               f"{weight_body} is in equilibrium: that is Newton's first law, not the third. A "
+               "third-law pair acts on two different bodies and is one type of force."),
+        Option(same_body, "forces on the same body taken as a pair",
+               f"Both forces act on the {body}. Forces on one body can balance, but the two forces "
+               "of a third-law pair act on different bodies (X on Y and Y on X), so they never "
+               "cancel."),
+        Option(other_types, "equal and opposite forces of different types taken as a pair",
+               "These act on different bodies and are equal and opposite, but one is a contact force "
+               "and the other is gravitational. A third-law pair is one interaction between two "
+               "bodies: X on Y and Y on X, the same type of force."),
+    ]
+    # Turn the options round so the key is not always A.
+    shift = index % len(OPTION_LETTERS)
+    options = tuple(rows[-shift:] + rows[:-shift]) if shift else tuple(rows)
+    answer = OPTION_LETTERS[options.index(rows[0])]
+    return Question(
+        key="third-law-pair-choice",
+        text=what,
+        givens=(),
+        parts=(ChoicePart("Which pair of forces is a Newton's third law pair?", options, answer,
+                          revisit="The two forces of a third-law pair: X on Y and Y "
+                                  "on X, the same type of force, equal and opposite, on "
+                                  "different bodies."),),
+        mark_scheme=(Mark(f"{answer}: {key} (the same type of force, each body on the other)", "B1"),),
+    )
+
+
+def friction_acceleration_choice(crate_weight: float = 490.0, pull: float = 180.0,
+                                 friction: float = 60.0) -> Question:
+    """Paper 1 style: resultant force and acceleration with friction; the mass comes from a
+    weight. Wrong options: friction forgotten, forces added, the weight used as the mass."""
+    if pull <= friction:
+        raise ValueError(f"pull must exceed friction={friction!r} N, so the crate speeds up "
+                         f"(got pull={pull!r})")
+    mass = mass_from_weight(crate_weight)
+    key = acceleration(pull - friction, mass)
+    wt, p, f = n(crate_weight, 2), n(pull, 2), n(friction, 2)
+    options, answer = choices_in_order(key, {
+        "friction left out": (
+            acceleration(pull, mass),
+            ("You used the pull as the resultant force. Friction acts backwards: the resultant "
+             f"force is {p} − {f} N.")),
+        "forces added": (
+            acceleration(pull + friction, mass),
+            ("You added the friction to the pull. Friction opposes the motion, so subtract it: "
+             f"{p} − {f} N.")),
+        "weight used as the mass": (
+            acceleration(pull - friction, crate_weight),
+            f"You divided by the weight, {wt} N. F = ma needs the mass: m = W / g = {wt} / {n(G_EARTH, 3)} kg."),
+    }, sig_figs=2, unit=PER_S2)
+    return Question(
+        key="friction-acceleration-choice",
+        text=(f"A crate of weight {wt} N is pulled along a horizontal floor by a horizontal rope. The "
+              f"tension in the rope is {p} N and the friction force on the crate is {f} N. "
+              "Take g = 9.81 m s<sup>−2</sup>."),
+        givens=(Given("weight", crate_weight, "N", 2), Given("pull", pull, "N", 2),
+                Given("friction", friction, "N", 2)),
+        parts=(ChoicePart("What is the acceleration of the crate?", options, answer,
+                          revisit="Resultant force = forces forwards − forces backwards; mass = "
+                                  "weight / g; a = resultant force / mass."),),
+        mark_scheme=(Mark(f"{answer}: m = {wt} / {n(G_EARTH, 3)} = {w(mass)} kg; a = ({p} − {f}) / {w(mass)} "
+                          f"= {n(key, 2)} {PER_S2}", "B1"),),
+    )
+
+
+#: How the lift moves, and so which way it accelerates (+1 up, -1 down): speeding up, the
+#: acceleration is along the motion; slowing down, against it.
+_LIFT_MOTIONS = (
+    ("moving upwards and speeding up", 1.0),
+    ("moving upwards and slowing down", -1.0),
+    ("moving downwards and speeding up", -1.0),
+    ("moving downwards and slowing down", 1.0),
+)
+
+
+def lift_cable_choice(mass: float = 1200.0, a_size: float = 1.5, motion: float = 1) -> Question:
+    """Paper 1 style: the tension in a lift cable, T - mg = ma with a's sign from the motion
+    (notes: rockets and lifts; "Mixing up the resultant force with one of the forces")."""
+    how, sign = _LIFT_MOTIONS[int(motion)]
+    lift_weight = weight(mass)
+    key = thrust_for_acceleration(lift_weight, sign * a_size)
+    up = sign > 0
+    m, a = n(mass, 2), n(a_size, 2)
+    which_way = "upwards" if up else "downwards"
+    options, answer = choices_in_order(key, {
+        "acceleration in the wrong direction": (
+            thrust_for_acceleration(lift_weight, -sign * a_size),
+            (f"The lift is {how}, so its acceleration is {which_way}: "
+             f"T = m(g {'+' if up else '−'} a). Speeding up, a is along the motion; slowing down, "
+            "against it.")),
+        "weight only": (
+            lift_weight,
+            ("That is the weight, the tension at constant velocity. The lift accelerates, so "
+             "T − mg = ma.")),
+        "resultant force given": (
+            abs(thrust_for_acceleration(lift_weight, sign * a_size) - lift_weight),
+            ("That is the resultant force, ma. The tension also supports the weight: T = mg + ma, "
+             "with a positive upwards.")),
+    }, sig_figs=3, unit="N")
+    return Question(
+        key="lift-cable-choice",
+        text=(f"A lift of total mass {m} kg hangs from a single vertical cable. It is {how}, with an "
+              f"acceleration of magnitude {a} {PER_S2}. Take g = 9.81 m s<sup>−2</sup>."),
+        givens=(Given("mass", mass, "kg", 2), Given("acceleration", a_size, "m s^-2", 2)),
+        parts=(ChoicePart("What is the tension in the cable?", options, answer,
+                          revisit="Up positive: T − mg = ma. The acceleration points along the "
+                                  "motion when speeding up and against it when slowing down."),),
+        mark_scheme=(Mark(f"{answer}: acceleration {which_way}, so T = {m} × ({n(G_EARTH, 3)} {'+' if up else '−'} {a}) "
+                          f"= {n(key, 3)} N", "B1"),),
+    )
+
+
+#: Vehicles at a constant velocity: what moves, what gives its driving force, and the
+#: resistive forces on it (notes: Newton's first law, the car cruising at a steady speed).
+_CRUISERS = (
+    ("A car travels along a straight, level road at a constant velocity.", "the engine",
+     "friction and air resistance"),
+    ("A cyclist pedals along a straight, level road at a constant velocity.", "the cyclist's pedalling",
+     "air resistance and friction"),
+    ("A ship sails in a straight line through calm water at a constant velocity.", "the propeller",
+     "the drag of the water and air resistance"),
+    ("An aeroplane flies horizontally in a straight line at a constant velocity.",
+     "the thrust of its engines", "air resistance"),
+    ("A train travels along a straight, level track at a constant velocity.", "the motors",
+     "friction and air resistance"),
+)
+
+
+def constant_velocity_explained(situation: float = 0) -> Question:
+    """Describe and explain: why a driving force is still needed at constant velocity
+    (notes: Newton's first law; balanced forces mean at rest or constant velocity)."""
+    what, driver, resistive = _CRUISERS[int(situation)]
+    return Question(
+        key="constant-velocity-explained",
+        text=f"{what} The driving force from {driver} acts on it all the time.",
+        givens=(),
+        parts=(ExplainPart(
+            "Explain, using Newton's laws, why a driving force is still needed even though the "
+            "velocity is constant.",
+            f"Resistive forces ({resistive}) act on it, opposite to its motion. At a constant "
+            "velocity the acceleration is zero, so by Newton's first (and second) law the resultant "
+            "force is zero. So the forward driving force must be equal in size to the resistive "
+            "forces, to cancel them. Without the driving force the resultant force would be "
+            "backwards, and it would slow down."),),
+        mark_scheme=(
+            Mark(f"Resistive forces ({resistive}) act against the motion", "B1", "a"),
+            Mark("constant velocity, so zero acceleration: the resultant force is zero (Newton's first law)",
+                 "M1", "a"),
+            Mark("so the driving force equals the resistive forces; without it the resultant force "
+                 "is backwards and it decelerates", "A1", "a"),
+        ),
+    )
+
+
+def block_and_hanging_mass(block_mass: float = 1.2, hanging_mass: float = 0.60,
+                           friction: float = 1.4) -> Question:
+    """Connected bodies over a pulley: the whole system first (external forces, total mass),
+    then the block alone for the tension (notes: connected objects, two blocks on a string)."""
+    hanging_weight = weight(hanging_mass)
+    if hanging_weight <= friction:
+        raise ValueError(f"friction must be less than the hanging weight {n(hanging_weight, 3)} N, "
+                         f"or the masses would not move (got friction={friction!r})")
+
+    def pulled(g_: float = G_EARTH):
+        return towing(weight(hanging_mass, g=g_), (hanging_mass, block_mass), (0.0, friction))
+
+    system = pulled()
+    a, tension = system.acceleration, system.tensions[0]
+    total = hanging_mass + block_mass
+    m1, m2, f = n(block_mass, 2), n(hanging_mass, 2), n(friction, 2)
+    w2 = w(hanging_weight)
+    return Question(
+        key="block-and-hanging-mass",
+        text=(f"A block of mass {m1} kg rests on a horizontal bench. A light string joins it, over a "
+              f"smooth pulley at the edge of the bench, to a mass of {m2} kg that hangs freely. A "
+              f"friction force of {f} N acts on the block while it moves. The masses are released "
+              "from rest. Calculate (a) the acceleration of the masses and (b) the tension in the "
+              "string."),
+        givens=(Given("block mass", block_mass, "kg", 2), Given("hanging mass", hanging_mass, "kg", 2),
+                Given("friction", friction, "N", 2)),
+        parts=(
+            Part("acceleration of the masses", a, "m s^-2", "acceleration", units=M_S2, shown_sig_figs=2,
+                 answer_for_g=lambda g_: pulled(g_).acceleration,
+                 revisit="Treat the two masses as one object: the external forces (the hanging "
+                         "weight and the friction) and the total mass.",
+                 mistakes=(
+                     Mistake("friction left out", acceleration(hanging_weight, total),
+                             f"You left out the friction. Resultant force = {m2} × {n(G_EARTH, 3)} − {f} N."),
+                     Mistake("block's mass only", acceleration(hanging_weight - friction, block_mass),
+                             "You divided by the block's mass only. The resultant force accelerates "
+                             f"both masses: use the total mass, {w(total)} kg."),
+                     Mistake("hanging mass only", acceleration(hanging_weight - friction, hanging_mass),
+                             "You divided by the hanging mass only. The resultant force accelerates "
+                             f"both masses: use the total mass, {w(total)} kg."),
+                     Mistake("acceleration of free fall", G_EARTH,
+                             "The hanging mass falls at g only when nothing else pulls on it. Here "
+                             "the string pulls it back: work out the resultant force on the whole "
+                             "system and divide by the total mass."),
+                 )),
+            Part("tension in the string", tension, "N", "force", shown_sig_figs=2,
+                 working=(Step("acceleration", a, "m s^-2", 2),),
+                 answer_from=lambda acc: friction + block_mass * acc,
+                 answer_for_g=lambda g_: pulled(g_).tensions[0],
+                 ecf=Ecf(friction_symbol + block_mass_symbol * a_answer,
+                         {"friction": friction, "block_mass": block_mass}),
+                 revisit="F = ma for the block alone: T − friction = block mass × a (or, for the "
+                         "hanging mass alone, mg − T = ma).",
+                 mistakes=(
+                     Mistake("tension equals the hanging weight", hanging_weight,
+                             "That is the hanging mass's weight. The hanging mass accelerates "
+                             f"downwards, so the tension is less than its weight: {m2} × {n(G_EARTH, 3)} − T = {m2}a."),
+                     Mistake("friction left out", block_mass * a,
+                             "That is the block's resultant force, ma. The tension must also "
+                             f"overcome the friction: T − {f} = {m1}a."),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"Whole system: resultant force = {m2} × {n(G_EARTH, 3)} − {f} = {w(hanging_weight - friction)} N", "C1", "a"),
+            Mark(f"a = {w(hanging_weight - friction)} / {w(total)} = {n(a, 2)} {PER_S2}", "A1", "a"),
+            Mark(f"Block alone: T − {f} = {m1} × {w(a)}", "C1", "b"),
+            Mark(f"T = {n(tension, 2)} N (check: {w2} − T = {m2} × {w(a)})", "A1", "b"),
+        ),
+    )
+
+
+def rocket_lift_off(mass: float = 0.60, thrust: float = 9.0) -> Question:
+    """A model rocket at lift-off: weight, then thrust - weight = ma (notes: rockets and lifts),
+    with (b) carried forward from (a)."""
+    rocket_weight = weight(mass)
+    if thrust <= rocket_weight:
+        raise ValueError(f"thrust must exceed the weight {n(rocket_weight, 3)} N, or the rocket "
+                         f"would not lift off (got thrust={thrust!r})")
+    a = acceleration(thrust - rocket_weight, mass)
+    m, t = n(mass, 2), n(thrust, 2)
+    wt = n(rocket_weight, 3)
+    return Question(
+        key="rocket-lift-off",
+        text=(f"A model rocket of mass {m} kg stands on its launch pad. At lift-off its engine gives "
+              f"an upward thrust of {t} N. Calculate (a) the weight of the rocket and (b) its "
+              "acceleration at lift-off."),
+        givens=(Given("mass", mass, "kg", 2), Given("thrust", thrust, "N", 2)),
+        parts=(
+            Part("weight of the rocket", rocket_weight, "N", "force", shown_sig_figs=3,
+                 answer_for_g=lambda g_: weight(mass, g=g_),
+                 revisit="Weight = mass × g, with g = 9.81 m s⁻².",
+                 mistakes=(
+                     Mistake("divided by g", mass_from_weight(mass),
+                             f"You divided by g. Weight = mass × g = {m} × {n(G_EARTH, 3)}."),
+                 )),
+            Part("acceleration at lift-off", a, "m s^-2", "acceleration", units=M_S2, shown_sig_figs=2,
+                 direction="choice", choices=("upwards", "downwards"), answer_direction="upwards",
+                 working=(Step("weight", rocket_weight, "N"),),
+                 answer_from=lambda weight_: acceleration(thrust - weight_, mass),
+                 answer_for_g=lambda g_: acceleration(thrust - weight(mass, g=g_), mass),
+                 ecf=Ecf((thrust_symbol - a_answer) / rocket_mass_symbol,
+                         {"thrust": thrust, "rocket_mass": mass}),
+                 direction_hint="The thrust is bigger than the weight, so the resultant force and "
+                                "the acceleration are upwards.",
+                 revisit="Resultant force = thrust − weight; a = resultant force / mass.",
+                 mistakes=(
+                     Mistake("weight left out", acceleration(thrust, mass),
+                             "You used the thrust as the resultant force. The weight acts "
+                             f"downwards as well: resultant = {t} − {wt} N."),
+                     Mistake("weight added", acceleration(thrust + rocket_weight, mass),
+                             "You added the weight to the thrust. They act in opposite directions: "
+                             "resultant = thrust − weight."),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"W = mg = {m} × {n(G_EARTH, 3)} = {wt} N", "B1", "a"),
+            Mark(f"Resultant force = {t} − {w(rocket_weight)} = {w(thrust - rocket_weight)} N", "C1", "b"),
+            Mark(f"a = {w(thrust - rocket_weight)} / {m} = {n(a, 2)} {PER_S2} upwards", "A1", "b"),
+        ),
+    )
+
+
+#: Bodies at a constant velocity, for Newton's first law: the situation, the forward (or up)
+#: force a student thinks must win, and the force it balances.
+_STEADY = (
+    ("A car travels along a straight, level road at a constant velocity.", "car",
+     "the driving force is bigger than the resistive forces"),
+    ("A skydiver falls vertically at her terminal velocity.", "skydiver",
+     "her weight is bigger than the air resistance"),
+    ("A lift moves upwards at a constant speed.", "lift",
+     "the tension in the cable is bigger than the weight of the lift"),
+    ("An ice-hockey puck slides in a straight line across smooth, level ice at a constant velocity.",
+     "puck", "a forward force on the puck keeps it moving"),
+    ("A steel ball sinks through oil at a constant velocity.", "ball",
+     "its weight is bigger than the upthrust and the drag together"),
+)
+
+
+def first_law_choice(situation: float = 0) -> Question:
+    """Paper 1 style: constant velocity means zero resultant force (notes: Newton's first law;
+    balanced forces mean at rest or a constant velocity)."""
+    index = int(situation)
+    what, body, winning = _STEADY[index]
+    key = f"The resultant force on the {body} is zero."
+    rows = [
+        Option(key),
+        Option(f"The {body} moves because {winning}.", "a resultant force is needed to keep it moving",
+               f"At a constant velocity the acceleration is zero, so the resultant force is zero "
+               f"(Newton's first law). A resultant force would change the {body}'s velocity; no "
+               "force is needed just to keep it moving."),
+        Option(f"No forces act on the {body}.", "no forces act on it",
+               f"Forces do act on the {body} (its weight, for one), but they cancel. Constant "
+               "velocity needs a zero resultant force, not zero forces."),
+        Option(f"The forces on the {body} cannot be balanced, because the {body} is moving.",
+               "balanced forces only at rest",
+               "Balanced forces give a zero acceleration: the body is at rest or moves at a "
+               "constant velocity. You cannot tell which from the forces alone."),
+    ]
+    shift = (index + 1) % len(OPTION_LETTERS)
+    options = tuple(rows[-shift:] + rows[:-shift]) if shift else tuple(rows)
+    answer = OPTION_LETTERS[options.index(rows[0])]
+    return Question(
+        key="first-law-choice",
+        text=what,
+        givens=(),
+        parts=(ChoicePart(f"Which statement about the forces on the {body} is correct?", options, answer,
+                          revisit="Newton's first law: a constant velocity (or rest) means the "
+                                  "resultant force is zero, and a zero resultant force means a "
+                                  "constant velocity (or rest)."),),
+        mark_scheme=(Mark(f"{answer}: constant velocity, so zero acceleration and zero resultant force "
+                          "(Newton's first law)", "B1"),),
+    )
+
+
+#: Third-law pairs that a student says cancel: the situation, the pair (force on the moving
+#: body, its partner and the body that partner acts on), the moving body, and the forces on
+#: that body alone.
+_PAIRS_THAT_MOVE = (
+    ("A horse pulls a cart forwards along a level road, starting from rest.",
+     "the horse's forward pull on the cart", "the cart's backward pull on the horse", "horse", "cart",
+     "the horse's forward pull and the backward friction on the cart",
+     "the pull is bigger than the friction"),
+    ("A skater at rest pushes on a wall with her hands and moves away from it.",
+     "the wall's push on the skater", "the skater's push on the wall", "wall", "skater",
+     "the wall's push (and a small friction force)", "the push is bigger than the friction"),
+    ("A rocket starts to rise from its launch pad. It pushes hot gas downwards out of its engine.",
+     "the gas's upward push on the rocket", "the rocket's downward push on the gas", "gas", "rocket",
+     "the gas's upward push (the thrust) and its weight", "the thrust is bigger than the weight"),
+    ("A car starts to move from rest. Its tyres push backwards on the road.",
+     "the road's forward push on the tyres", "the tyres' backward push on the road", "road", "car",
+     "the road's forward push and the resistive forces",
+     "the forward push is bigger than the resistive forces"),
+    ("A swimmer starts to move forwards. Her arms push water backwards.",
+     "the water's forward push on the swimmer", "the swimmer's backward push on the water", "water",
+     "swimmer", "the water's forward push and the drag on her", "the forward push is bigger than the drag"),
+)
+
+
+def third_law_pair_explained(situation: float = 0) -> Question:
+    """Describe and explain: why the two forces of a third-law pair do not cancel (notes:
+    "they act on different bodies, so they never cancel")."""
+    what, on_mover, partner, other, mover, forces, bigger = _PAIRS_THAT_MOVE[int(situation)]
+    return Question(
+        key="third-law-pair-explained",
+        text=(f"{what} By Newton's third law, {on_mover} and {partner} are equal in size and opposite "
+              f"in direction. A student says: “These two forces cancel, so the {mover} cannot "
+              "accelerate.”"),
+        givens=(),
+        parts=(ExplainPart(
+            "Explain why the student is wrong.",
+            f"The two forces act on different bodies: one acts on the {mover}, the other on the {other}. "
+            "Forces can only cancel when they act on the same body, so to find "
+            f"the {mover}'s motion, add only the forces on the {mover}: {forces}. Here {bigger}, so "
+            f"the resultant force on the {mover} is not zero, and it accelerates (Newton's second law)."),),
+        mark_scheme=(
+            Mark(f"The forces act on different bodies ({mover} and {other})", "B1", "a"),
+            Mark(f"only forces on the same body can cancel: the {mover}'s motion depends on the "
+                 "forces on it alone", "M1", "a"),
+            Mark(f"the resultant force on the {mover} is not zero ({bigger}), so it accelerates",
+                 "A1", "a"),
+        ),
+    )
+
+
 TEMPLATES = (
     Template("practice-car-slowing", "newton", ("numeric",), "Car slowing down", car_slowing,
              {"mass": Draw(800.0, 600.0, 1500.0, 100.0), "driving": Draw(1500.0, 1000.0, 3000.0, 100.0),
@@ -154,4 +600,28 @@ TEMPLATES = (
               "driving": Draw(2400.0, 1500.0, 4000.0, 100.0),
               "car_resistance": Draw(300.0, 200.0, 500.0, 10.0),
               "trailer_resistance": Draw(150.0, 50.0, 300.0, 10.0)}),
+    Template("third-law-pair-choice", "newton", ("mcq",), "Which is a third-law pair?",
+             third_law_pair_choice, {"situation": Draw(0, 0, len(_PAIR_SITUATIONS) - 1, 1)},
+             variant_count=len(_PAIR_SITUATIONS)),
+    Template("friction-acceleration-choice", "newton", ("mcq",), "Crate pulled against friction",
+             friction_acceleration_choice,
+             {"crate_weight": Draw(490.0, 200.0, 900.0, 10.0), "pull": Draw(180.0, 100.0, 400.0, 10.0),
+              "friction": Draw(60.0, 20.0, 150.0, 10.0)}),
+    Template("lift-cable-choice", "newton", ("mcq",), "Tension in a lift cable", lift_cable_choice,
+             {"mass": Draw(1200.0, 500.0, 2000.0, 100.0), "a_size": Draw(1.5, 0.5, 3.0, 0.1),
+              "motion": Draw(1, 0, len(_LIFT_MOTIONS) - 1, 1)}),
+    Template("constant-velocity-explained", "newton", ("explain",), "Why keep driving?",
+             constant_velocity_explained, {"situation": Draw(0, 0, len(_CRUISERS) - 1, 1)},
+             variant_count=len(_CRUISERS)),
+    Template("block-and-hanging-mass", "newton", ("numeric",), "Block pulled by a hanging mass",
+             block_and_hanging_mass,
+             {"block_mass": Draw(1.2, 0.5, 2.5, 0.1), "hanging_mass": Draw(0.60, 0.20, 1.0, 0.05),
+              "friction": Draw(1.4, 0.5, 3.0, 0.1)}),
+    Template("rocket-lift-off", "newton", ("numeric",), "Model rocket at lift-off", rocket_lift_off,
+             {"mass": Draw(0.60, 0.20, 0.90, 0.05), "thrust": Draw(9.0, 4.0, 15.0, 1.0)}),
+    Template("first-law-choice", "newton", ("mcq",), "Moving at a constant velocity", first_law_choice,
+             {"situation": Draw(0, 0, len(_STEADY) - 1, 1)}, variant_count=len(_STEADY)),
+    Template("third-law-pair-explained", "newton", ("explain",), "Why the pair does not cancel",
+             third_law_pair_explained, {"situation": Draw(0, 0, len(_PAIRS_THAT_MOVE) - 1, 1)},
+             variant_count=len(_PAIRS_THAT_MOVE)),
 )

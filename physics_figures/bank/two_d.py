@@ -5,11 +5,36 @@ from __future__ import annotations
 
 import math
 
-from ..models import missing_momentum, momentum
+import sympy
+
+from ..models import (
+    average_force,
+    components,
+    from_components,
+    glancing_collision,
+    kinetic_energy,
+    missing_momentum,
+    momentum,
+    oblique_bounce_momentum_change,
+    stick_together,
+    total_kinetic_energy,
+    velocity_after_collision,
+    velocity_from_momentum,
+)
 from ..notation import format_number as n
-from ..questions import Given, Mark, Mistake, Part, Question, Step
+from ..questions import (
+    ChoicePart,
+    Ecf,
+    Given,
+    Mark,
+    Mistake,
+    Part,
+    Question,
+    Step,
+    choices_in_order,
+)
 from ..variants import Draw, Template
-from ._common import N_S, PER_S, w
+from ._common import M_S, N_S, PER_S, w
 
 
 def pucks_glancing(mass: float = 0.40, speed_before: float = 2.5, speed_after: float = 1.5,
@@ -72,8 +97,289 @@ def pucks_glancing(mass: float = 0.40, speed_before: float = 2.5, speed_after: f
     )
 
 
+def glancing_speed_choice(m1: float = 0.20, speed_before: float = 3.0, m2: float = 0.30,
+                          speed_after: float = 1.5, angle: float = 40.0) -> Question:
+    """Paper 1 style: the speed of the struck puck after a glancing collision. Wrong options:
+    momentum treated as a scalar, sin and cos swapped, one component forgotten."""
+    if speed_after >= speed_before:
+        raise ValueError(f"speed_after must be less than speed_before={speed_before!r} m s^-1: puck A "
+                         f"cannot speed up by hitting a puck at rest (got speed_after={speed_after!r})")
+    p_before, p_after = momentum(m1, speed_before), momentum(m1, speed_after)
+    hit = glancing_collision(p_before, p_after, angle, mass_moving=m1, mass_struck=m2)
+    if hit.kinetic_energy_transferred < 0:
+        raise ValueError(f"these speeds would create kinetic energy ({n(-hit.kinetic_energy_transferred, 3)} J): "
+                         f"lower speed_after={speed_after!r} or raise m2={m2!r}")
+    key = hit.speed_missing
+    swapped = missing_momentum(p_before, p_after, 90.0 - angle)
+    options, answer = choices_in_order(key, {
+        "momentum treated as a scalar": (
+            velocity_after_collision(m1, speed_before, m2, 0.0, speed_after),
+            ("You subtracted the sizes of the momenta as if A carried straight on. Momentum is a vector: "
+            "conserve the components along and across A's first direction separately.")),
+        "sin and cos swapped": (
+            velocity_from_momentum(swapped.magnitude, m2),
+            (f"You swapped sin and cos. The angle is measured from A's first direction, so A's component "
+            f"along that line is p cos {n(angle, 2)}° and across it p sin {n(angle, 2)}°.")),
+        "across component forgotten": (
+            velocity_from_momentum(hit.missing.along, m2),
+            ("That uses only B's component along A's first direction. B also has a component across the "
+            "line (equal and opposite to A's): combine them with Pythagoras.")),
+    }, sig_figs=2, unit=PER_S)
+    ma, mb, u, v, theta = n(m1, 2), n(m2, 2), n(speed_before, 2), n(speed_after, 2), n(angle, 2)
+    return Question(
+        key="glancing-speed-choice",
+        text=(f"On a frictionless air table, puck A of mass {ma} kg moving at {u} {PER_S} hits puck B of "
+              f"mass {mb} kg, which is at rest. After the collision A moves at {v} {PER_S} at {theta}° to "
+              "its original direction."),
+        givens=(Given("mass of A", m1, "kg", 2), Given("speed before", speed_before, "m s^-1", 2),
+                Given("mass of B", m2, "kg", 2), Given("speed after", speed_after, "m s^-1", 2),
+                Given("angle", angle, "°", 2)),
+        parts=(ChoicePart("What is the speed of B after the collision?", options, answer,
+                          revisit="Conserve momentum along and across A's first direction separately, "
+                                  "combine B's components with Pythagoras, then divide by B's mass."),),
+        mark_scheme=(Mark(f"{answer}: along {w(p_before)} − {w(p_after)} cos {theta}° = {n(hit.missing.along, 3)} "
+                          f"N s; across {w(p_after)} sin {theta}° = {n(hit.missing.across, 3)} N s; "
+                          f"p<sub>B</sub> = {n(hit.missing.magnitude, 3)} N s, v = {n(key, 2)} {PER_S}", "B1"),),
+    )
+
+
+_COMPASS = ("north of east", "south of west", "north of west", "south of east")
+
+
+def explosion_three_pieces(m1: float = 0.20, v1: float = 30.0, m2: float = 0.30, v2: float = 15.0,
+                           m3: float = 0.50) -> Question:
+    """Explosion into three pieces from rest (notes' variation): two at right angles, so the third
+    has momentum sqrt(p1² + p2²), opposite the resultant of the other two."""
+    p1, p2 = momentum(m1, v1), momentum(m2, v2)
+    size, angle = from_components(p1, p2)  # the first two together: the third is equal and opposite
+    speed = velocity_from_momentum(size, m3)
+    speeds_size, speeds_angle = from_components(v1, v2)
+    upside_down = from_components(p2, p1)[1]
+    ma, mb, mc, ua, ub = n(m1, 2), n(m2, 2), n(m3, 2), n(v1, 2), n(v2, 2)
+    sym_a, sym_m3 = sympy.symbols("a m_c")
+    return Question(
+        key="explosion-three-pieces",
+        text=(f"A firework shell at rest explodes into three pieces. A piece of mass {ma} kg flies due east "
+              f"at {ua} {PER_S}, and a piece of mass {mb} kg flies due north at {ub} {PER_S}. The third "
+              f"piece has mass {mc} kg. Calculate, for the third piece, (a) the size of its momentum, "
+              "(b) its speed and (c) the angle its direction makes with due west or due east, giving "
+              "the direction (for example, south of west)."),
+        givens=(Given("mass 1", m1, "kg", 2), Given("speed 1", v1, "m s^-1", 2), Given("mass 2", m2, "kg", 2),
+                Given("speed 2", v2, "m s^-1", 2), Given("mass 3", m3, "kg", 2)),
+        parts=(
+            Part("size of the momentum of the third piece", size, "N s", "momentum", units=N_S,
+                 shown_sig_figs=2,
+                 revisit="The total momentum stays zero: the third piece's momentum is equal and opposite "
+                         "to the resultant of the other two, √(p₁² + p₂²) for two at right angles.",
+                 mistakes=(
+                     Mistake("momenta added as scalars", p1 + p2,
+                             "You added the sizes. The two momenta are at right angles: add them as "
+                             "vectors, with Pythagoras."),
+                     Mistake("momenta subtracted", abs(p1 - p2),
+                             "You subtracted the sizes. The momenta are at right angles: their resultant "
+                             "is √(p₁² + p₂²)."),
+                 )),
+            Part("speed of the third piece", speed, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
+                 ecf=Ecf(sym_a / sym_m3, {"m_c": m3}),
+                 revisit="Speed = momentum ÷ mass, with the third piece's own mass.",
+                 mistakes=(
+                     Mistake("Pythagoras on the speeds", speeds_size,
+                             "You combined the speeds. Momentum is conserved, not velocity: combine the "
+                             "momenta, then divide by the third piece's mass."),
+                 )),
+            Part("angle of the third piece's direction", angle, "°", "angle", units="° (degrees)",
+                 shown_sig_figs=3, direction="choice", choices=_COMPASS, answer_direction="south of west",
+                 direction_hint="The third piece's momentum cancels the other two: it points opposite to "
+                                "their resultant, which is north of east.",
+                 revisit="tan θ = (northward momentum) / (eastward momentum); the third piece moves the "
+                         "opposite way to the resultant of the other two.",
+                 mistakes=(
+                     Mistake("tan the wrong way up", upside_down,
+                             "You measured the angle from north–south. tan θ = (northward momentum) / "
+                             "(eastward momentum) gives the angle from east–west."),
+                     Mistake("used the speeds", speeds_angle,
+                             "You used the speeds. The direction comes from the momenta, which include "
+                             "the masses."),
+                     Mistake("same direction as the other two", angle,
+                             "That is the direction of the other two pieces' resultant. The total is "
+                             "zero, so the third piece moves the opposite way.", direction="north of east"),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"Momentum before is zero, so p = √({w(p1)}<sup>2</sup> + {w(p2)}<sup>2</sup>)", "C1", "a"),
+            Mark(f"= {n(size, 2)} N s", "A1", "a"),
+            Mark(f"v = {n(size, 3)} / {mc}", "C1", "b"),
+            Mark(f"= {n(speed, 2)} {PER_S}", "A1", "b"),
+            Mark(f"tan θ = {w(p2)} / {w(p1)}", "C1", "c"),
+            Mark(f"θ = {n(angle, 3)}°", "A1", "c"),
+            Mark("south of west (opposite to the resultant of the other two)", "B1", "c"),
+        ),
+    )
+
+
+def skaters_stick_right_angles(m1: float = 70.0, u1: float = 4.0, m2: float = 50.0, u2: float = 3.0) -> Question:
+    """Two bodies meeting at right angles and sticking (notes' variation): add the momentum
+    vectors; the pair moves along the resultant. Then the kinetic energy transferred, with ecf."""
+    p1, p2 = momentum(m1, u1), momentum(m2, u2)
+    size, angle = from_components(p1, p2)
+    total = m1 + m2
+    speed = velocity_from_momentum(size, total)
+    before = total_kinetic_energy((m1, m2), (u1, u2))
+    after = kinetic_energy(total, speed)
+    ma, mb, ua, ub = n(m1, 2), n(m2, 2), n(u1, 2), n(u2, 2)
+    sym_a, sym_m1, sym_m2, sym_u1, sym_u2 = sympy.symbols("a m_a m_b u_a u_b")
+    return Question(
+        key="skaters-stick-right-angles",
+        text=(f"On smooth ice, skater A of mass {ma} kg moves due east at {ua} {PER_S}, and skater B of mass "
+              f"{mb} kg moves due north at {ub} {PER_S}. They collide and hold on to each other. Calculate "
+              "(a) their speed just after the collision, (b) the angle between their direction and due east "
+              "(north of east) and (c) the kinetic energy transferred to other forms."),
+        givens=(Given("mass of A", m1, "kg", 2), Given("speed of A", u1, "m s^-1", 2),
+                Given("mass of B", m2, "kg", 2), Given("speed of B", u2, "m s^-1", 2)),
+        parts=(
+            Part("speed just after the collision", speed, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
+                 revisit="Add the momenta as vectors (Pythagoras: they are at right angles), then divide "
+                         "by the total mass.",
+                 mistakes=(
+                     Mistake("momenta added as scalars", stick_together(m1, u1, m2, u2),
+                             "You added the momenta as if the skaters moved along one line. They move at "
+                             "right angles: combine the momenta with Pythagoras."),
+                     Mistake("Pythagoras on the speeds", from_components(u1, u2)[0],
+                             "You combined the speeds. Combine the momenta (which include the masses), "
+                             "then divide by the total mass."),
+                 )),
+            Part("angle north of east", angle, "°", "angle", units="° (degrees)", shown_sig_figs=3,
+                 revisit="The pair moves along the resultant momentum: tan θ = (northward momentum) / "
+                         "(eastward momentum).",
+                 mistakes=(
+                     Mistake("tan the wrong way up", from_components(p2, p1)[1],
+                             "That is the angle from due north. tan θ = (northward momentum) / (eastward "
+                             "momentum) gives the angle north of east."),
+                     Mistake("used the speeds", from_components(u1, u2)[1],
+                             "You used the speeds. The direction is that of the resultant momentum, so "
+                             "include the masses."),
+                 )),
+            Part("kinetic energy transferred to other forms", before - after, "J", "energy", shown_sig_figs=2,
+                 ecf=Ecf(sympy.Rational(1, 2) * (sym_m1 * sym_u1**2 + sym_m2 * sym_u2**2)
+                         - sympy.Rational(1, 2) * (sym_m1 + sym_m2) * sym_a**2,
+                         {"m_a": m1, "m_b": m2, "u_a": u1, "u_b": u2}),
+                 revisit="Kinetic energy is a scalar: add ½mv² for each skater before, and subtract "
+                         "½ × (both masses) × v² after.",
+                 mistakes=(
+                     Mistake("forgot B's kinetic energy before", kinetic_energy(m1, u1) - after,
+                             "Both skaters move before the collision: add both kinetic energies."),
+                     Mistake("gave the kinetic energy before", before,
+                             "That is the kinetic energy before. Subtract the kinetic energy after."),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"p = √({w(p1)}<sup>2</sup> + {w(p2)}<sup>2</sup>) = {n(size, 3)} N s", "C1", "a"),
+            Mark(f"v = {n(size, 3)} / {w(total)} = {n(speed, 2)} {PER_S}", "A1", "a"),
+            Mark(f"tan θ = {w(p2)} / {w(p1)}", "C1", "b"),
+            Mark(f"θ = {n(angle, 3)}° north of east", "A1", "b"),
+            Mark(f"Before: {w(kinetic_energy(m1, u1))} + {w(kinetic_energy(m2, u2))} = {w(before)} J; after: "
+                 f"½ × {w(total)} × {n(speed, 3)}<sup>2</sup> = {n(after, 3)} J", "C1", "c"),
+            Mark(f"Transferred = {n(before - after, 2)} J", "A1", "c"),
+        ),
+    )
+
+
+_WALL = ("away from the wall, at right angles to it", "towards the wall, at right angles to it",
+         "along the wall")
+
+
+def oblique_wall_bounce(mass: float = 0.060, speed: float = 20.0, angle: float = 40.0,
+                        contact_ms: float = 5.0) -> Question:
+    """A ball bouncing off a smooth wall at an angle, same speed and angle: only the component at
+    right angles to the wall reverses, so Δp = 2p sin θ (θ to the wall), away from the wall."""
+    p = momentum(mass, speed)
+    across = float(components(p, angle)[1])  # the component at right angles to the wall
+    dp = oblique_bounce_momentum_change(p, angle)
+    contact = contact_ms / 1000
+    force = average_force(dp, contact)
+    along = float(components(p, angle)[0])
+    m, u, theta, t_ms, t = n(mass, 2), n(speed, 2), n(angle, 2), n(contact_ms, 2), n(contact, 2)
+    sym_a, sym_b, sym_t = sympy.symbols("a b contact")
+    return Question(
+        key="oblique-wall-bounce",
+        text=(f"A ball of mass {m} kg hits a smooth vertical wall at {u} {PER_S}, moving at {theta}° to the "
+              f"wall. It bounces off at the same speed and at the same angle to the wall, and is in contact "
+              f"with it for {t_ms} ms. Calculate (a) the component of the ball's momentum at right angles to "
+              "the wall before it hits, (b) the change in momentum of the ball, with its direction, and "
+              "(c) the average force of the wall on the ball, with its direction."),
+        givens=(Given("mass", mass, "kg", 2), Given("speed", speed, "m s^-1", 2), Given("angle", angle, "°", 2),
+                Given("contact time", contact_ms, "ms", 2)),
+        parts=(
+            Part("momentum component at right angles to the wall", across, "N s", "momentum", units=N_S,
+                 shown_sig_figs=2,
+                 revisit="Resolve: the angle is to the wall, so the component at right angles to it is p sin θ.",
+                 mistakes=(
+                     Mistake("used cos", along,
+                             f"That is the component along the wall. The angle {theta}° is measured from "
+                             "the wall, so the component at right angles to it is p sin θ."),
+                 )),
+            Part("change in momentum of the ball", dp, "N s", "change in momentum", units=N_S,
+                 shown_sig_figs=2, direction="choice", choices=_WALL, answer_direction=_WALL[0],
+                 ecf=Ecf(2 * sym_a, {}),
+                 direction_hint="Only the component at right angles to the wall changes: from towards the "
+                                "wall to away from it.",
+                 revisit="The component along the wall is unchanged; the one at right angles reverses, so "
+                         "Δp = p sin θ − (−p sin θ) = 2p sin θ.",
+                 mistakes=(
+                     Mistake("forgot the reversal", across,
+                             "The component at right angles to the wall reverses: it changes by twice its "
+                             "size, 2p sin θ."),
+                     Mistake("used cos", oblique_bounce_momentum_change(p, 90.0 - angle),  # 2p cos θ
+                             "You doubled the component along the wall, which does not change. Double the "
+                             "component at right angles to it, p sin θ."),
+                 )),
+            Part("average force of the wall on the ball", force, "N", "force", shown_sig_figs=2,
+                 direction="choice", choices=_WALL, answer_direction=_WALL[0],
+                 ecf=Ecf(sym_b / sym_t, {"contact": contact}),
+                 direction_hint="The force on the ball is in the direction of its change in momentum.",
+                 revisit="Average force = change in momentum ÷ contact time, with the time in s.",
+                 mistakes=(
+                     Mistake("milliseconds not converted", average_force(dp, contact_ms),
+                             f"You divided by {t_ms} instead of {t}: convert ms to s."),
+                     Mistake("forgot the reversal", average_force(across, contact),
+                             "The change in momentum is 2p sin θ, not p sin θ: the component at right "
+                             "angles to the wall reverses."),
+                     Mistake("force on the wall", force,
+                             "That is the force of the ball on the wall (its third-law pair). The wall "
+                             "pushes the ball away from it.", direction=_WALL[1]),
+                 )),
+        ),
+        mark_scheme=(
+            Mark(f"p = {m} × {u} = {w(p)} N s; at right angles to the wall: {w(p)} sin {theta}°", "C1", "a"),
+            Mark(f"= {n(across, 2)} N s", "A1", "a"),
+            Mark(f"Δp = 2 × {n(across, 3)}", "C1", "b"),
+            Mark(f"= {n(dp, 2)} N s", "A1", "b"),
+            Mark("away from the wall, at right angles to it", "B1", "b"),
+            Mark(f"F = {n(dp, 3)} / {t}", "C1", "c"),
+            Mark(f"= {n(force, 2)} N, away from the wall at right angles to it", "A1", "c"),
+        ),
+    )
+
+
 TEMPLATES = (
     Template("practice-pucks", "two-d", ("numeric",), "Pucks on an air table", pucks_glancing,
              {"mass": Draw(0.40, 0.20, 0.80, 0.05), "speed_before": Draw(2.5, 1.0, 4.0, 0.1),
               "speed_after": Draw(1.5, 0.5, 3.0, 0.1), "angle": Draw(40.0, 20.0, 70.0, 5.0)}),
+    Template("glancing-speed-choice", "two-d", ("mcq",), "Speed after a glancing collision",
+             glancing_speed_choice,
+             {"m1": Draw(0.20, 0.10, 0.40, 0.05), "speed_before": Draw(3.0, 2.0, 5.0, 0.5),
+              "m2": Draw(0.30, 0.10, 0.50, 0.05), "speed_after": Draw(1.5, 0.5, 2.5, 0.5),
+              "angle": Draw(40.0, 20.0, 70.0, 5.0)}),
+    Template("explosion-three-pieces", "two-d", ("numeric",), "A firework explodes", explosion_three_pieces,
+             {"m1": Draw(0.20, 0.10, 0.50, 0.05), "v1": Draw(30.0, 10.0, 50.0, 5.0),
+              "m2": Draw(0.30, 0.10, 0.50, 0.05), "v2": Draw(15.0, 10.0, 50.0, 5.0),
+              "m3": Draw(0.50, 0.20, 1.00, 0.10)}),
+    Template("skaters-stick-right-angles", "two-d", ("numeric",), "Skaters at right angles",
+             skaters_stick_right_angles,
+             {"m1": Draw(70.0, 50.0, 100.0, 5.0), "u1": Draw(4.0, 2.0, 8.0, 0.5),
+              "m2": Draw(50.0, 50.0, 100.0, 5.0), "u2": Draw(3.0, 2.0, 8.0, 0.5)}),
+    Template("oblique-wall-bounce", "two-d", ("numeric",), "A ball bounces off a wall at an angle",
+             oblique_wall_bounce,
+             {"mass": Draw(0.060, 0.050, 0.200, 0.010), "speed": Draw(20.0, 10.0, 30.0, 1.0),
+              "angle": Draw(40.0, 20.0, 70.0, 5.0), "contact_ms": Draw(5.0, 2.0, 10.0, 0.5)}),
 )

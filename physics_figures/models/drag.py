@@ -597,3 +597,19 @@ def thrown_upwards(launch_speed, *, terminal_velocity=None, g=G_EARTH, samples=4
         time_to_top=float(t_top), max_height=float(h_max),
         return_speed=float(u * v_t / np.hypot(u, v_t)), time_of_flight=float(t_top + t_down),
     )
+
+
+def falling_acceleration(mass, drag, *, g=G_EARTH, upthrust=0.0):
+    """Acceleration of a body moving DOWN with a drag D (up) and an upthrust U (up):
+    a = (m g - U - D) / m, down positive (Newton's second law with the resultant force).
+
+    Negative when D + U exceeds the weight: the body slows down while it still falls
+    (a parachute just opened). mass: kg (> 0); drag: N (>= 0); g: m s^-2 (> 0);
+    upthrust: N (>= 0). Returns a in m s^-2. Raises ValueError for a mass or g <= 0,
+    a negative drag or upthrust, or a value that is not finite.
+    """
+    mass = check.positive("mass", mass, unit="kg")
+    drag = check.non_negative("drag", drag, unit="N")
+    upthrust = check.non_negative("upthrust", upthrust, unit="N")
+    g = check.positive("g", g, unit="m s^-2")
+    return float((mass * g - upthrust - drag) / mass)

@@ -1,0 +1,222 @@
+"""Offline after one visit (a local Sphinx extension): a service worker, generated when the
+HTML build finishes, precaches every page and every file a page uses, listed with their
+content hashes, so a new build (any changed byte) is a new cache.
+
+* ``sw.js`` (site root): cache first from the precache, the network for anything else.
+  A new version installs beside the old one and waits; static/offline.js then shows a
+  notice with a Reload button that activates it and reloads the page.
+* ``manifest.webmanifest`` and two icons: a phone can install the book to its home screen.
+* Registration is skipped on ``file://`` (a copy opened from disk has no service worker).
+* ``_static/search-texts.js``: each page's words, for a copy opened from disk. Sphinx's
+  search fetches a page to show a snippet of it, and a browser refuses fetch() of a local
+  file; static/file-search.js (search page only, file:// only) answers those fetches from
+  this script, which a <script> element may load.
+
+What is precached is what the pages reference (``href``/``src``, a stylesheet's ``url()``),
+the question variants and graphs loaded on New numbers, and the search index: not the PDFs
+(they are downloads, not pages) nor the TrueType fonts (every browser with service workers
+reads WOFF2).
+"""
+
+from __future__ import annotations
+
+import gzip
+import hashlib
+import json
+import posixpath
+import re
+from html import escape
+from html.parser import HTMLParser
+from pathlib import Path
+
+from sphinx.application import Sphinx
+
+__version__ = "1.0"
+HERE = Path(__file__).parent
+SERVICE_WORKER = "sw.js"
+MANIFEST = "manifest.webmanifest"
+ICONS = {192: "_static/offline/icon-192.png", 512: "_static/offline/icon-512.png"}
+THEME_COLOUR = "#2f5d8a"
+#: Downloads and fallbacks no page needs offline.
+NOT_PRECACHED = re.compile(r"^pdf/|\.ttf$|\.map$|\.zip$")
+#: Loaded by script on demand: New numbers' variants and graphs, the search index.
+ON_DEMAND = ("_static/questions/", "searchindex.js")
+_REFERENCE = re.compile(r'(?:src|href)="([^"#?]+)')
+_CSS_URL = re.compile(r"""url\(\s*["']?([^"')#?]+)""")
+
+
+def _pages(site: Path) -> list[str]:
+    return sorted(p.relative_to(site).as_posix() for p in site.rglob("*.html")
+                  if not {"_static", "_sources", "_images"} & set(p.relative_to(site).parts))
+
+
+def _resolve(site: Path, base: str, link: str) -> str | None:
+    if "://" in link or link.startswith(("data:", "mailto:", "javascript:")):
+        return None
+    target = posixpath.normpath(posixpath.join(posixpath.dirname(base), link))
+    if target.endswith("/") or (site / target).is_dir():
+        target = posixpath.join(target, "index.html")
+    return target if (site / target).is_file() else None
+
+
+def referenced_files(site: Path) -> set[str]:
+    """Every file of the site a page names (href, src), a stylesheet names (url()), or a
+    script loads by name (ON_DEMAND), relative to the site's root."""
+    found = set(_pages(site))
+    stylesheets = []
+    for page in list(found):
+        for link in _REFERENCE.findall((site / page).read_text(encoding="utf-8")):
+            target = _resolve(site, page, link)
+            if target:
+                found.add(target)
+                if target.endswith(".css"):
+                    stylesheets.append(target)
+    for stylesheet in stylesheets:
+        for link in _CSS_URL.findall((site / stylesheet).read_text(encoding="utf-8", errors="replace")):
+            target = _resolve(site, stylesheet, link)
+            if target:
+                found.add(target)
+    for name in ON_DEMAND:
+        path = site / name
+        found.update(p.relative_to(site).as_posix() for p in (path.rglob("*") if path.is_dir() else [path])
+                     if p.is_file())
+    return found
+
+
+def precache_list(site: Path) -> list[tuple[str, str]]:
+    """(path, content hash) of every file the service worker keeps, sorted."""
+    files = sorted(f for f in referenced_files(site) if not NOT_PRECACHED.search(f) and f != SERVICE_WORKER)
+    return [(f, hashlib.sha256((site / f).read_bytes()).hexdigest()[:16]) for f in files]
+
+
+def precache_size(site: Path) -> int:
+    """Bytes of the precache as a server sends it gzipped (make bench reports it)."""
+    return sum(len(gzip.compress((site / f).read_bytes(), mtime=0)) for f, _ in precache_list(site))
+
+
+def write_service_worker(site: Path) -> str:
+    """Write sw.js for the site as it is now; returns its version (a hash of the list)."""
+    files = precache_list(site)
+    version = hashlib.sha256(json.dumps(files).encode()).hexdigest()[:16]
+    script = (HERE / "sw_template.js").read_text(encoding="utf-8")
+    script = script.replace("__VERSION__", version).replace(
+        "__PRECACHE__", json.dumps([f for f, _ in files], indent=0))
+    (site / SERVICE_WORKER).write_text(script, encoding="utf-8")
+    return version
+
+
+def write_manifest(site: Path, title: str) -> None:
+    manifest = {
+        "name": title, "short_name": "Dynamics", "start_url": "./index.html", "scope": "./",
+        "display": "standalone", "background_color": "#ffffff", "theme_color": THEME_COLOUR,
+        "icons": [{"src": path, "sizes": f"{size}x{size}", "type": "image/png", "purpose": "any"}
+                  for size, path in ICONS.items()],
+    }
+    (site / MANIFEST).write_text(json.dumps(manifest, indent=1, ensure_ascii=False), encoding="utf-8")
+
+
+def write_icons(site: Path) -> None:
+    """The home-screen icons, drawn once: "Δp" in white on the book's blue."""
+    from matplotlib.figure import Figure  # drawing only when the site is written
+
+    for size, path in ICONS.items():
+        target = site / path
+        if target.exists():
+            continue
+        target.parent.mkdir(parents=True, exist_ok=True)
+        figure = Figure(figsize=(1, 1), dpi=size)
+        figure.patch.set_facecolor(THEME_COLOUR)
+        figure.text(0.5, 0.5, "Δp", color="white", fontsize=34, ha="center", va="center",
+                    family="DejaVu Sans", weight="bold")
+        figure.savefig(target, dpi=size, facecolor=THEME_COLOUR, metadata={"Software": None})
+
+
+SEARCH_TEXTS = "_static/search-texts.js"
+
+
+#: Elements whose content is no words of the page: maths drawings, scripts, buttons.
+SKIPPED = frozenset({"script", "style", "svg", "button"})
+VOID = frozenset({"area", "base", "br", "col", "embed", "hr", "img", "input", "link", "meta", "source",
+                  "track", "wbr"})
+
+
+class _MainText(HTMLParser):
+    """A page's main content as search snippets need it: its words, and the sections (with
+    their ids, for a result that points into a page); no maths drawings, scripts or styles."""
+
+    def __init__(self):
+        super().__init__(convert_charrefs=True)
+        self.depth = 0  # how deep inside the main content (0: outside it)
+        self.skip_from: int | None = None  # the depth of the element being left out
+        self.out: list[str] = []
+
+    def handle_starttag(self, tag, attrs):
+        attributes = dict(attrs)
+        if self.depth == 0:
+            self.depth = int(tag == "main" or attributes.get("role") == "main")
+            return
+        if tag in VOID:
+            return
+        self.depth += 1
+        if self.skip_from is None and (tag in SKIPPED or "headerlink" in (attributes.get("class") or "")):
+            self.skip_from = self.depth
+        elif tag == "section" and self.skip_from is None:
+            self.out.append(f'<section id="{escape(attributes.get("id", ""))}">')
+
+    def handle_endtag(self, tag):
+        if self.depth == 0 or tag in VOID:
+            return
+        if self.skip_from == self.depth:
+            self.skip_from = None
+        elif tag == "section" and self.skip_from is None:
+            self.out.append("</section>")
+        self.depth -= 1
+
+    def handle_data(self, data):
+        if self.depth and self.skip_from is None and data.strip():
+            self.out.append(escape(" ".join(data.split())) + " ")
+
+
+def page_text(html: str) -> str:
+    """A page's main content, reduced to its words in its sections (see _MainText)."""
+    parser = _MainText()
+    parser.feed(html)
+    return '<div role="main">' + "".join(parser.out) + "</div>"
+
+
+def write_search_texts(site: Path) -> None:
+    texts = {page: page_text((site / page).read_text(encoding="utf-8")) for page in _pages(site)}
+    payload = json.dumps(texts, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
+    (site / SEARCH_TEXTS).write_text(f"window.SearchTexts = {payload};\n", encoding="utf-8")
+
+
+def _page_context(app: Sphinx, pagename, templatename, context, doctree) -> None:
+    root = "../" * pagename.count("/")
+    context["metatags"] = context.get("metatags", "") + (
+        f'\n    <link rel="manifest" href="{root}{MANIFEST}" />'
+        f'\n    <meta name="theme-color" content="{THEME_COLOUR}" />')
+
+
+def _build_finished(app: Sphinx, exception) -> None:
+    if exception is not None or app.builder.format != "html":
+        return
+    site = Path(app.outdir)
+    write_icons(site)
+    write_manifest(site, app.config.html_title or app.config.project)
+    write_search_texts(site)
+    write_service_worker(site)  # last: it hashes everything the other steps wrote
+
+
+def _add_static(app: Sphinx, config) -> None:
+    static = str(HERE / "static")
+    if static not in config.html_static_path:
+        config.html_static_path.append(static)
+
+
+def setup(app: Sphinx):
+    app.connect("config-inited", _add_static)
+    app.add_js_file("offline.js")  # deferred, like every script (site_assets)
+    app.add_css_file("offline.css")
+    app.connect("html-page-context", _page_context)
+    app.connect("build-finished", _build_finished, priority=900)  # after every other writer
+    return {"version": __version__, "parallel_read_safe": True, "parallel_write_safe": True}

@@ -1,0 +1,57 @@
+// Ship only the CSS rules the site uses: PurgeCSS keeps a rule when its selectors' class
+// names, ids and tags appear in the built pages or in the scripts that add classes at run
+// time (the theme's, dark mode's, the explorables', the questions'). Called by
+// book/_ext/site_assets when the HTML build finishes:
+//   node prune-css.js SITE_DIR BUNDLE.css [BUNDLE.css ...]   (paths relative to SITE_DIR)
+"use strict";
+const fs = require("node:fs");
+const path = require("node:path");
+const { PurgeCSS } = require(path.join(process.cwd(), "node_modules", "purgecss"));
+
+// Classes a script builds from pieces, or a state the theme sets on <html>/<body>, that no
+// page or script names whole: kept by pattern.
+const SAFELIST = {
+  standard: [/^q-/, /^pp-/, /^ex-/, /^offline-/,
+
+  ],
+  greedy: [/data-theme/, /data-mode/, /prefers-color-scheme/],
+};
+
+function pages(folder, out) {
+  for (const entry of fs.readdirSync(folder, { withFileTypes: true })) {
+    const full = path.join(folder, entry.name);
+    if (entry.isDirectory() && !["_static", "_sources", "_images"].includes(entry.name)) pages(full, out);
+    else if (entry.isFile() && entry.name.endsWith(".html")) out.push(full);
+  }
+  return out;
+}
+
+// The pages, and the scripts they load (not every file in _static: fontawesome.js names
+// every icon there is, and no page loads it).
+function contentOf(site) {
+  const html = pages(site, []);
+  const scripts = new Set();
+  for (const page of html) {
+    for (const [, src] of fs.readFileSync(page, "utf8").matchAll(/<script[^>]*\ssrc="([^"?#]+)/g)) {
+      if (src.includes("://")) continue;
+      const file = path.resolve(path.dirname(page), src);
+      if (fs.existsSync(file)) scripts.add(file);
+    }
+  }
+  return [...html, ...scripts];
+}
+
+async function main() {
+  const [site, ...bundles] = process.argv.slice(2);
+  if (!site || !bundles.length) throw new Error("usage: node prune-css.js SITE_DIR BUNDLE.css ...");
+  const content = contentOf(site);
+  for (const bundle of bundles) {
+    const file = path.join(site, bundle);
+    const [result] = await new PurgeCSS().purge({
+      content, css: [file], safelist: SAFELIST, fontFace: false, keyframes: false, variables: false,
+    });
+    fs.writeFileSync(file, result.css);
+  }
+}
+
+main().catch((error) => { console.error(String(error && error.stack || error)); process.exit(1); });

@@ -1,0 +1,202 @@
+"""Offline after one visit, in Chromium: the service worker (book/_ext/offline) keeps the
+whole book, so after the intro has been opened once, with the network gone, every page
+opens with its figures, a question marks and gives new numbers, progress shows, an
+explorable responds and search finds pages with snippets. A new build replaces the cache:
+the student is told, presses Reload, and reads the new text. Served at the root and under a
+subpath (as GitHub Pages serves a project site), by a host that lets browsers reuse files
+for ten minutes, as GitHub Pages does."""
+
+from __future__ import annotations
+
+import re
+import shutil
+import sys
+from pathlib import Path
+
+import pytest
+from browser import open_browser, serve_site, site_pages
+
+from physics_figures import bank
+
+pytestmark = [pytest.mark.site, pytest.mark.browser]
+
+ROOT = Path(__file__).resolve().parents[1]
+INTRO = "book/intro.html"
+HOST_CACHE = "max-age=600"  # GitHub Pages
+SUBPATHS = [pytest.param("", id="root"), pytest.param("/dynamics/", id="subpath")]
+IMAGES_SHOWN = """() => Promise.all([...document.images].map(image => {
+    image.loading = "eager";
+    return image.decode().then(() => image.naturalWidth > 0, () => image.currentSrc || image.src);
+}))"""
+
+
+def _offline_extension():
+    sys.path.insert(0, str(ROOT / "book" / "_ext"))
+    import offline
+
+    return offline
+
+
+@pytest.fixture(scope="module")
+def browser():
+    with open_browser() as browser:
+        yield browser
+
+
+def _first_visit(browser, base_url: str):
+    """A student's first visit: the intro, until the service worker controls it."""
+    context = browser.new_context(service_workers="allow")
+    errors: list[str] = []
+    context.on("weberror", lambda error: errors.append(str(error.error)))
+    page = context.new_page()
+    page.goto(f"{base_url}/{INTRO}")
+    page.wait_for_function("navigator.serviceWorker.controller !== null", timeout=60_000)
+    return context, page, errors
+
+
+@pytest.mark.parametrize("subpath", SUBPATHS)
+def test_after_one_visit_the_whole_book_works_offline(browser, site_dir, subpath):
+    with serve_site(site_dir, prefix=subpath, cache_control=HOST_CACHE) as base_url:
+        context, page, errors = _first_visit(browser, base_url)
+        context.set_offline(True)
+        for path in site_pages(site_dir):
+            page.goto(f"{base_url}/{path}", wait_until="load")
+            if "http-equiv=\"refresh\"" in (site_dir / path).read_text(encoding="utf-8"):  # the root's stub
+                page.wait_for_url(f"{base_url}/{INTRO}")
+                page.wait_for_load_state("load")
+            assert page.title(), f"{path}: no page offline"
+            shown = page.evaluate(IMAGES_SHOWN)
+            assert all(result is True for result in shown), f"{path}: images not shown offline: {shown}"
+
+        # a question marks, and new numbers come from the cache
+        key = "graph-kick-force-time"
+        page.goto(f"{base_url}/book/exam/practice-force-momentum.html#question-{key}")
+        form = page.locator(f'form.q-form[data-question="{key}"]')
+        printed = bank.TEMPLATES[key].variant(0)
+        form.locator('[data-part="a"] input.q-value').fill(str(int(printed.parts[0].value)))
+        form.locator('[data-part="a"] input.q-unit').fill("N")
+        form.locator("button.q-check").click()
+        assert form.locator('[data-part="a"] .q-feedback').get_attribute("data-code") == "correct"
+        graph = page.locator(f'section.q[data-q="{key}"] img.q-graph')
+        before = graph.get_attribute("src")
+        form.locator("button.q-new").click()
+        page.wait_for_function(f"document.querySelector('form[data-question=\"{key}\"]').dataset.variant !== '0'")
+        assert graph.get_attribute("src") != before
+        assert page.evaluate(IMAGES_SHOWN) and all(r is True for r in page.evaluate(IMAGES_SHOWN))
+
+        # the attempt shows on Your practice
+        page.goto(f"{base_url}/book/exam/your-practice.html")
+        summary = page.locator('.pp-type[data-type="force-momentum"] .pp-summary').inner_text()
+        assert "1 of" in summary, summary
+
+        # an explorable responds
+        page.goto(f"{base_url}/{_page_with_explorable(site_dir)}")
+        box = page.locator("[data-explorable]").first
+        text = box.inner_text()
+        slider = box.locator('input[type="range"]').first
+        slider.focus()
+        slider.press("ArrowRight")
+        assert box.inner_text() != text, "the explorable did not respond offline"
+
+        # search finds pages, with snippets
+        page.goto(f"{base_url}/search.html?q=momentum")
+        page.wait_for_function(
+            "[...document.querySelectorAll('#search-results ul.search > li')].slice(0, 3).length === 3 && "
+            "[...document.querySelectorAll('#search-results ul.search > li')].slice(0, 3)"
+            ".every(li => li.querySelector('.context') && li.querySelector('.context').textContent.trim())",
+            timeout=20_000)
+        context.close()
+        assert not errors, errors
+
+
+def _page_with_explorable(site_dir: Path) -> str:
+    for path in site_pages(site_dir):
+        if "data-explorable=" in (site_dir / path).read_text(encoding="utf-8"):
+            return path
+    raise AssertionError("no page shows an explorable")
+
+
+@pytest.mark.parametrize("subpath", SUBPATHS)
+def test_a_new_build_is_offered_and_a_reload_shows_its_text(browser, site_dir, tmp_path, subpath):
+    site = tmp_path / "site"
+    shutil.copytree(site_dir, site)
+    with serve_site(site, prefix=subpath, cache_control=HOST_CACHE) as base_url:
+        context, page, errors = _first_visit(browser, base_url)
+        # the next build changes the intro's heading; the build ends by writing sw.js
+        intro = site / INTRO
+        html, count = re.subn(r"(<h1>[^<]+)", r"\1 (new edition)", intro.read_text(encoding="utf-8"), count=1)
+        assert count == 1
+        intro.write_text(html, encoding="utf-8")
+        _offline_extension().write_service_worker(site)
+        page.reload()
+        assert "(new edition)" not in page.locator("main h1").first.inner_text()  # the cache still serves
+        notice = page.locator(".offline-update[role=status]")
+        notice.wait_for(timeout=60_000)
+        assert "new version" in notice.inner_text()
+        with page.expect_navigation():
+            notice.get_by_role("button", name="Reload").click()
+        page.wait_for_function("document.querySelector('main h1').textContent.includes('(new edition)')")
+        context.close()
+        assert not errors, errors
+
+
+def test_the_precache_lists_every_page_and_what_pages_load_but_no_downloads(site_dir):
+    offline = _offline_extension()
+    listed = dict(offline.precache_list(site_dir))
+    for path in site_pages(site_dir):
+        assert path in listed, f"{path} is not kept offline"
+    assert "searchindex.js" in listed
+    assert any(path.startswith("_static/questions/") and path.endswith(".svg") for path in listed)
+    assert not [path for path in listed if path.startswith("pdf/") or path.endswith((".ttf", ".map"))]
+    sw = (site_dir / offline.SERVICE_WORKER).read_text(encoding="utf-8")
+    assert all(f'"{path}"' in sw for path in listed)
+    assert offline.precache_size(site_dir) <= 2_000_000  # CLARIFICATIONS: at most 2 MB gzip
+
+
+@pytest.fixture(scope="module")
+def unzipped(site_dir, tmp_path_factory) -> Path:
+    """The zip make book writes, unzipped as a student would (scripts/zip_site.py)."""
+    zipped = site_dir / "download" / "dynamics.zip"
+    assert zipped.is_file(), "no zip of the site: make book writes it (scripts/zip_site.py)"
+    folder = tmp_path_factory.mktemp("copy")
+    shutil.unpack_archive(zipped, folder)
+    return folder / "dynamics"
+
+
+def test_the_zip_opens_from_disk_with_figures_questions_and_search(browser, unzipped):
+    context = browser.new_context()
+    errors: list[str] = []
+    context.on("weberror", lambda error: errors.append(str(error.error)))
+    page = context.new_page()
+    for path in site_pages(unzipped):
+        page.goto((unzipped / path).as_uri(), wait_until="load")
+        if "http-equiv=\"refresh\"" in (unzipped / path).read_text(encoding="utf-8"):  # the root's stub
+            page.wait_for_url((unzipped / INTRO).as_uri())
+            page.wait_for_load_state("load")
+        assert page.title(), f"{path}: no page from disk"
+        shown = page.evaluate(IMAGES_SHOWN)
+        assert all(result is True for result in shown), f"{path}: images not shown from disk: {shown}"
+
+    key = "quick-check-1"
+    page.goto((unzipped / "book/exam/quick-check.html").as_uri())
+    form = page.locator(f'form.q-form[data-question="{key}"]')
+    form.locator('[data-part="a"] input.q-value').fill("15")
+    form.locator('[data-part="a"] input.q-unit').fill("N s")
+    form.locator('[data-part="b"] input.q-value').fill("7.5")
+    form.locator('[data-part="b"] input.q-unit').fill("m/s")
+    form.locator("button.q-check").click()
+    assert form.locator(".q-score").inner_text() == "4/4 marks"
+    form.locator("button.q-new").click()  # the variants come by <script>, which file:// allows
+    page.wait_for_function(f"document.querySelector('form[data-question=\"{key}\"]').dataset.variant !== '0'")
+
+    page.goto((unzipped / "search.html").as_uri() + "?q=terminal+velocity")
+    page.wait_for_function(
+        "[...document.querySelectorAll('#search-results ul.search > li')].length >= 3 && "
+        "[...document.querySelectorAll('#search-results ul.search > li')].slice(0, 3)"
+        ".every(li => li.querySelector('.context') && li.querySelector('.context').textContent.trim())",
+        timeout=20_000)
+    first = page.locator("#search-results ul.search > li").first
+    assert "friction-drag-terminal-velocity" in first.locator("a").first.get_attribute("href")
+    assert "terminal" in first.locator(".context").inner_text().lower()
+    context.close()
+    assert not errors, errors

@@ -13,7 +13,6 @@ import sys
 import time
 from pathlib import Path
 
-from ..notation import format_number
 from ..variants import QUESTION_TYPES
 from . import SITE_SEED, TYPE_TITLES, bank_templates, plan, select, site_sheets, template_marks
 
@@ -85,7 +84,7 @@ def main(argv: list[str] | None = None) -> int:
     for sheet in sheets:
         print(f"{sheet.name}: {len(sheet.versions)} versions, {sheet.marks} marks, "
               f"{len(sheet.templates)} questions ({', '.join(t.key for t in sheet.templates)})")
-    print(f"wrote {len(pdfs)} PDFs to {args.out} in {format_number(time.perf_counter() - start, decimals=1)} s")
+    print(f"wrote {len(pdfs)} PDFs to {args.out} in {time.perf_counter() - start:.1f} s")
     return 0
 
 

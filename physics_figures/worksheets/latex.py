@@ -197,7 +197,7 @@ def _part(question: Question, index: int, marks: int) -> str:
         return (f"\\par\\vspace{{4pt}}\\needspace{{4\\baselineskip}}{tex(label + part.prompt)}"
                 f"\\writinglines{{{LINES_PER_MARK * marks}}}\\vspace{{2pt}}\\partmarks{{{marks}}}\\par")
     space = 0.6 if part.kind == "graph" else WORKING_CM_PER_MARK * marks
-    return (f"\\par\\needspace{{{format_number(space + 1.2, decimals=1)}cm}}\\vspace{{{format_number(space, decimals=1)}cm}}\n"
+    return (f"\\par\\needspace{{{space + 1.2:.1f}cm}}\\vspace{{{space:.1f}cm}}\n"
             + _answer_line(label, part, marks) + "\\par")
 
 

@@ -37,7 +37,7 @@ from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 from .. import textformat
-from ..notation import format_number, round_number
+from ..notation import round_number
 from ..questions import OPTION_LETTERS, Question, unit_text
 from ..variants import QUESTION_TYPES, Template
 from . import TYPE_TITLES, bank_templates, part_marks
@@ -350,7 +350,7 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     count = write(args.out)
     print(f"wrote {args.out}: {sum(count.values())} questions ({', '.join(f'{n} {k}' for k, n in sorted(count.items()))}), "
-          f"{format_number(args.out.stat().st_size / 1e6, decimals=1)} MB")
+          f"{args.out.stat().st_size / 1e6:.1f} MB")
     return 0
 
 

@@ -24,6 +24,7 @@ help:
 	@echo "make test   build the site, then run the whole test suite (what CI runs)"
 	@echo "make check  ruff + the tests that need no build or browser (under a minute)"
 	@echo "make pdf    build the PDF book, question sheet and answer key into $(PDF)"
+	@echo "make worksheets  the teachers' worksheets (versions A-C with keys); make moodle: the Moodle XML"
 	@echo "make serve  serve the built site on http://localhost:$(PORT)"
 	@echo "make lint   ruff over the Python code"
 	@echo "make bench  time cold/no-op/one-edit builds, weigh every page, Lighthouse: BENCHMARKS.md"
@@ -52,12 +53,30 @@ html: venv node_modules/.package-lock.json
 	@echo ">>> building the HTML site (pages are executed; cached pages are reused)"
 	$(JB_BUILD)
 
-# The site links the teachers' PDFs and a zip of itself (to read from disk, offline), so
-# the book is the HTML, then the PDFs, then the zip of both.
-book: html pdf
+# The site links the teachers' PDFs, worksheets and Moodle file, and a zip of itself (to
+# read from disk, offline), so the book is the HTML, then the PDFs, the worksheets, the
+# Moodle XML, then the zip of all (in that order, also under make -j).
+book: html
+	@$(MAKE) --no-print-directory pdf
+	@$(MAKE) --no-print-directory worksheets
+	@$(MAKE) --no-print-directory moodle
 	@echo ">>> packing the site into a zip to open from disk"
 	$(BIN)/python scripts/zip_site.py $(SITE)
 	@echo ">>> done: open $(CURDIR)/$(SITE)/index.html  (or run: make serve)"
+
+# The teacher's kit (book/teachers.md): a worksheet per question type and the mixed 40-mark
+# end-of-topic test, versions A-C with their keys, typeset by xelatex (one run per core),
+# and the question bank as Moodle XML. Own sheets: python -m physics_figures.worksheets --help
+TEACHERS := $(SITE)/teachers
+.PHONY: worksheets moodle
+worksheets: venv
+	@scripts/ensure-debian-packages pdf
+	@echo ">>> typesetting the teachers' worksheets and keys into $(TEACHERS)"
+	$(BIN)/python -m physics_figures.worksheets --site --out $(TEACHERS) --work _build/teachers-tex
+
+moodle: venv
+	@echo ">>> writing the question bank as Moodle XML"
+	$(BIN)/python -m physics_figures.worksheets.moodle $(TEACHERS)/dynamics-moodle.xml
 
 test: venv
 	@scripts/ensure-debian-packages test

@@ -38,7 +38,7 @@ MANIFEST = "manifest.webmanifest"
 ICONS = {192: "_static/offline/icon-192.png", 512: "_static/offline/icon-512.png"}
 THEME_COLOUR = "#2f5d8a"
 #: Downloads and fallbacks no page needs offline.
-NOT_PRECACHED = re.compile(r"^pdf/|\.ttf$|\.map$|\.zip$")
+NOT_PRECACHED = re.compile(r"^pdf/|^teachers/|\.ttf$|\.map$|\.zip$")
 #: Loaded by script on demand: New numbers' variants and graphs, the search index.
 ON_DEMAND = ("_static/questions/", "searchindex.js")
 _REFERENCE = re.compile(r'(?:src|href)="([^"#?]+)')

@@ -1,0 +1,254 @@
+# ruff: noqa: RUF003  (comments quote the notes: en dashes)
+"""The teacher's kit: worksheets in several versions, each with its own answer key.
+
+A teacher chooses question types or templates of the bank (physics_figures.bank), the
+number of marks, the number of versions and a seed. :func:`plan` picks the templates (the
+same in every version, so every version carries the same marks) and, for each version,
+one variant of each template: different numbers from the same templates. Everything is
+drawn from the seed, so the same seed gives the same sheets. The printed variant (0) is
+the one the book and its answer key show, so versions use the other variants first.
+
+:mod:`.latex` writes a version's question sheet and answer key as standalone LaTeX, and
+:mod:`.build` typesets them with xelatex. :mod:`.moodle` exports the bank as Moodle XML.
+``python -m physics_figures.worksheets --help`` is the command line.
+
+The bank is read generically (``bank.TEMPLATES``, ``bank.by_type``): a template added to
+the bank appears here with nothing else to change.
+"""
+
+from __future__ import annotations
+
+import random
+import string
+from collections.abc import Sequence
+from dataclasses import dataclass
+from functools import cached_property
+
+from .. import bank
+from ..questions import Question
+from ..variants import QUESTION_TYPES, Template
+
+#: How often each type came up in the Paper 1 and Paper 2 questions of 2021–2025 (the notes,
+#: "How to do it"; book/exam/how-to.md prints the same table, which a test compares). The
+#: end-of-topic test shares its marks among the types in these proportions.
+EXAM_QUESTION_COUNTS = {"newton": 49, "drag": 48, "force-momentum": 44, "definitions": 36,
+                        "momentum-line": 23, "elastic": 23, "two-d": 12}
+#: The seed of the worksheets on the site (`make worksheets`).
+SITE_SEED = 2026
+#: The site's mixed end-of-topic test.
+END_OF_TOPIC_MARKS = 40
+SITE_VERSIONS = 3
+#: The one data line every sheet prints (the notes: g = 9.81 m s⁻²).
+DATA_LINE = "Data: take g = 9.81 m s⁻²."
+MAX_VERSIONS = len(string.ascii_uppercase)
+
+
+def _require(ok: bool, name: str, value, rule: str) -> None:
+    if not ok:
+        raise ValueError(f"{name} {rule} (got {name}={value!r})")
+
+
+def bank_templates() -> list[Template]:
+    """Every template a worksheet or the Moodle file may use, in the bank's order (a worked
+    example's try-first part is not one: its statement is the example's)."""
+    return [template for question_type in QUESTION_TYPES for template in bank.by_type(question_type)]
+
+
+def template_marks(template: Template) -> int:
+    """The marks of a template (the same in every variant, which a test checks)."""
+    return template.variant(0).marks
+
+
+def part_marks(question: Question) -> list[int]:
+    """The marks printed beside each part, adding up to the question's marks. A mark line
+    that serves two parts ("ab": working for both) goes to the one of them with fewer
+    marks so far (the earlier on a tie), so the marks stay spread as the working is."""
+    counts = dict.fromkeys(question.part_ids, 0)
+    shared = []
+    for mark in question.mark_scheme:
+        if not mark.code:
+            continue
+        parts = question.parts_of(mark)
+        if len(parts) == 1:
+            counts[parts[0]] += 1
+        else:
+            shared.append(parts)
+    for parts in shared:
+        fewest = min(parts, key=lambda part: (counts[part], parts.index(part)))
+        counts[fewest] += 1
+    return [counts[part] for part in question.part_ids]
+
+
+@dataclass(frozen=True)
+class Item:
+    """One question of a version: the template and the variant it prints."""
+
+    template: Template
+    variant: int
+
+    @cached_property
+    def question(self) -> Question:
+        return self.template.variant(self.variant)
+
+
+@dataclass(frozen=True)
+class Version:
+    """One version of a sheet (A, B, C...): its questions in order."""
+
+    letter: str
+    items: tuple[Item, ...]
+
+    @property
+    def marks(self) -> int:
+        return sum(item.question.marks for item in self.items)
+
+
+@dataclass(frozen=True)
+class Sheet:
+    """A worksheet: its name (file names), title, seed and versions."""
+
+    name: str
+    title: str
+    seed: int
+    versions: tuple[Version, ...]
+
+    @property
+    def marks(self) -> int:
+        return self.versions[0].marks
+
+    @property
+    def templates(self) -> tuple[Template, ...]:
+        return tuple(item.template for item in self.versions[0].items)
+
+
+def _subset_sums(templates: Sequence[Template], most: int) -> dict[int, tuple[Template, ...]]:
+    """For each total up to ``most``, one set of templates that makes it (the first found
+    in the given order, which the seed has shuffled)."""
+    sums: dict[int, tuple[Template, ...]] = {0: ()}
+    for template in templates:
+        marks = template_marks(template)
+        for total, chosen in sorted(sums.items(), reverse=True):
+            if total + marks <= most and total + marks not in sums:
+                sums[total + marks] = (*chosen, template)
+    return sums
+
+
+def choose_templates(templates: Sequence[Template], marks: int, seed: int) -> list[Template]:
+    """Templates making exactly ``marks``, shared among their types as the exam shares its
+    questions (EXAM_QUESTION_COUNTS), drawn by ``seed``. ValueError when no set of them
+    makes that many marks, naming the nearest totals that can be made."""
+    rng = random.Random(f"worksheet-templates:{seed}")
+    by_type: dict[str, list[Template]] = {}
+    for template in templates:
+        by_type.setdefault(template.type, []).append(template)
+    for group in by_type.values():
+        rng.shuffle(group)
+    available = sum(template_marks(t) for t in templates)
+    _require(marks <= available, "marks", marks,
+             f"is more than the {available} marks the bank holds for "
+             f"{', '.join(sorted(by_type))} ({len(templates)} templates)")
+    weight = sum(EXAM_QUESTION_COUNTS[t] for t in by_type)
+    targets = {t: marks * EXAM_QUESTION_COUNTS[t] / weight for t in by_type}
+    # Per type: the totals it can make; then over the types: the exact total that strays
+    # least from each type's share.
+    options = {t: _subset_sums(group, marks) for t, group in by_type.items()}
+    best: dict[int, tuple[float, tuple[tuple[str, int], ...]]] = {0: (0.0, ())}
+    for question_type, sums in options.items():
+        following: dict[int, tuple[float, tuple[tuple[str, int], ...]]] = {}
+        for total, (cost, picks) in best.items():
+            for amount in sums:
+                if total + amount > marks:
+                    continue
+                entry = (cost + abs(amount - targets[question_type]), (*picks, (question_type, amount)))
+                if total + amount not in following or entry[0] < following[total + amount][0] - 1e-9:
+                    following[total + amount] = entry
+        best = following
+    if marks not in best:
+        below = max((total for total in best if total < marks), default=0)
+        above = _subset_sums(templates, available)
+        above = min((total for total in above if total > marks), default=available)
+        raise ValueError(f"marks cannot be made exactly from the questions of these templates "
+                         f"({', '.join(f'{t.key}: {template_marks(t)}' for t in templates)}); "
+                         f"the nearest totals that can are {below} and {above} (got marks={marks!r})")
+    chosen = [t for question_type, amount in best[marks][1] for t in options[question_type][amount]]
+    order = {template.key: index for index, template in enumerate(bank_templates())}
+    return sorted(chosen, key=lambda t: order.get(t.key, len(order)))
+
+
+def select(*, types: Sequence[str] = (), templates: Sequence[str] = ()) -> list[Template]:
+    """The templates named by type or by key (both may be given), in the bank's order.
+    ValueError names a type or template that does not exist."""
+    _require(bool(types) or bool(templates), "types", list(types), "or templates must name something to ask")
+    for question_type in types:
+        _require(question_type in QUESTION_TYPES, "types", question_type,
+                 f"must name question types of the bank: {', '.join(QUESTION_TYPES)}")
+    known = {t.key: t for t in bank_templates()}
+    for key in templates:
+        if key not in known:
+            close = [k for k in known if key.split("-")[0] in k][:5]
+            hint = f" (did you mean {', '.join(close)}?)" if close else ""
+            raise ValueError(f"templates names {key!r}, which is no template of the bank{hint}; "
+                             f"`python -m physics_figures.worksheets --list` lists them "
+                             f"(got templates={list(templates)!r})")
+    wanted = set(templates)
+    chosen = [t for t in bank_templates() if t.type in types or t.key in wanted]
+    return chosen
+
+
+def _variants_for(template: Template, count: int, seed: int) -> list[int]:
+    """``count`` different variants of a template, drawn by the seed; the printed variant
+    (0, in the book and its key) only when the others run out."""
+    rng = random.Random(f"worksheet-variants:{seed}:{template.key}")
+    others = list(range(1, len(template.values)))
+    rng.shuffle(others)
+    return [*others, 0][:count]
+
+
+def plan(name: str, title: str, templates: Sequence[Template], *, versions: int, seed: int,
+         marks: int | None = None) -> Sheet:
+    """A sheet's versions: the templates (all of them, or a set making ``marks``), each
+    version with its own variant of each. ValueError when the request cannot be filled."""
+    _require(isinstance(versions, int) and 1 <= versions <= MAX_VERSIONS, "versions", versions,
+             f"must be a whole number from 1 to {MAX_VERSIONS} (A to Z)")
+    _require(isinstance(seed, int) and seed >= 0, "seed", seed, "must be a whole number, 0 or more")
+    _require(bool(templates), "templates", list(templates), "must hold at least one template")
+    short = [t for t in templates if len(t.values) < versions]
+    _require(not short, "versions", versions,
+             "needs that many different variants of every template, but "
+             + ", ".join(f"{t.key} has {len(t.values)}" for t in short)
+             + ": ask for fewer versions or leave those templates out")
+    if marks is not None:
+        _require(isinstance(marks, int) and marks >= 1, "marks", marks, "must be a whole number, 1 or more")
+        templates = choose_templates(templates, marks, seed)
+    chosen_variants = {t.key: _variants_for(t, versions, seed) for t in templates}
+    return Sheet(name, title, seed, tuple(
+        Version(string.ascii_uppercase[index],
+                tuple(Item(t, chosen_variants[t.key][index]) for t in templates))
+        for index in range(versions)))
+
+
+#: The types' names, as the book's "How to do it" page gives them.
+TYPE_TITLES = {
+    "newton": "Newton's laws, F = ma and third-law pairs",
+    "drag": "Drag, air resistance and terminal velocity",
+    "force-momentum": "Force as rate of change of momentum",
+    "definitions": "Mass, weight and the definitions",
+    "momentum-line": "Conservation of momentum in a straight line",
+    "elastic": "Elastic and inelastic collisions",
+    "two-d": "Conservation of momentum in two dimensions",
+}
+
+
+def site_sheets(*, seed: int = SITE_SEED, versions: int = SITE_VERSIONS) -> list[Sheet]:
+    """The site's sheets: a worksheet of every template of each type, and the mixed 40-mark
+    end-of-topic test weighted like the exam."""
+    sheets = []
+    for question_type in QUESTION_TYPES:
+        usable = [t for t in bank.by_type(question_type) if len(t.values) >= versions]
+        if usable:
+            sheets.append(plan(f"worksheet-{question_type}", f"Worksheet: {TYPE_TITLES[question_type]}",
+                               usable, versions=versions, seed=seed))
+    usable = [t for t in bank_templates() if len(t.values) >= versions]
+    sheets.append(plan("end-of-topic-test", "Dynamics: end-of-topic test", usable, versions=versions,
+                       seed=seed, marks=END_OF_TOPIC_MARKS))
+    return sheets

@@ -1,0 +1,348 @@
+# ruff: noqa: RUF001, RUF002  (typeset text: true minus, times, superscripts)
+"""A version's question sheet and answer key as standalone LaTeX documents (for xelatex).
+
+The sheet: a cover (name, class, date, the data line, the total, a table of the marks and,
+when there are multiple-choice items, their answer grid), then each question with its
+graph drawn for this version's numbers, working space and answer lines sized to each
+part's marks, and the marks as [n]. The key: for each part the working, the answer to the
+significant figures the book prints with its unit, the mark-scheme lines with their codes
+and ecf notes, and the common wrong answers with the mistake each shows.
+
+All text comes from the bank in the text format (physics_figures.textformat) and every
+number from physics_figures, written by physics_figures.notation.format_number.
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy
+
+from .. import textformat
+from ..bank._common import w as working_number
+from ..notation import format_number
+from ..questions import OPTION_LETTERS, Question, unit_text
+from . import DATA_LINE, Sheet, Version, part_marks
+
+#: Working space per mark of a calculation, and ruled lines per mark of an explanation.
+WORKING_CM_PER_MARK = 1.5
+LINES_PER_MARK = 2
+#: The key prints a wrong answer to this many significant figures (as the marker reads it).
+MISTAKE_SIG_FIGS = 3
+
+_SPECIAL = {"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&",
+            "#": r"\#", "_": r"\_", "%": r"\%", "~": r"\textasciitilde{}",
+            "^": r"\textasciicircum{}"}
+
+PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
+% Written by physics_figures.worksheets: do not edit (run the command again).
+\usepackage[a4paper,hmargin=2.2cm,top=2.2cm,bottom=2.4cm]{geometry}
+\usepackage{fontspec}
+\setmainfont{FreeSerif}[Extension=.otf,UprightFont=*,BoldFont=*Bold,ItalicFont=*Italic,BoldItalicFont=*BoldItalic]
+\setsansfont{FreeSans}[Extension=.otf,UprightFont=*,BoldFont=*Bold,ItalicFont=*Oblique,BoldItalicFont=*BoldOblique]
+\usepackage{graphicx}
+\usepackage{array}
+\usepackage{needspace}
+\usepackage{enumitem}
+\usepackage{fancyhdr}
+\usepackage{xcolor}
+\usepackage[hidelinks,pdfcreator={physics_figures.worksheets}]{hyperref}
+\tracinglostchars=3 % a character the font lacks is an error, not a silent gap
+\setlength{\parindent}{0pt}
+\setlength{\parskip}{4pt}
+\pagestyle{fancy}
+\fancyhf{}
+\renewcommand{\headrulewidth}{0pt}
+\fancyfoot[L]{\small\sffamily @FOOTER@}
+\fancyfoot[R]{\small\sffamily Page \thepage}
+\hypersetup{pdftitle={@TITLE@},pdfauthor={},pdfsubject={},pdfkeywords={}}
+\newcommand{\answerline}[1]{\leavevmode\hbox to #1{\dotfill}}
+\newcommand{\partmarks}[1]{\hfill\mbox{\textbf{[#1]}}}
+\newcount\writinglinecount
+\newcommand{\writinglines}[1]{\par\writinglinecount=#1\relax
+  \loop\ifnum\writinglinecount>0\relax\vspace{0.95cm}\hrule height 0.3pt\relax
+  \advance\writinglinecount by -1\repeat\par}
+\newcommand{\question}[1]{\par\needspace{6\baselineskip}\vspace{10pt}{\sffamily\bfseries\large #1}\quad}
+\newcommand{\gridbox}{\framebox[1.1cm]{\rule{0pt}{0.5cm}}}
+"""
+
+
+#: Unicode subscript letters that FreeSerif lacks (vₜ in feedback), as \textsubscript.
+_SUBSCRIPTS = {chr(code): letter for code, letter in zip(range(0x2090, 0x209D), "aeoxəhklmnpst", strict=True)}
+
+
+def _subscripts(text: str) -> str:
+    return "".join(f"\\textsubscript{{{_SUBSCRIPTS[c]}}}" if c in _SUBSCRIPTS else c for c in text)
+
+
+def _marks(count: int) -> str:
+    return f"{count} mark" if count == 1 else f"{count} marks"
+
+
+def tex(plain: str) -> str:
+    """Plain text (a prompt, a mistake's name, feedback) for LaTeX; Unicode stays Unicode."""
+    return _subscripts("".join(_SPECIAL.get(char, char) for char in plain))
+
+
+def rich(source: str) -> str:
+    """Text in the text format (question text, options, mark lines) for LaTeX."""
+    return _subscripts(textformat.to_latex(source))
+
+
+def _unit(unit: str) -> str:
+    return tex(unit_text(unit))
+
+
+def _value_with_unit(value: float, sig_figs: int, unit: str) -> str:
+    space = "" if unit == "°" else " "
+    return f"{format_number(value, sig_figs)}{space}{unit_text(unit)}"
+
+
+def _document(body: str, *, footer: str, title: str) -> str:
+    return (PREAMBLE.replace("@FOOTER@", tex(footer)).replace("@TITLE@", tex(title))
+            + "\\begin{document}\n" + body + "\n\\end{document}\n")
+
+
+def _graph_file(index: int) -> str:
+    return f"graph-{index}.pdf"
+
+
+def graphs(version: Version) -> dict[str, bytes]:
+    """The vector PDFs of this version's graphs, by file name (drawn from its numbers)."""
+    from ..figures.book import question_graph  # matplotlib only when a sheet has a graph
+
+    return {_graph_file(number): question_graph(item.question.graph).pdf()
+            for number, item in enumerate(version.items, start=1) if item.question.graph is not None}
+
+
+# ----------------------------------------------------------------- the question sheet
+
+
+def _cover(sheet: Sheet, version: Version) -> str:
+    numbers = range(1, len(version.items) + 1)
+    choices = [(number, item) for number, item in zip(numbers, version.items, strict=True)
+               if any(part.kind == "mcq" for part in item.question.parts)]
+    rows = "\n".join(f"{number} & {item.question.marks} & \\\\ \\hline"
+                     for number, item in zip(numbers, version.items, strict=True))
+    out = [
+        r"\thispagestyle{fancy}",
+        r"{\raggedright\sffamily\bfseries\LARGE " + tex(sheet.title) + r"\par}",
+        r"\vspace{4pt}{\sffamily\Large Version " + version.letter + r"\par}",
+        r"\vspace{18pt}",
+        r"\renewcommand{\arraystretch}{1.9}",
+        r"\begin{tabular}{@{}l p{11cm}@{}}",
+        r"Name & \answerline{11cm} \\",
+        r"Class & \answerline{11cm} \\",
+        r"Date & \answerline{11cm} \\",
+        r"\end{tabular}",
+        r"\renewcommand{\arraystretch}{1}",
+        r"\vspace{14pt}",
+        r"\begin{itemize}[leftmargin=1.2em,itemsep=2pt]",
+        r"\item Answer \textbf{all} questions in the spaces provided.",
+        r"\item Show your working: marks are given for the method as well as the answer.",
+        r"\item Give each numerical answer to an appropriate number of significant figures, with its unit.",
+        r"\item The number of marks is given in brackets [\,] at the end of each part.",
+        (r"\item For each multiple-choice question, write the letter of your answer in the grid below."
+         if choices else ""),
+        r"\end{itemize}",
+        r"\vspace{6pt}",
+        r"\textbf{" + tex(DATA_LINE) + r"}\par",
+        r"\vspace{10pt}",
+        r"{\sffamily\bfseries\Large Total: " + str(version.marks) + r" marks\par}",
+        r"\vspace{12pt}",
+        r"\begin{center}\renewcommand{\arraystretch}{1.5}",
+        r"\begin{tabular}{|c|c|c|}\hline",
+        r"\textbf{Question} & \textbf{Marks available} & \textbf{Marks awarded} \\ \hline",
+        rows,
+        r"\textbf{Total} & \textbf{" + str(version.marks) + r"} & \\ \hline",
+        r"\end{tabular}\end{center}",
+    ]
+    if choices:
+        header = " & ".join(["\\textbf{Question}", *(f"\\textbf{{{letter}}}" for letter in OPTION_LETTERS),
+                             "\\textbf{Answer}"])
+        grid = "\n".join(f"{number} & " + " & ".join("$\\bigcirc$" for _ in OPTION_LETTERS)
+                         + r" & \gridbox \\ \hline" for number, _ in choices)
+        out += [
+            r"\vspace{8pt}\begin{center}{\sffamily\bfseries Multiple-choice answer grid}\par\vspace{4pt}",
+            r"Shade one circle for each question, and write the letter in the box.\par\vspace{4pt}",
+            r"\renewcommand{\arraystretch}{1.6}",
+            r"\begin{tabular}{|c|c|c|c|c|c|}\hline",
+            header + r" \\ \hline",
+            grid,
+            r"\end{tabular}\end{center}",
+        ]
+    out.append(r"\newpage")
+    return "\n".join(line for line in out if line)
+
+
+def _answer_line(label: str, part, marks: int) -> str:
+    prompt = tex(f"{label}{part.prompt}")
+    if part.kind == "mcq":
+        return f"{prompt}\\par\\nopagebreak Answer (A, B, C or D): \\gridbox \\partmarks{{{marks}}}"
+    line = f"{prompt} = \\answerline{{4.2cm}}\\ {_unit(part.unit)}"
+    if part.direction == "choice":
+        line += "\\par\\nopagebreak\\vspace{6pt}\\hfill direction: \\answerline{4.2cm}\\hspace{2.5em}"
+    return f"\\needspace{{3\\baselineskip}}{line}\\partmarks{{{marks}}}"
+
+
+def _part(question: Question, index: int, marks: int) -> str:
+    part, label = question.parts[index], question.label(index)
+    if part.kind == "mcq":
+        options = "\n".join(f"\\item {rich(option.text)}" for option in part.options)
+        return ("\\par\\vspace{4pt}" + tex(f"{label}{part.prompt}") + "\n"
+                "\\begin{enumerate}[label=\\textbf{\\Alph*}, itemsep=1pt, topsep=4pt]\n"
+                + options + "\n\\end{enumerate}\n" + r"Answer (A, B, C or D): \gridbox \partmarks{"
+                + str(marks) + "}\\par")
+    if part.kind == "explain":
+        return (f"\\par\\vspace{{4pt}}\\needspace{{4\\baselineskip}}{tex(label + part.prompt)}"
+                f"\\writinglines{{{LINES_PER_MARK * marks}}}\\vspace{{2pt}}\\partmarks{{{marks}}}\\par")
+    space = 0.6 if part.kind == "graph" else WORKING_CM_PER_MARK * marks
+    return (f"\\par\\needspace{{{format_number(space + 1.2, decimals=1)}cm}}\\vspace{{{format_number(space, decimals=1)}cm}}\n"
+            + _answer_line(label, part, marks) + "\\par")
+
+
+def question_sheet(sheet: Sheet, version: Version) -> str:
+    """The LaTeX of one version's question sheet."""
+    body = [_cover(sheet, version)]
+    for number, item in enumerate(version.items, start=1):
+        question = item.question
+        body.append(f"\\question{{{number}}}{rich(question.text)}")
+        if question.graph is not None:
+            body.append("\\par\\begin{center}\\includegraphics[width=0.78\\linewidth]{"
+                        + _graph_file(number) + "}\\end{center}")
+        for index, marks in enumerate(part_marks(question)):
+            body.append(_part(question, index, marks))
+        body.append(f"\\par\\vspace{{2pt}}\\hfill{{\\small\\itshape [Total for question {number}: "
+                    f"{_marks(question.marks)}]}}\\par")
+    body.append(r"\vspace{16pt}\begin{center}\textbf{End of the questions.}\end{center}")
+    return _document("\n\n".join(body), footer=f"Version {version.letter}", title=f"{sheet.title} (version {version.letter})")
+
+
+# ----------------------------------------------------------------------- the key
+
+
+_POWERS = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def ecf_note(question: Question, index: int) -> str:
+    """"ecf: a wrong answer to (a) carried forward earns these marks: (b) = (1200 − (a)) / 62,
+    worked with the student's own (a)" (plain text): the part's Ecf formula with the
+    givens' numbers in it."""
+    part = question.parts[index]
+    if part.ecf is None:
+        return ""
+    names = {sympy.Symbol(name): sympy.Symbol(working_number(value))
+             for name, value in part.ecf.values.items()}
+    names.update({sympy.Symbol(used): sympy.Symbol(f"({used})") for used in part.ecf.uses})
+    text = sympy.sstr(part.ecf.formula.xreplace(names))
+    text = re.sub(r"\*\*(\d+)", lambda m: m[1].translate(_POWERS), text)
+    text = text.replace("*", " × ").replace("/", " / ").replace("-", "−")
+    uses = ", ".join(f"({u})" for u in part.ecf.uses)
+    return (f"ecf: a wrong answer to {uses} carried forward earns these marks: "
+            f"({question.part_ids[index]}) = {text}, worked with the student's own {uses}.")
+
+
+def wrong_answers(part) -> list[tuple[str, str, str]]:
+    """(what the student wrote, the mistake, what it shows) for a numeric part: its named
+    mistakes, the g = 9.8 slip, rounding part-way and, for a signed part, the sign slip."""
+    rows = []
+    for mistake in part.mistakes:
+        if mistake.direction is not None:
+            written = f"{format_number(abs(part.value), part.shown_sig_figs)} {unit_text(part.unit)} {mistake.direction}"
+        else:
+            value = mistake.value if part.direction == "signed" else abs(mistake.value)
+            written = _value_with_unit(value, MISTAKE_SIG_FIGS, mistake.unit or part.unit)
+        rows.append((written, mistake.name, mistake.feedback))
+    if part.g_nine_eight is not None:
+        rows.append((_value_with_unit(part.g_nine_eight, MISTAKE_SIG_FIGS, part.unit), "used g = 9.8 m s⁻²",
+                     "The data give g = 9.81 m s⁻²: 9.8 is close but moves the third figure."))
+    for value, what in part.rounded_part_way:
+        rows.append((_value_with_unit(value, MISTAKE_SIG_FIGS, part.unit), "rounded part-way",
+                     f"Rounded {what} before the end: keep all the figures until the final answer."))
+    if part.direction == "signed" and part.value != 0:
+        rows.append((_value_with_unit(-part.value, part.shown_sig_figs, part.unit), "sign slip",
+                     f"The size is right but the sign is wrong: positive is {part.positive}."))
+    return rows
+
+
+def _key_part(question: Question, index: int, marks: int) -> list[str]:
+    part, label = question.parts[index], question.label(index) or "Answer "
+    out = []
+    if part.kind == "mcq":
+        right = part.options[OPTION_LETTERS.index(part.answer)]
+        out.append(f"\\textbf{{{tex(label)}{part.answer}: {rich(right.text)}}} \\hfill [{marks}]")
+        wrong = [(letter, option) for letter, option in zip(OPTION_LETTERS, part.options, strict=True)
+                 if letter != part.answer]
+        out.append("\\begin{itemize}[leftmargin=1.5em,itemsep=0pt,topsep=2pt]\n" + "\n".join(
+            f"\\item {letter} ({rich(option.text)}): \\emph{{{tex(option.mistake)}}}. {tex(option.feedback)}"
+            for letter, option in wrong) + "\n\\end{itemize}")
+        return out
+    if part.kind == "explain":
+        out.append(f"\\textbf{{{tex(label)}}}Model answer \\hfill [{marks}]\\par {rich(part.model_answer)}")
+        return out
+    answer = tex(part.answer_text)
+    if part.kind == "graph":
+        low, high = part.band
+        accept = (f" (read from the graph: accept {format_number(low, decimals=_places(part))} to "
+                  f"{format_number(high, decimals=_places(part))})")
+    else:
+        accept = f" (accept {part.min_sig_figs} or more significant figures)"
+    out.append(f"\\textbf{{{tex(label)}{tex(part.prompt)} = {answer}}}{tex(accept)} \\hfill [{marks}]")
+    if part.working:
+        steps = "; ".join(f"{step.name} = {_value_with_unit(step.value, step.sig_figs, step.unit)}"
+                          for step in part.working)
+        out.append("Working: " + tex(steps) + ".")
+    note = ecf_note(question, index)
+    if note:
+        out.append("\\emph{" + tex(note) + "}")
+    rows = wrong_answers(part)
+    if rows:
+        items = "\n".join(f"\\item \\textbf{{{tex(written)}}}: \\emph{{{tex(name)}}}. {tex(feedback)}"
+                          for written, name, feedback in rows)
+        out.append("\\textbf{Common wrong answers} (a student who wrote this made this mistake)\n"
+                   "{\\small\\begin{itemize}[leftmargin=1.5em,itemsep=1pt,topsep=2pt]\n"
+                   + items + "\n\\end{itemize}}")
+    return out
+
+
+def _mark_line(label: str, text: str, code: str) -> str:
+    line = "\\item "
+    if label:
+        line += "\\textbf{" + tex(label) + "} "
+    line += rich(text)
+    if code:
+        line += " \\textbf{" + code + "}"
+    return line
+
+
+def _places(part) -> int:
+    from ..questions import reading_places
+
+    return reading_places(part.tolerance)
+
+
+def answer_key(sheet: Sheet, version: Version) -> str:
+    """The LaTeX of one version's answer key."""
+    body = [
+        r"{\raggedright\sffamily\bfseries\LARGE " + tex(sheet.title) + r"\par}",
+        r"\vspace{4pt}{\sffamily\Large Answer key, version " + version.letter + r"\par}",
+        r"\vspace{6pt}",
+        tex(f"Total: {version.marks} marks. Seed {sheet.seed}. Mark codes as in Cambridge mark schemes: "
+            "C1 a calculation step (given when the final answer is right), M1 method, A1 accuracy "
+            "(the answer, to 2 or more significant figures), B1 an independent mark; ecf: error "
+            "carried forward (a later part worked correctly from the student's own wrong earlier "
+            "answer earns its marks; only the first error is penalised). " + DATA_LINE),
+    ]
+    for number, item in enumerate(version.items, start=1):
+        question = item.question
+        body.append(f"\\question{{{number}}}{{\\sffamily\\bfseries {tex(item.template.title)}}} "
+                    f"{{\\small ({tex(item.template.key)}, variant {item.variant})}} \\hfill "
+                    f"\\textbf{{[{_marks(question.marks)}]}}\\par")
+        body.append("{\\small " + rich(question.text) + "}")
+        for index, marks in enumerate(part_marks(question)):
+            body.append("\\par\\needspace{3\\baselineskip}" + "\n\n".join(_key_part(question, index, marks)))
+        lines = "\n".join(_mark_line(label, text, code) for label, text, code in question.mark_lines())
+        body.append("\\par\\needspace{3\\baselineskip}\\textbf{Mark scheme}\n"
+                    "\\begin{itemize}[leftmargin=1.5em,itemsep=0pt,topsep=2pt]\n" + lines + "\n\\end{itemize}")
+    return _document("\n\n".join(body), footer=f"Answer key, version {version.letter}",
+                     title=f"{sheet.title}: answer key (version {version.letter})")

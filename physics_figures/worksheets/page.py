@@ -1,0 +1,74 @@
+"""What the "For teachers" page (book/teachers.md) lists: every sheet `make worksheets`
+writes, its versions and keys, and the Moodle file `make moodle` writes, as links.
+
+The page shows ``teachers_files()`` in one cell. On the site it is an HTML table of links
+to ``../teachers/<file>`` (raw links, which Sphinx leaves alone: the files are made after
+the HTML build); in the PDF book, where those links cannot work, a list of the file names.
+"""
+
+from __future__ import annotations
+
+import html
+from dataclasses import dataclass
+
+from . import SITE_SEED, Sheet, bank_templates, site_sheets
+
+#: Where `make worksheets` and `make moodle` write, relative to the site's root, and from
+#: the page (book/teachers.html).
+FOLDER = "teachers"
+FROM_PAGE = f"../{FOLDER}/"
+MOODLE_FILE = "dynamics-moodle.xml"
+
+
+def sheet_files(sheet: Sheet) -> list[tuple[str, str]]:
+    """(question sheet, key) file names of every version of a sheet."""
+    return [(f"{sheet.name}-{v.letter}.pdf", f"{sheet.name}-key-{v.letter}.pdf") for v in sheet.versions]
+
+
+def site_files() -> list[str]:
+    """Every file the page links (what `make worksheets` and `make moodle` must write)."""
+    files = [name for sheet in site_sheets() for pair in sheet_files(sheet) for name in pair]
+    return [*files, MOODLE_FILE]
+
+
+@dataclass(frozen=True)
+class TeachersFiles:
+    sheets: tuple[Sheet, ...]
+
+    def _html(self) -> str:
+        rows = []
+        for sheet in self.sheets:
+            papers = " ".join(f'<a href="{FROM_PAGE}{paper}" download>Version {v.letter}</a>'
+                              for v, (paper, _) in zip(sheet.versions, sheet_files(sheet), strict=True))
+            keys = " ".join(f'<a href="{FROM_PAGE}{key}" download>Key {v.letter}</a>'
+                            for v, (_, key) in zip(sheet.versions, sheet_files(sheet), strict=True))
+            rows.append(f"<tr><td>{html.escape(sheet.title)}</td><td>{len(sheet.templates)}</td>"
+                        f"<td>{sheet.marks}</td><td>{papers}</td><td>{keys}</td></tr>")
+        templates = bank_templates()
+        variants = sum(len(t.values) for t in templates)
+        return (
+            '<table class="table teachers-sheets">'
+            "<caption>Worksheets (PDF, A4): each version with its own answer key</caption>"
+            '<thead><tr><th scope="col">Sheet</th><th scope="col">Questions</th>'
+            '<th scope="col">Marks</th><th scope="col">Versions</th><th scope="col">Answer keys</th>'
+            "</tr></thead><tbody>" + "".join(rows) + "</tbody></table>\n"
+            f'<p><a href="{FROM_PAGE}{MOODLE_FILE}" download>The question bank for Moodle '
+            f"(Moodle XML)</a>: {len(templates)} templates, {variants} variants in all.</p>")
+
+    def _markdown(self) -> str:
+        lines = [(f"The worksheets are files of the website's `{FOLDER}/` folder "
+                 f"(seed {SITE_SEED}):"), ""]
+        for sheet in self.sheets:
+            names = ", ".join(f"`{paper}` with `{key}`" for paper, key in sheet_files(sheet))
+            lines.append(f"- {sheet.title} ({len(sheet.templates)} questions, {sheet.marks} marks): {names}")
+        lines += ["", f"The question bank for Moodle: `{FOLDER}/{MOODLE_FILE}`."]
+        return "\n".join(lines) + "\n"
+
+    def _repr_mimebundle_(self, include=None, exclude=None) -> dict[str, str]:
+        return {"text/html": self._html(), "text/markdown": self._markdown(),
+                "text/plain": self._markdown()}
+
+
+def teachers_files() -> TeachersFiles:
+    """The page's list of sheets, keys and the Moodle file."""
+    return TeachersFiles(tuple(site_sheets()))

@@ -1,0 +1,232 @@
+# ruff: noqa: RUF002  (the docstring quotes typeset text: times and divide signs)
+"""A structural check of a Moodle XML question file against Moodle's documented format
+(docs.moodle.org/en/Moodle_XML_format, and what qformat_xml reads), plus the marking rules
+the book gives the export. Returns a list of problems (empty: the file is sound).
+
+What it checks, question by question:
+- every question has a type Moodle knows, a name, a question text and a default grade;
+- category entries come before their questions and every question sits in a category;
+- every <text> holding HTML parses as HTML with balanced tags, holds no raw TeX ($, \\frac,
+  ^{...}) and no tag outside the book's text format plus the few the export adds;
+- numerical: each answer has a fraction among Moodle's grades, a number, a tolerance and
+  feedback; exactly one right answer, after the named mistakes; the right answer at 2, 3
+  and 4 s.f. (a reading from a graph: at 4 s.f.) reaches the right answer first (Moodle takes the first range that holds a
+  response, and adds its own tiny slack), each named mistake at 3 s.f. reaches itself first;
+  ×10, ÷10 and a sign slip are not right; units are written without spaces;
+- multichoice: single answer, one 100 % option, feedback on every option;
+- essay: grader information with the mark codes;
+- images: every @@PLUGINFILE@@ file named in a text is embedded in that text's <file>
+  (base64 that decodes to a PNG or SVG), and every image has alt text.
+"""
+
+from __future__ import annotations
+
+import base64
+import math
+import re
+import xml.etree.ElementTree as ET
+from html.parser import HTMLParser
+
+#: Moodle's allowed grades (question/engine/bank.php, fraction_options_full), in per cent.
+MOODLE_GRADES = {100, 90, 83.33333, 80, 75, 70, 66.66667, 60, 50, 40, 33.33333, 30, 25, 20,
+                 16.66667, 14.28571, 12.5, 11.11111, 10, 5, 0}
+QUESTION_TYPES = {"category", "numerical", "multichoice", "essay", "cloze", "shortanswer",
+                  "truefalse", "description", "matching"}
+#: The book's text format (physics_figures.textformat) and what the export wraps it in.
+ALLOWED_TAGS = {"p", "sup", "sub", "em", "strong", "ul", "li", "img"}
+VOID_TAGS = {"img"}
+RAW_TEX = re.compile(r"\$|\\frac|\\times|\^\{|_\{")
+
+
+class _Html(HTMLParser):
+    def __init__(self):
+        super().__init__(convert_charrefs=True)
+        self.stack: list[str] = []
+        self.problems: list[str] = []
+        self.images: list[dict] = []
+
+    def handle_starttag(self, tag, attrs):
+        if tag not in ALLOWED_TAGS:
+            self.problems.append(f"tag <{tag}>")
+        if tag == "img":
+            self.images.append(dict(attrs))
+        elif tag not in VOID_TAGS:
+            self.stack.append(tag)
+
+    def handle_endtag(self, tag):
+        if not self.stack or self.stack[-1] != tag:
+            self.problems.append(f"unbalanced </{tag}>")
+        else:
+            self.stack.pop()
+
+
+def check_html(text: str) -> tuple[list[str], list[dict]]:
+    parser = _Html()
+    parser.feed(text)
+    parser.close()
+    problems = parser.problems + [f"<{tag}> left open" for tag in parser.stack]
+    if RAW_TEX.search(text):
+        problems.append("raw TeX in the text")
+    return problems, parser.images
+
+
+def _text(element: ET.Element | None, tag: str) -> str | None:
+    if element is None:
+        return None
+    found = element.find(f"{tag}/text")
+    return None if found is None else (found.text or "")
+
+
+def _ranges(question: ET.Element) -> list[tuple[float, float, float, str]]:
+    out = []
+    for answer in question.findall("answer"):
+        value = float(answer.findtext("text"))
+        width = float(answer.findtext("tolerance") or 0)
+        out.append((float(answer.get("fraction")), value - width, value + width, answer.findtext("text")))
+    return out
+
+
+def _first_match(ranges, response: float):
+    """Moodle: the first answer whose range (plus its slack of 1e-14 relative) holds the response."""
+    for fraction, low, high, text in ranges:
+        slack = 1e-14 * max(abs(low), abs(high), 1e-14)
+        if low - slack <= response <= high + slack:
+            return fraction, text
+    return None
+
+
+def _round(value: float, sig_figs: int) -> float:
+    return float(format(value, f".{sig_figs}g"))
+
+
+def check_question(question: ET.Element, where: str) -> list[str]:
+    kind = question.get("type")
+    problems = []
+    say = problems.append
+    if kind not in QUESTION_TYPES:
+        return [f"{where}: type {kind!r} is not a Moodle question type"]
+    name = _text(question, "name")
+    if not name:
+        say(f"{where}: no name")
+    where = f"{where} {name!r}"
+    text_element = question.find("questiontext")
+    text = _text(question, "questiontext")
+    if not text:
+        say(f"{where}: no question text")
+        return problems
+    if question.findtext("defaultgrade") is None or float(question.findtext("defaultgrade")) <= 0:
+        say(f"{where}: no positive defaultgrade")
+    html_problems, images = check_html(text)
+    problems += [f"{where}: question text: {p}" for p in html_problems]
+    files = {f.get("name"): f.text or "" for f in text_element.findall("file")}
+    for image in images:
+        source = image.get("src", "")
+        if not image.get("alt"):
+            say(f"{where}: an image without alt text")
+        if not source.startswith("@@PLUGINFILE@@/"):
+            say(f"{where}: image {source!r} is not embedded (@@PLUGINFILE@@)")
+            continue
+        data = files.get(source.removeprefix("@@PLUGINFILE@@/"))
+        if data is None:
+            say(f"{where}: image {source!r} has no <file> in the question text")
+            continue
+        raw = base64.b64decode(data, validate=True)
+        if not (raw.startswith(b"\x89PNG\r\n\x1a\n") or b"<svg" in raw[:400]):
+            say(f"{where}: image {source!r} is neither PNG nor SVG")
+    general = _text(question, "generalfeedback")
+    if general:
+        problems += [f"{where}: general feedback: {p}" for p in check_html(general)[0]]
+    if kind == "numerical":
+        problems += _check_numerical(question, where)
+    elif kind == "multichoice":
+        problems += _check_multichoice(question, where)
+    elif kind == "essay":
+        grader = _text(question, "graderinfo")
+        if not grader or not re.search(r"\b[ABCM]1\b", grader):
+            say(f"{where}: essay without grader information with the mark codes")
+    return problems
+
+
+def _check_answers_feedback(question, where) -> list[str]:
+    problems = []
+    answers = question.findall("answer")
+    if not answers:
+        problems.append(f"{where}: no answers")
+    for answer in answers:
+        fraction = float(answer.get("fraction", "nan"))
+        if not any(math.isclose(fraction, grade, abs_tol=1e-5) for grade in MOODLE_GRADES):
+            problems.append(f"{where}: grade {fraction} is not one of Moodle's")
+        if not _text(answer, "feedback"):
+            problems.append(f"{where}: answer {answer.findtext('text')!r} has no feedback")
+        else:
+            problems += [f"{where}: feedback: {p}" for p in check_html(_text(answer, "feedback"))[0]]
+    return problems
+
+
+def _check_numerical(question, where) -> list[str]:
+    problems = _check_answers_feedback(question, where)
+    ranges = _ranges(question)
+    right = [r for r in ranges if r[0] == 100]
+    if len(right) != 1:
+        return [*problems, f"{where}: {len(right)} right answers, not 1"]
+    if ranges[-1][0] != 100:
+        problems.append(f"{where}: the right answer is not after the named mistakes")
+    text = right[0][3]
+    value = float(text)
+    # a calculation is right at 2 s.f. or more (the export's questions say when a value is
+    # read from the graph instead: that is right within half a small square)
+    calculation = "read from the graph" not in (_text(question, "questiontext") or "")
+    for sig_figs in (2, 3, 4) if calculation else (4,):
+        typed = _round(value, sig_figs)
+        if _first_match(ranges, typed) != (100, text):
+            problems.append(f"{where}: the right answer {value:g} at {sig_figs} s.f. ({typed:g}) is not "
+                            "marked right")
+    for slip in (value * 10, value / 10, -value):  # a signed part names its sign slip (0 %)
+        if slip != value and (_first_match(ranges, slip) or (0, ""))[0] == 100:
+            problems.append(f"{where}: the slip {slip:g} is marked right")
+    for fraction, mistake_low, mistake_high, mistake in ranges[:-1]:
+        if fraction == 100:
+            continue
+        typed = _round(float(mistake), 3)
+        if _first_match(ranges, typed) != (fraction, mistake):
+            problems.append(f"{where}: the named mistake {mistake} is never reached")
+        if mistake_high <= mistake_low:
+            problems.append(f"{where}: the named mistake {mistake} has no tolerance")
+    units = [u.findtext("unit_name") for u in question.findall("units/unit")]
+    if not units:
+        problems.append(f"{where}: no unit")
+    problems += [f"{where}: unit {u!r} has a space" for u in units if u is None or " " in u]
+    return problems
+
+
+def _check_multichoice(question, where) -> list[str]:
+    problems = _check_answers_feedback(question, where)
+    if question.findtext("single") != "true":
+        problems.append(f"{where}: not a single-answer multichoice")
+    fractions = [float(a.get("fraction")) for a in question.findall("answer")]
+    if fractions.count(100) != 1:
+        problems.append(f"{where}: {fractions.count(100)} options at 100 %, not 1")
+    for answer in question.findall("answer"):
+        problems += [f"{where}: option: {p}" for p in check_html(answer.findtext("text") or "")[0]]
+    return problems
+
+
+def check_file(root: ET.Element) -> tuple[list[str], dict[str, list[ET.Element]]]:
+    """Problems, and the questions of each category path."""
+    problems = []
+    if root.tag != "quiz":
+        return [f"the root element is <{root.tag}>, not <quiz>"], {}
+    categories: dict[str, list[ET.Element]] = {}
+    current = None
+    for number, question in enumerate(root.findall("question"), start=1):
+        if question.get("type") == "category":
+            current = question.findtext("category/text")
+            if not current or not current.startswith("$course$/top/"):
+                problems.append(f"question {number}: category {current!r} is not under $course$/top/")
+            categories.setdefault(current, [])
+            continue
+        if current is None:
+            problems.append(f"question {number}: before any category")
+        problems += check_question(question, f"question {number}")
+        categories.setdefault(current, []).append(question)
+    return problems, categories

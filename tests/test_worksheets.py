@@ -1,0 +1,241 @@
+"""The teacher's kit (physics_figures.worksheets): versions, marks, the command line and the
+Moodle export. Fast tests here; tests/test_worksheets_pdf.py reads the typeset PDFs."""
+
+from __future__ import annotations
+
+import math
+import re
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+from moodle_format import check_file
+
+from physics_figures import bank, worksheets
+from physics_figures.variants import QUESTION_TYPES
+from physics_figures.worksheets import (
+    EXAM_QUESTION_COUNTS,
+    bank_templates,
+    choose_templates,
+    part_marks,
+    plan,
+    select,
+    site_sheets,
+    template_marks,
+)
+from physics_figures.worksheets import moodle as moodle_export
+from physics_figures.worksheets.__main__ import main
+from physics_figures.worksheets.latex import answer_key, ecf_note, question_sheet, wrong_answers
+
+ROOT = Path(__file__).resolve().parents[1]
+TEMPLATES = bank_templates()
+
+
+def test_exam_weights_are_the_how_to_pages_table():
+    """The end-of-topic test is weighted by the counts the book prints (from the notes)."""
+    page = (ROOT / "book" / "exam" / "how-to.md").read_text()
+    counts = [int(n) for n in re.findall(r"^\s+- (\d+)\s*$", page, re.MULTILINE)]
+    assert counts == list(EXAM_QUESTION_COUNTS.values())
+    assert list(EXAM_QUESTION_COUNTS) == list(QUESTION_TYPES)
+
+
+@pytest.mark.parametrize("template", TEMPLATES, ids=lambda t: t.key)
+def test_every_variant_of_a_template_has_the_same_marks_per_part(template):
+    """Versions agree in their marks only if a template's marks never depend on its numbers."""
+    first = part_marks(template.variant(0))
+    for question in template.variants:
+        assert part_marks(question) == first
+        assert sum(first) == question.marks == template_marks(template)
+
+
+def test_versions_have_the_same_templates_and_different_variants():
+    sheet = plan("s", "S", select(types=["drag", "force-momentum"]), versions=3, seed=7)
+    keys = [tuple(i.template.key for i in v.items) for v in sheet.versions]
+    assert len(set(keys)) == 1
+    assert len({v.marks for v in sheet.versions}) == 1
+    for position in range(len(sheet.templates)):
+        variants = [v.items[position].variant for v in sheet.versions]
+        assert len(set(variants)) == 3, "two versions share a variant"
+        assert 0 not in variants, "a version uses the book's printed numbers"
+
+
+def test_the_same_seed_gives_the_same_sheet_and_another_seed_another():
+    def drawn(seed):
+        sheet = plan("s", "S", TEMPLATES, versions=3, seed=seed, marks=30)
+        return [[(i.template.key, i.variant) for i in v.items] for v in sheet.versions]
+
+    assert drawn(2027) == drawn(2027)
+    assert drawn(2027) != drawn(2028)
+
+
+@pytest.mark.parametrize("marks", [10, 25, 40])
+def test_chosen_templates_make_exactly_the_marks_and_follow_the_exam_weights(marks):
+    chosen = choose_templates(TEMPLATES, marks, seed=1)
+    assert sum(template_marks(t) for t in chosen) == marks
+    if marks == 40:
+        total = sum(EXAM_QUESTION_COUNTS.values())
+        for question_type, count in EXAM_QUESTION_COUNTS.items():
+            got = sum(template_marks(t) for t in chosen if t.type == question_type)
+            available = sum(template_marks(t) for t in TEMPLATES if t.type == question_type)
+            # each type within a question's marks of its share (or all it has)
+            assert abs(got - min(available, 40 * count / total)) <= 5, question_type
+
+
+def test_site_sheets_are_one_per_type_and_the_40_mark_test():
+    sheets = site_sheets()
+    assert [s.name for s in sheets] == [f"worksheet-{t}" for t in QUESTION_TYPES] + ["end-of-topic-test"]
+    assert sheets[-1].marks == worksheets.END_OF_TOPIC_MARKS
+    for sheet in sheets[:-1]:
+        question_type = sheet.name.removeprefix("worksheet-")
+        assert {t.key for t in sheet.templates} == {t.key for t in bank.by_type(question_type)}
+    assert all([v.letter for v in s.versions] == ["A", "B", "C"] for s in sheets)
+
+
+# ------------------------------------------------------------------ the LaTeX
+
+
+def test_sheet_has_cover_marks_total_and_data_line_and_no_answers():
+    sheet = plan("s", "A test", select(types=["drag"]), versions=1, seed=3)
+    version = sheet.versions[0]
+    tex = question_sheet(sheet, version)
+    for field in ("Name", "Class", "Date"):
+        assert f"{field} & \\answerline" in tex
+    assert f"Total: {version.marks} marks" in tex
+    assert "take g = 9.81 m s⁻²" in tex
+    printed = [int(n) for n in re.findall(r"\\partmarks\{(\d+)\}", tex)]
+    assert sum(printed) == version.marks
+    assert "Multiple-choice answer grid" in tex  # drag has a multiple-choice item
+    assert "C1" not in tex and "A1" not in tex
+
+
+def test_key_gives_answers_mark_codes_ecf_and_wrong_answers():
+    sheet = plan("s", "A test", select(templates=["quick-check-3"]), versions=1, seed=3)
+    version = sheet.versions[0]
+    tex = answer_key(sheet, version)
+    question = version.items[0].question
+    for part in question.parts:
+        assert part.answer_text in tex
+    for code in ("B1", "C1", "A1"):
+        assert f"\\textbf{{{code}}}" in tex
+    assert "ecf: a wrong answer to (a)" in tex
+    rows = wrong_answers(question.parts[1])
+    names = [name for _, name, _ in rows]
+    assert "used g = 10 m s⁻²" in names and "drag used as the resultant force" in names
+    assert ecf_note(question, 0) == ""
+
+
+def test_g_equals_ten_wrong_answer_is_the_models_value():
+    """The issue's example: 70 kg, 1500 N gives 11.4 m s⁻² with g = 10."""
+    question = bank.TEMPLATES["quick-check-3"].variant(0)
+    rows = {name: written for written, name, _ in wrong_answers(question.parts[1])}
+    g_ten = next(m for m in question.parts[1].mistakes if m.name == "used g = 10 m s⁻²")
+    assert rows["used g = 10 m s⁻²"] == f"{worksheets.latex.format_number(g_ten.value, 3)} m s⁻²"
+
+
+# ---------------------------------------------------------------- the command line
+
+
+def _run(capsys, *argv) -> tuple[int, str]:
+    code = main(list(argv))
+    return code, capsys.readouterr().err
+
+
+@pytest.mark.parametrize(("argv", "names"), [
+    (["--types", "drag,gravity"], ["types", "'gravity'", "newton"]),
+    (["--templates", "quick-check-9"], ["templates", "'quick-check-9'", "--list"]),
+    (["--types", "elastic", "--marks", "30"], ["marks", "30", "elastic"]),
+    (["--types", "drag,two-d", "--marks", "400"], ["marks", "400"]),
+    (["--templates", "terminal-velocity-explained", "--versions", "5"], ["versions", "terminal-velocity-explained has 4"]),
+    (["--types", "drag", "--versions", "0"], ["versions", "1 to 26"]),
+    ([], ["types or templates"]),
+])
+def test_cli_errors_name_what_is_wrong(capsys, tmp_path, argv, names):
+    out = tmp_path / "never-written"
+    code, err = _run(capsys, *argv, "--out", str(out))
+    assert code == 2
+    assert err.startswith("error: ")
+    for name in names:
+        assert name in err, err
+    assert not out.exists()
+
+
+def test_cli_lists_the_bank(capsys):
+    assert main(["--list"]) == 0
+    out = capsys.readouterr().out
+    for template in TEMPLATES:
+        assert template.key in out
+
+
+def test_cli_runs_as_a_module():
+    result = subprocess.run([sys.executable, "-m", "physics_figures.worksheets", "--types", "nope"],
+                            capture_output=True, text=True, check=False)
+    assert result.returncode == 2 and "nope" in result.stderr
+
+
+# -------------------------------------------------------------------- Moodle
+
+
+@pytest.fixture(scope="module")
+def small_export():
+    """A few templates, one of each kind: numbers, a direction, multiple choice, explain, a graph."""
+    keys = ["quick-check-3", "parachute-opens-choice", "terminal-velocity-explained",
+            "graph-skydiver-terminal", "quick-check-4", "practice-pucks"]
+    tree, count = moodle_export.export([bank.TEMPLATES[k] for k in keys])
+    text = ET.tostring(tree.getroot(), encoding="unicode")
+    return ET.fromstring(text), count
+
+
+def test_moodle_export_passes_the_structural_check(small_export):
+    root, count = small_export
+    problems, _categories = check_file(root)
+    assert not problems, "\n".join(problems[:20])
+    assert {"numerical", "multichoice", "essay"} <= set(count)
+
+
+def test_moodle_has_a_category_per_type_and_every_variant_of_each_part(small_export):
+    root, _ = small_export
+    _, categories = check_file(root)
+    root_path = moodle_export.ROOT_CATEGORY
+    assert f"{root_path}/{worksheets.TYPE_TITLES['drag']}" in categories
+    template = bank.TEMPLATES["quick-check-3"]
+    first = template.variant(0)
+    for index, part in enumerate(first.parts):
+        path = f"{root_path}/{worksheets.TYPE_TITLES['drag']}/{template.title} {first.label(index)}{part.prompt}"
+        numerical = [q for q in categories[path] if q.get("type") == "numerical"]
+        assert len(numerical) == len(template.values) >= moodle_export.MOODLE_MIN_VARIANTS
+    explain = bank.TEMPLATES["terminal-velocity-explained"]
+    essays = [q for q in root.iter("question") if q.get("type") == "essay"]
+    assert len(essays) == len(explain.values)  # fewer than 10 situations: every one
+
+
+def test_moodle_numerical_tolerance_is_half_a_unit_in_the_second_figure(small_export):
+    root, _ = small_export
+    question = next(q for q in root.iter("question") if q.findtext("idnumber") == "quick-check-3-v0-b")
+    right = next(a for a in question.findall("answer") if a.get("fraction") == "100")
+    value = float(right.findtext("text"))
+    assert math.isclose(float(right.findtext("tolerance")), 0.5 * 10 ** (math.floor(math.log10(value)) - 1))
+    feedback = [a.findtext("feedback/text") for a in question.findall("answer")]
+    assert any("g = 10" in f for f in feedback[:-1]), "the g = 10 mistake comes before the right answer"
+    units = {u.findtext("unit_name") for u in question.findall("units/unit")}
+    assert {"ms^-2", "m/s^2", "ms⁻²"} <= units
+
+
+def test_moodle_check_catches_a_broken_file(small_export):
+    """The structural check can fail: a mistake after the right answer, a missing image and
+    an option without feedback are each found."""
+    root, _ = small_export
+    broken = ET.fromstring(ET.tostring(root))
+    numerical = next(q for q in broken.iter("question") if q.get("type") == "numerical")
+    answers = numerical.findall("answer")
+    numerical.remove(answers[0])
+    numerical.append(answers[0])
+    graph = next(q for q in broken.iter("question") if q.find("questiontext/file") is not None)
+    graph.find("questiontext").remove(graph.find("questiontext/file"))
+    choice = next(q for q in broken.iter("question") if q.get("type") == "multichoice")
+    choice.find("answer/feedback/text").text = ""
+    problems = "\n".join(check_file(broken)[0])
+    assert "not after the named mistakes" in problems
+    assert "has no <file>" in problems
+    assert "has no feedback" in problems

@@ -36,21 +36,26 @@ class TeachersFiles:
     sheets: tuple[Sheet, ...]
 
     def _html(self) -> str:
+        # One row per sheet and one column per version, each cell the sheet and its key:
+        # four narrow columns, so the table fits a 390 px phone.
+        letters = [v.letter for v in self.sheets[0].versions]
         rows = []
         for sheet in self.sheets:
-            papers = " ".join(f'<a href="{FROM_PAGE}{paper}" download>Version {v.letter}</a>'
-                              for v, (paper, _) in zip(sheet.versions, sheet_files(sheet), strict=True))
-            keys = " ".join(f'<a href="{FROM_PAGE}{key}" download>Key {v.letter}</a>'
-                            for v, (_, key) in zip(sheet.versions, sheet_files(sheet), strict=True))
-            rows.append(f"<tr><td>{html.escape(sheet.title)}</td><td>{len(sheet.templates)}</td>"
-                        f"<td>{sheet.marks}</td><td>{papers}</td><td>{keys}</td></tr>")
+            title = html.escape(sheet.title)
+            short = html.escape(sheet.title.removeprefix("Worksheet: "))  # the column says "Sheet"
+            cells = "".join(
+                f'<td><a href="{FROM_PAGE}{paper}" download aria-label="Sheet {v.letter}: {title}">Sheet</a>'
+                f'<br><a href="{FROM_PAGE}{key}" download aria-label="Key {v.letter}: {title}">Key</a></td>'
+                for v, (paper, key) in zip(sheet.versions, sheet_files(sheet), strict=True))
+            rows.append(f'<tr><th scope="row">{short}<br><small>{len(sheet.templates)} questions, '
+                        f"{sheet.marks} marks</small></th>{cells}</tr>")
         templates = bank_templates()
         variants = sum(len(t.values) for t in templates)
+        versions = "".join(f'<th scope="col">Version {letter}</th>' for letter in letters)
         return (
             '<table class="table teachers-sheets">'
             "<caption>Worksheets (PDF, A4): each version with its own answer key</caption>"
-            '<thead><tr><th scope="col">Sheet</th><th scope="col">Questions</th>'
-            '<th scope="col">Marks</th><th scope="col">Versions</th><th scope="col">Answer keys</th>'
+            f'<thead><tr><th scope="col">Sheet</th>{versions}'
             "</tr></thead><tbody>" + "".join(rows) + "</tbody></table>\n"
             f'<p><a href="{FROM_PAGE}{MOODLE_FILE}" download>The question bank for Moodle '
             f"(Moodle XML)</a>: {len(templates)} templates, {variants} variants in all.</p>")

@@ -1,6 +1,6 @@
 """Turn a physics_figures figure output into a numbered, captioned, alt-texted figure.
 
-A figure cell's output (``physics_figures.figures.book.BookFigure``) is a mime
+A figure cell's output (``physics_figures.figures.book_figure.BookFigure``) is a mime
 bundle: the image as SVG and PDF, the alt text as ``text/plain``, and the caption
 as ``text/markdown`` that starts with the MyST comment ``% physics-figure <name>``.
 myst-nb renders every format into the doctree and picks one per builder later
@@ -22,7 +22,7 @@ from sphinx.application import Sphinx
 from sphinx.transforms import SphinxTransform
 from sphinx.util import logging
 
-from physics_figures.figures.book import FIGURE_MARKER
+from physics_figures.figures.book_figure import FIGURE_MARKER
 
 logger = logging.getLogger(__name__)
 

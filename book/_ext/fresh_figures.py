@@ -1,17 +1,34 @@
-"""Never serve a stale figure: re-execute pages when physics_figures changes.
+"""Never serve a stale figure, and re-execute only the pages a physics_figures edit touches.
 
-myst-nb's execution cache is keyed on a page's own code cells, so editing a model or
-a figure function would leave the cached (old) outputs in place. This extension
-hashes the source of the physics_figures package the kernel imports; when the hash
-differs from the last successful build it drops the execution cache and marks every
-page outdated, so each one is read and executed again.
+A page depends on the physics_figures modules its code cells import, and on those the
+Sphinx directives it uses import while it is read ({question}, {explorable}, ...), each
+with everything they import in turn. ``ImportGraph`` finds them statically (``ast`` over the
+page's cells and the package's files, relative imports resolved; the package
+``__init__`` files Python runs on the way count too), and a page's *digest* is the
+SHA-256 of those files' paths and bytes. Two things follow from it:
+
+* A page with code cells gets one more cell at source-read: hidden (``remove-cell``), it
+  carries the digest of the modules its kernel imports. myst-nb's execution cache
+  (jupyter-cache) matches a notebook on its cells' source, so the cached outputs are
+  used exactly while those modules are unchanged; any change to them is a cache miss and
+  the page executes again. Undoing the edit finds the old outputs in the cache again.
+* Every page's modules (kernel and directives) are kept in the environment with their
+  digest; at the next build, a page whose digest has changed is re-read (and so
+  re-executed if its kernel modules changed). It is a comparison of contents, not of
+  mtimes, so a checkout or a copy never leaves a page stale.
+
+Nothing else changes a page: an edit to ``figures/collisions.py`` re-runs the pages that
+draw a collision and no other. No page glues a value from another page (``{glue:}``
+with ``page::key``); if one did, it would have to import what that page imports.
+Directives say what they use with :func:`uses_modules`.
 """
 
 from __future__ import annotations
 
+import ast
 import hashlib
 import importlib.util
-import shutil
+from collections.abc import Iterable
 from pathlib import Path
 
 from sphinx.application import Sphinx
@@ -19,54 +36,212 @@ from sphinx.util import logging
 
 logger = logging.getLogger(__name__)
 
-STAMP_NAME = "physics_figures.sha256"
+PACKAGE = "physics_figures"
+#: Read by every page: the notation extension joins numbers and units on every page.
+EVERY_PAGE = (f"{PACKAGE}.notation",)
+#: The first line of the hidden cell that carries a page's digest.
+CELL_MARK = "# fresh_figures: the physics_figures modules this page imports (sha256):"
+ENV_ATTR = "fresh_figures_modules"  # {docname: {"modules": [...], "digest": "..."}}
 
 
-def package_digest(package: str = "physics_figures") -> str:
-    """SHA-256 over the relative path and bytes of every source file of `package`."""
-    spec = importlib.util.find_spec(package)
-    if spec is None or not spec.submodule_search_locations:
-        raise RuntimeError(f"cannot find the {package!r} package: is it installed (pip install -e .)?")
-    root = Path(next(iter(spec.submodule_search_locations)))
-    digest = hashlib.sha256()
-    for path in sorted(root.rglob("*")):
-        if path.is_file() and "__pycache__" not in path.parts:
-            digest.update(path.relative_to(root).as_posix().encode())
-            digest.update(path.read_bytes())
-    return digest.hexdigest()
+class ImportGraph:
+    """Which modules of `package` a piece of code imports, directly or through others."""
+
+    def __init__(self, package: str = PACKAGE) -> None:
+        spec = importlib.util.find_spec(package)
+        if spec is None or not spec.submodule_search_locations:
+            raise RuntimeError(f"cannot find the {package!r} package: is it installed (pip install -e .)?")
+        self.package = package
+        self.root = Path(next(iter(spec.submodule_search_locations)))
+        self._direct: dict[str, frozenset[str]] = {}
+
+    def path(self, module: str) -> Path | None:
+        """The file Python runs for `module` (a package's ``__init__.py``), or None."""
+        parts = module.split(".")
+        if parts[0] != self.package:
+            return None
+        base = self.root.joinpath(*parts[1:])
+        if (base / "__init__.py").is_file():
+            return base / "__init__.py"
+        if len(parts) > 1 and base.with_suffix(".py").is_file():
+            return base.with_suffix(".py")
+        return None
+
+    def every_module(self) -> set[str]:
+        found = set()
+        for path in self.root.rglob("*.py"):
+            if "__pycache__" in path.parts:
+                continue
+            parts = [self.package, *path.relative_to(self.root).with_suffix("").parts]
+            found.add(".".join(parts[:-1] if parts[-1] == "__init__" else parts))
+        return found
+
+    def imports(self, tree: ast.AST, module: str | None = None) -> set[str]:
+        """Modules of the package that `tree` imports anywhere (at top level or inside a
+        function: either may run), with their parent packages. `module` is the code's own
+        module name, for relative imports (None: a page's cell, which has none)."""
+        names: set[str] = set()
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Import):
+                for alias in node.names:
+                    names |= _with_parents(alias.name)
+            elif isinstance(node, ast.ImportFrom):
+                if node.level:
+                    if module is None:
+                        continue
+                    here = module.split(".")
+                    if self.path(module).name != "__init__.py":
+                        here = here[:-1]  # a plain module's relative imports start at its package
+                    here = here[: len(here) - (node.level - 1)]
+                    base = ".".join(here + ([node.module] if node.module else []))
+                else:
+                    base = node.module
+                names |= _with_parents(base)
+                for alias in node.names:  # `from package import module`
+                    if alias.name != "*":
+                        names.add(f"{base}.{alias.name}")
+        return {name for name in names if self.path(name) is not None}
+
+    def direct(self, module: str) -> frozenset[str]:
+        if module not in self._direct:
+            tree = ast.parse(self.path(module).read_bytes(), filename=str(self.path(module)))
+            self._direct[module] = frozenset(self.imports(tree, module) - {module})
+        return self._direct[module]
+
+    def closure(self, modules: Iterable[str]) -> set[str]:
+        """`modules` (with their parent packages) and everything they import, transitively."""
+        todo = {parent for module in modules for parent in _with_parents(module) if self.path(parent)}
+        seen: set[str] = set()
+        while todo:
+            module = todo.pop()
+            if module not in seen:
+                seen.add(module)
+                todo |= self.direct(module) - seen
+        return seen
+
+    def digest(self, modules: Iterable[str]) -> str:
+        """SHA-256 over the relative path and bytes of every file of the closure of `modules`."""
+        digest = hashlib.sha256()
+        for path in sorted(self.path(module) for module in self.closure(modules)):
+            digest.update(path.relative_to(self.root).as_posix().encode() + b"\0")
+            digest.update(path.read_bytes() + b"\0")
+        return digest.hexdigest()
+
+    def imported_by_cells(self, sources: Iterable[str]) -> set[str]:
+        """The package's modules that code cells import. A cell Python cannot parse (after
+        dropping IPython's magics and shell lines) counts as importing every module."""
+        found: set[str] = set()
+        for source in sources:
+            code = "\n".join("" if line.lstrip().startswith(("%", "!")) else line
+                             for line in source.splitlines())
+            try:
+                found |= self.imports(ast.parse(code))
+            except SyntaxError:
+                return self.every_module()
+        return found
 
 
-def _stamp(app: Sphinx) -> Path:
-    return Path(app.doctreedir) / STAMP_NAME
+def _with_parents(module: str) -> set[str]:
+    parts = module.split(".")
+    return {".".join(parts[: i + 1]) for i in range(len(parts))}
 
 
-def _check_package(app: Sphinx, config) -> None:
-    app._physics_figures_digest = package_digest()
-    stamp = _stamp(app)
-    previous = stamp.read_text().strip() if stamp.exists() else None
-    app._physics_figures_changed = previous != app._physics_figures_digest
-    if app._physics_figures_changed:
-        cache = Path(config.nb_execution_cache_path or Path(app.outdir).parent / ".jupyter_cache")
-        if cache.exists():
-            logger.info("physics_figures changed: dropping the execution cache %s", cache)
-            shutil.rmtree(cache)
+# ---------------------------------------------------------------- in the Sphinx build
 
 
-def _outdate_everything(app: Sphinx, env, added, changed, removed):
-    if getattr(app, "_physics_figures_changed", False):
-        return sorted(env.found_docs - added - changed - removed)
-    return []
+def _graph(app: Sphinx) -> ImportGraph:
+    """One graph a build (the files do not change while it runs)."""
+    if getattr(app, "_fresh_figures_graph", None) is None:
+        app._fresh_figures_graph = ImportGraph()
+    return app._fresh_figures_graph
 
 
-def _save_stamp(app: Sphinx, exception) -> None:
-    # Only a build that finished records the hash; a failed one is retried in full.
-    if exception is None:
-        _stamp(app).parent.mkdir(parents=True, exist_ok=True)
-        _stamp(app).write_text(app._physics_figures_digest + "\n")
+def _records(env) -> dict[str, dict]:
+    if not hasattr(env, ENV_ATTR):
+        setattr(env, ENV_ATTR, {})
+    return getattr(env, ENV_ATTR)
+
+
+def _record(env, docname: str, modules: Iterable[str]) -> None:
+    record = _records(env).setdefault(docname, {"modules": set(EVERY_PAGE), "digest": ""})
+    record["modules"] |= set(modules)
+    record["digest"] = _graph(env.app).digest(record["modules"])
+
+
+def uses_modules(env, *modules: str) -> None:
+    """A directive of the page being read calls this with the physics_figures modules its
+    output comes from: the page is read again when any of them (or what they import) changes."""
+    _record(env, env.docname, modules)
+
+
+def _code_cells(docname: str, path: str, source: str) -> list[str] | None:
+    """The code cells' sources of a MyST or ipynb notebook page; None if it is no notebook."""
+    if path.endswith(".ipynb"):
+        import nbformat
+
+        return [cell.source for cell in nbformat.reads(source, as_version=4).cells if cell.cell_type == "code"]
+    if "{code-cell}" not in source:
+        return None
+    from myst_nb.core.read import read_myst_markdown_notebook
+
+    notebook = read_myst_markdown_notebook(source, path=path)
+    return [cell.source for cell in notebook.cells if cell.cell_type == "code"]
+
+
+def _with_digest_cell(path: str, source: str, digest: str) -> str:
+    line = f"{CELL_MARK} {digest}"
+    if path.endswith(".ipynb"):
+        import nbformat
+
+        notebook = nbformat.reads(source, as_version=4)
+        notebook.cells.append(nbformat.v4.new_code_cell(line, metadata={"tags": ["remove-cell"]}))
+        return nbformat.writes(notebook)
+    return source.rstrip("\n") + f"\n\n```{{code-cell}} ipython3\n:tags: [remove-cell]\n\n{line}\n```\n"
+
+
+def _source_read(app: Sphinx, docname: str, source: list[str]) -> None:
+    """Record what the page's kernel imports; key its execution cache on their digest."""
+    env = app.env
+    _record(env, docname, ())
+    path = env.doc2path(docname)
+    cells = _code_cells(docname, str(path), source[0])
+    if not cells:
+        return
+    graph = _graph(app)
+    kernel = graph.imported_by_cells(cells)
+    if not kernel:
+        return
+    _record(env, docname, kernel)
+    source[0] = _with_digest_cell(str(path), source[0], graph.digest(kernel))
+
+
+def _outdated(app: Sphinx, env, added, changed, removed) -> list[str]:
+    """The pages whose modules' digest differs from the one they were read with."""
+    graph = _graph(app)
+    stale = []
+    for docname, record in _records(env).items():
+        unchanged = docname in env.found_docs and docname not in added | changed | removed
+        if unchanged and graph.digest(record["modules"]) != record["digest"]:
+            stale.append(docname)
+    if stale:
+        logger.info("physics_figures changed: re-reading %s", ", ".join(sorted(stale)))
+    return sorted(stale)
+
+
+def _purge(app: Sphinx, env, docname: str) -> None:
+    _records(env).pop(docname, None)
+
+
+def _merge(app: Sphinx, env, docnames, other) -> None:
+    for docname in docnames:
+        if docname in _records(other):
+            _records(env)[docname] = _records(other)[docname]
 
 
 def setup(app: Sphinx):
-    app.connect("config-inited", _check_package)
-    app.connect("env-get-outdated", _outdate_everything)
-    app.connect("build-finished", _save_stamp)
-    return {"parallel_read_safe": True, "parallel_write_safe": True}
+    app.connect("source-read", _source_read)
+    app.connect("env-get-outdated", _outdated)
+    app.connect("env-purge-doc", _purge)
+    app.connect("env-merge-info", _merge)
+    # 2: the environment of the old whole-package scheme is read afresh, once.
+    return {"parallel_read_safe": True, "parallel_write_safe": True, "env_version": 2}

@@ -2,27 +2,12 @@
 
 Plot functions take the model objects first, options as keywords, ``ax=None`` (draw into
 that Axes, or a new Figure), and return a NamedTuple of the artists. Each figure module
-also writes its caption and alt text from the same objects. ``book`` wraps them for the
-pages; ``style`` is the one place the look is set.
+also writes its caption and alt text from the same objects, and ends with the book's
+figures it draws (:mod:`.book_figure` says what those carry); ``style`` is the one place
+the look is set.
+
+This package re-exports nothing: import the module you draw from (``from
+physics_figures.figures import collisions``). Python runs this file on the way to any
+figure module, so anything imported here would tie every page to every figure module
+(``book/_ext/fresh_figures.py`` re-executes a page when a module it imports changes).
 """
-
-from .collisions import plot_collision
-from .drag import plot_drag_against_speed, plot_thrown_upwards
-from .free_body import plot_book_on_table, plot_skydiver_free_bodies, plot_skydiver_free_body
-from .momentum_graphs import plot_force_time_area, plot_momentum_time
-from .skydiver import plot_resultant_force, plot_velocity_time
-from .vectors import plot_momentum_triangle
-
-__all__ = [
-    "plot_book_on_table",
-    "plot_collision",
-    "plot_drag_against_speed",
-    "plot_force_time_area",
-    "plot_momentum_time",
-    "plot_momentum_triangle",
-    "plot_resultant_force",
-    "plot_skydiver_free_bodies",
-    "plot_skydiver_free_body",
-    "plot_thrown_upwards",
-    "plot_velocity_time",
-]

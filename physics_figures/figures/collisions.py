@@ -13,9 +13,10 @@ from matplotlib.axes import Axes
 from matplotlib.patches import Rectangle
 from matplotlib.text import Annotation, Text
 
-from ..models import total_kinetic_energy, total_momentum
+from ..models import stick_together, total_kinetic_energy, total_momentum
 from ..notation import format_number
 from ._text import MOMENTUM_UNIT, VELOCITY_UNIT, a_or_an, plain
+from .book_figure import BookFigure
 from .style import MAIN, SECOND, SMALL_TEXT, new_axes, styled
 
 
@@ -157,4 +158,20 @@ def collision_alt(masses, velocities_before, velocities_after) -> str:
         f"{format_number(p0, 2)} {MOMENTUM_UNIT}, total kinetic energy {format_number(e0, 2)} J. After: the blocks "
         f"joined, moving right at {format_number(velocities_after[0], 2)} {VELOCITY_UNIT}; total momentum "
         f"{format_number(p1, 2)} {MOMENTUM_UNIT}, total kinetic energy {format_number(e1, 2)} J."
+    )
+
+
+# --- The book's figures from this module (see book_figure.py); a page calls one of these. ---
+
+
+def collision_before_after(*, m1: float, u1: float, m2: float, u2: float) -> BookFigure:
+    """The notes' sticking trolleys (keywords as in ``scenarios.STICKING_TROLLEYS``)."""
+    v = stick_together(m1, u1, m2, u2)
+    masses, before, after = (m1, m2), (u1, u2), (v, v)
+    graph = plot_collision(masses, before, after)
+    return BookFigure(
+        "fig-collision-before-after",
+        graph.axes.figure,
+        collision_caption(masses, before, after),
+        collision_alt(masses, before, after),
     )

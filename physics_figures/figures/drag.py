@@ -15,6 +15,7 @@ from ..models import drag_force
 from ..models.drag import Skydive, ThrowUp
 from ..notation import format_number
 from ._text import VELOCITY_UNIT, plain
+from .book_figure import BookFigure
 from .style import FIGSIZE, GUIDE, MAIN, SECOND, book_style, new_axes, styled, unit_label
 
 
@@ -181,4 +182,27 @@ def thrown_upwards_alt(with_drag: ThrowUp, without_drag: ThrowUp) -> str:
         f"{format_number(with_drag.time_of_flight, 2)} s. Height: both are hump-shaped; with air "
         f"resistance the top is {format_number(with_drag.max_height, 3)} m instead of "
         f"{format_number(without_drag.max_height, 3)} m."
+    )
+
+
+# --- The book's figures from this module (see book_figure.py); a page calls one of these. ---
+
+
+def drag_against_speed(skydive: Skydive) -> BookFigure:
+    graph = plot_drag_against_speed(skydive)
+    return BookFigure(
+        "fig-drag-against-speed",
+        graph.axes.figure,
+        drag_against_speed_caption(skydive),
+        drag_against_speed_alt(skydive),
+    )
+
+
+def thrown_upwards(with_drag: ThrowUp, without_drag: ThrowUp) -> BookFigure:
+    graph = plot_thrown_upwards(with_drag, without_drag)
+    return BookFigure(
+        "fig-thrown-upwards",
+        graph.figure,
+        thrown_upwards_caption(with_drag, without_drag),
+        thrown_upwards_alt(with_drag, without_drag),
     )

@@ -18,6 +18,7 @@ from matplotlib.text import Annotation
 from ..models.drag import Skydive
 from ..notation import format_number
 from ._text import ACCELERATION_UNIT, VELOCITY_UNIT, plain
+from .book_figure import BookFigure
 from .style import FORCE_COLOURS, SMALL_TEXT, book_style, styled
 
 #: Line style of each kind of force, so pairs match in greyscale too.
@@ -263,4 +264,26 @@ def book_on_table_alt() -> str:
         "pushing the book up, equal in length. Right, their third-law pairs: the book "
         "pulling the Earth up with a gravitational force W, and the book pushing the table "
         "down with a contact force R. Arrows of the same type match in colour and line style."
+    )
+
+
+# --- The book's figures from this module (see book_figure.py); a page calls one of these. ---
+
+
+def free_body_skydiver(skydive: Skydive) -> BookFigure:
+    figure, _ = plot_skydiver_free_bodies(skydive)
+    return BookFigure(
+        "fig-free-body-skydiver",
+        figure,
+        skydiver_free_bodies_caption(skydive),
+        skydiver_free_bodies_alt(skydive),
+    )
+
+
+def free_body_book() -> BookFigure:
+    return BookFigure(
+        "fig-free-body-book",
+        plot_book_on_table().figure,
+        book_on_table_caption(),
+        book_on_table_alt(),
     )

@@ -19,6 +19,7 @@ from ..models import impulse
 from ..models.momentum_history import MomentumHistory
 from ..notation import format_number
 from ._text import IMPULSE_UNIT, MOMENTUM_UNIT, VELOCITY_UNIT, a_or_an, plain, seconds
+from .book_figure import BookFigure
 from .style import GUIDE, MAIN, SHADE, new_axes, styled, unit_label
 
 
@@ -185,4 +186,27 @@ def force_time_alt(history: MomentumHistory) -> str:
         "Force-time graph of the car, made of horizontal steps: "
         + "; ".join(parts)
         + ". Each shaded area is the change in momentum over that time."
+    )
+
+
+# --- The book's figures from this module (see book_figure.py); a page calls one of these. ---
+
+
+def car_momentum_time(history: MomentumHistory, *, mass: float) -> BookFigure:
+    graph = plot_momentum_time(history)
+    return BookFigure(
+        "fig-car-momentum-time",
+        graph.axes.figure,
+        momentum_time_caption(history, mass=mass),
+        momentum_time_alt(history, mass=mass),
+    )
+
+
+def force_time_area(history: MomentumHistory) -> BookFigure:
+    graph = plot_force_time_area(history)
+    return BookFigure(
+        "fig-force-time-area",
+        graph.axes.figure,
+        force_time_caption(history),
+        force_time_alt(history),
     )

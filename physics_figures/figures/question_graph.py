@@ -17,6 +17,7 @@ from matplotlib.ticker import FixedLocator, FuncFormatter, MultipleLocator
 from ..notation import format_number
 from ..questions import Graph
 from ._text import plain
+from .book_figure import BookFigure
 from .style import GUIDE, MAIN, SHADE, new_axes, styled, unit_label
 
 #: A labelled grid line every 1, 2, 5 or 10 small squares: the first that gives at most
@@ -108,3 +109,12 @@ def question_graph_alt(graph: Graph) -> str:
         f"squares of {time(graph.time_division)} s by {amount(graph.value_division)} {graph.unit}. "
         f"{lines} {corners}." + (" The area under the line is shaded." if graph.shaded else "")
     )
+
+
+# --- The book's figures from this module (see book_figure.py); a page calls one of these. ---
+
+
+def question_graph(graph: Graph) -> BookFigure:
+    """The graph a question prints, for one variant (the question directive draws it)."""
+    drawn = plot_question_graph(graph)
+    return BookFigure("question-graph", drawn.axes.figure, "", question_graph_alt(graph))

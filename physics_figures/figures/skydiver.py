@@ -18,6 +18,7 @@ from matplotlib.text import Text
 from ..models.drag import Skydive
 from ..notation import format_number
 from ._text import ACCELERATION_UNIT, VELOCITY_UNIT, a_or_an, plain
+from .book_figure import BookFigure
 from .style import GUIDE, MAIN, SMALL_TEXT, new_axes, styled, unit_label
 
 POINT_LABELS = ("A", "B", "C", "D", "E")
@@ -238,3 +239,26 @@ def resultant_force_alt(skydive: Skydive) -> str:
         f"{format_number(skydive.terminal_velocity_parachute, 2)} {VELOCITY_UNIT}."
     )
     return plain(text)
+
+
+# --- The book's figures from this module (see book_figure.py); a page calls one of these. ---
+
+
+def skydiver_velocity_time(skydive: Skydive) -> BookFigure:
+    graph = plot_velocity_time(skydive)
+    return BookFigure(
+        "fig-skydiver-velocity-time",
+        graph.axes.figure,
+        velocity_time_caption(skydive),
+        velocity_time_alt(skydive),
+    )
+
+
+def skydiver_resultant_force(skydive: Skydive) -> BookFigure:
+    graph = plot_resultant_force(skydive)
+    return BookFigure(
+        "fig-skydiver-resultant-force",
+        graph.axes.figure,
+        resultant_force_caption(skydive),
+        resultant_force_alt(skydive),
+    )

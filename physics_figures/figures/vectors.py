@@ -19,6 +19,7 @@ from matplotlib.text import Annotation
 from ..models.two_d import GlancingCollision
 from ..notation import format_number
 from ._text import IMPULSE_UNIT, plain
+from .book_figure import BookFigure
 from .style import GUIDE, MAIN, PALETTE, SECOND, SMALL_TEXT, new_axes, styled
 
 
@@ -162,4 +163,27 @@ def momentum_triangle_alt(
         f"degrees below the line (components {format_number(m.along, 3)} along, {format_number(m.across, 3)} "
         f"across), ending at the tip of the dashed arrow: the momentum before is the "
         f"resultant of the two momenta after."
+    )
+
+
+# --- The book's figures from this module (see book_figure.py); a page calls one of these. ---
+
+
+def pucks_triangle(collision: GlancingCollision) -> BookFigure:
+    graph = plot_momentum_triangle(collision, names=("P", "Q"), figures=2)
+    return BookFigure(
+        "fig-pucks-triangle",
+        graph.axes.figure,
+        momentum_triangle_caption(collision, names=("P", "Q")),
+        momentum_triangle_alt(collision, names=("P", "Q"), figures=2),
+    )
+
+
+def example4_triangle(collision: GlancingCollision) -> BookFigure:
+    graph = plot_momentum_triangle(collision, names=("X", "Y"), figures=3)
+    return BookFigure(
+        "fig-example4-triangle",
+        graph.axes.figure,
+        momentum_triangle_caption(collision, names=("X", "Y")),
+        momentum_triangle_alt(collision, names=("X", "Y"), figures=3),
     )

@@ -109,7 +109,7 @@ def _graph_file(index: int) -> str:
 
 def graphs(version: Version) -> dict[str, bytes]:
     """The vector PDFs of this version's graphs, by file name (drawn from its numbers)."""
-    from ..figures.book import question_graph  # matplotlib only when a sheet has a graph
+    from ..figures.question_graph import question_graph  # matplotlib only when a sheet has a graph
 
     return {_graph_file(number): question_graph(item.question.graph).pdf()
             for number, item in enumerate(version.items, start=1) if item.question.graph is not None}

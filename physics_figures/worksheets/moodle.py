@@ -215,7 +215,7 @@ def _scheme_html(question: Question) -> str:
 def _graph_files(template: Template, index: int, question: Question) -> tuple[str, dict[str, bytes]]:
     if question.graph is None:
         return "", {}
-    from ..figures.book import question_graph
+    from ..figures.question_graph import question_graph
 
     drawn = question_graph(question.graph)
     filename = f"{template.key}-{index}.png"

@@ -18,6 +18,7 @@ import json
 from pathlib import Path
 
 from docutils import nodes
+from fresh_figures import uses_modules  # book/_ext: re-read a page when its modules change
 from notation import add_notation_script  # book/_ext/notation: the browser's number writer
 from sphinx import addnodes
 from sphinx.application import Sphinx
@@ -70,6 +71,7 @@ class ExplorableDirective(SphinxDirective):
             f'<script type="application/json" class="explorable-data">{data}</script></div>'
         )
         self.env.explorables_by_doc.setdefault(self.env.docname, set()).add(name)
+        uses_modules(self.env, "physics_figures.explorables")
         return [nodes.raw("", markup, format="html"), self._on_paper(name)]
 
     def _on_paper(self, name: str) -> nodes.Node:

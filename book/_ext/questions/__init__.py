@@ -32,6 +32,7 @@ from html import escape
 from pathlib import Path
 
 from docutils import nodes
+from fresh_figures import uses_modules  # book/_ext: re-read a page when its modules change
 from notation import add_notation_script  # book/_ext/notation: the browser's number writer
 from sphinx.util import logging
 from sphinx.util.docutils import SphinxDirective
@@ -39,6 +40,11 @@ from sphinx.util.docutils import SphinxDirective
 from physics_figures.notation import join_units  # a number never parts from its unit
 
 __version__ = "1.0"
+#: What a question's text, marks and key come from (the bank imports the models it uses), and
+#: what draws a question's graph: a page placing a question is re-read when these change, and
+#: so are the pages that gather the bank's questions (answer key, progress, try similar, map).
+BANK_MODULES = ("physics_figures.bank", "physics_figures.textformat", "physics_figures.variants")
+GRAPH_MODULE = "physics_figures.figures.question_graph"
 STATIC = Path(__file__).parent / "static"
 logger = logging.getLogger(__name__)
 
@@ -90,13 +96,15 @@ class QuestionDirective(SphinxDirective):
     has_content = True
 
     def run(self):
-        template, sources = self._template()
+        template = self._template()
         data, title = template.variant(0), template.title
         if self.content:
             raise self.error(f"question {template.key}: a template writes its own text; "
                              "leave the directive empty")
-        for source in sources:  # an edit to physics_figures re-reads this page
-            self.env.note_dependency(str(source))
+        # An edit to these (or to what they import) re-reads this page.
+        uses_modules(self.env, *BANK_MODULES)
+        if data.graph is not None:
+            uses_modules(self.env, GRAPH_MODULE)
         _templates_used(self.env).setdefault(self.env.docname, []).append(template.key)
 
         node = question(qid=data.key, data=data.browser_data(), ids=[f"question-{data.key}"],
@@ -131,8 +139,7 @@ class QuestionDirective(SphinxDirective):
         key = self.arguments[0]
         if key not in bank.TEMPLATES:
             raise self.error(f"question: no template {key!r} in physics_figures.bank")
-        package = Path(bank.__file__).parents[1]
-        return bank.TEMPLATES[key], sorted(package.rglob("*.py"))
+        return bank.TEMPLATES[key]
 
     def _graph(self, key: str, graph) -> nodes.image:
         """The printed variant's graph, drawn now as SVG (the site) and PDF (the book): an
@@ -236,6 +243,7 @@ class TrySimilarDirective(SphinxDirective):
 
     def run(self):
         _try_similar_docs(self.env).add(self.env.docname)
+        uses_modules(self.env, *BANK_MODULES)
         return [try_similar()]
 
 
@@ -280,6 +288,7 @@ class BookMapDirective(SphinxDirective):
         if self.arguments[0] not in BOOK_MAPS:
             raise self.error(f"book-map: choose one of {', '.join(BOOK_MAPS)} (got {self.arguments[0]!r})")
         _map_docs(self.env).add(self.env.docname)
+        uses_modules(self.env, *BANK_MODULES)
         return [book_map(what=self.arguments[0])]
 
 
@@ -382,6 +391,7 @@ class AnswerKeyDirective(SphinxDirective):
 
     def run(self):
         _answer_key_docs(self.env).add(self.env.docname)
+        uses_modules(self.env, *BANK_MODULES)
         return [answer_key()]
 
 
@@ -390,6 +400,7 @@ class PracticeProgressDirective(SphinxDirective):
 
     def run(self):
         _progress_docs(self.env).add(self.env.docname)
+        uses_modules(self.env, *BANK_MODULES)
         return [practice_progress()]
 
 
@@ -601,7 +612,7 @@ GRAPHS_DIR = "question-graphs"  # beside the doctrees: the printed variants' gra
 def write_graph(folder: Path, name: str, graph, *, formats: tuple[str, ...]):
     """Draw a question's graph into folder/name.<format>, rewriting a file only when its
     bytes change (so an unchanged graph is not copied again). Returns the BookFigure."""
-    from physics_figures.figures.book import question_graph
+    from physics_figures.figures.question_graph import question_graph
 
     drawn = question_graph(graph)
     folder.mkdir(parents=True, exist_ok=True)

@@ -562,8 +562,9 @@ def test_a_template_directive_with_text_or_an_unknown_key_fails_the_strict_build
 
 @pytest.mark.build
 def test_an_edit_to_the_bank_re_reads_the_page(tmp_path):
-    """The directive notes the bank's source files as dependencies, so an incremental build
-    re-reads a page when a template changes."""
+    """The directive notes the bank's source files (the modules it imports, through
+    book/_ext/fresh_figures.py) as dependencies, so an incremental build re-reads a page when
+    a template changes."""
     source = _sphinx_project(tmp_path, QUICK_CHECK_1)
     assert _build(source, "html").returncode == 0
     with (source / "_out" / "html" / ".doctrees" / "environment.pickle").open("rb") as file:

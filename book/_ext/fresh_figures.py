@@ -15,7 +15,8 @@ SHA-256 of those files' paths and bytes. Two things follow from it:
 * Every page's modules (kernel and directives) are kept in the environment with their
   digest; at the next build, a page whose digest has changed is re-read (and so
   re-executed if its kernel modules changed). It is a comparison of contents, not of
-  mtimes, so a checkout or a copy never leaves a page stale.
+  mtimes, so a checkout or a copy never leaves a page stale. The files are also Sphinx
+  dependencies of the page (``env.note_dependency``), so a newer file re-reads it too.
 
 Nothing else changes a page: an edit to ``figures/collisions.py`` re-runs the pages that
 draw a collision and no other. No page glues a value from another page (``{glue:}``
@@ -163,9 +164,14 @@ def _records(env) -> dict[str, dict]:
 
 
 def _record(env, docname: str, modules: Iterable[str]) -> None:
+    graph = _graph(env.app)
     record = _records(env).setdefault(docname, {"modules": set(EVERY_PAGE), "digest": ""})
     record["modules"] |= set(modules)
-    record["digest"] = _graph(env.app).digest(record["modules"])
+    record["digest"] = graph.digest(record["modules"])
+    # Sphinx's own dependency list too (by mtime: a touched file re-reads the page, whose
+    # unchanged digest then finds its outputs in the cache).
+    for module in sorted(graph.closure(modules)):
+        env.note_dependency(str(graph.path(module)))
 
 
 def uses_modules(env, *modules: str) -> None:

@@ -77,6 +77,9 @@ BROKEN_PAGES = {
     "broken cross-reference": ("# Title\n\nSee {ref}`no-such-label`.\n", "no-such-label"),
     "cell error": ("# Title\n\n```{code-cell} ipython3\n1 / 0\n```\n", "ZeroDivisionError"),
     "unknown directive": ("# Title\n\n```{no-such-directive}\nx\n```\n", "no-such-directive"),
+    # book/_ext/fresh_figures.py cannot keep a value glued from another page fresh
+    "glue from another page": ("# Title\n\nSpeed {glue:text}`book/other::speed`.\n",
+                               "glues 'book/other::speed' from another page"),
 }
 
 

@@ -126,3 +126,12 @@ def test_the_hidden_cell_carries_the_digest_and_is_removed_from_the_page():
     assert cells[-1].source == f"{fresh_figures.CELL_MARK} {'0' * 64}"
     assert cells[-1].metadata["tags"] == ["remove-cell"]
     assert [c.source for c in read_myst_markdown_notebook(page).cells] == [c.source for c in cells[:-1]]
+
+
+def test_glue_from_another_page_is_found_and_the_books_pages_use_none():
+    found = fresh_figures.CROSS_PAGE_GLUE.findall
+    assert found("Speed {glue:text}`book/understand/weight::g_moon:.2f` here.") == ["book/understand/weight::g_moon:.2f"]
+    assert found("```{glue:figure} other/page::fig-a\n```\n") == ["other/page::fig-a"]
+    assert found("{glue:text}`terminal_speed:.1f` and {glue}`mass`") == []
+    for page in PAGES:
+        assert not found(page.read_text()), f"{page.relative_to(ROOT)} glues a value from another page"

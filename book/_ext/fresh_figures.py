@@ -19,9 +19,12 @@ SHA-256 of those files' paths and bytes. Two things follow from it:
   dependencies of the page (``env.note_dependency``), so a newer file re-reads it too.
 
 Nothing else changes a page: an edit to ``figures/collisions.py`` re-runs the pages that
-draw a collision and no other. No page glues a value from another page (``{glue:}``
-with ``page::key``); if one did, it would have to import what that page imports.
-Directives say what they use with :func:`uses_modules`.
+draw a collision and no other. Directives say what they use with :func:`uses_modules`.
+
+A page's glued numbers are its own cells' outputs, so they are as fresh as its figures. A
+value glued from another page (``{glue:text}`other/page::key```) would not be: that page
+could execute again while this one is not re-read. No page does so, and a page that tries
+fails the (strict) build with a warning saying so.
 """
 
 from __future__ import annotations
@@ -29,6 +32,7 @@ from __future__ import annotations
 import ast
 import hashlib
 import importlib.util
+import re
 from collections.abc import Iterable
 from pathlib import Path
 
@@ -43,6 +47,8 @@ EVERY_PAGE = (f"{PACKAGE}.notation",)
 #: The first line of the hidden cell that carries a page's digest.
 CELL_MARK = "# fresh_figures: the physics_figures modules this page imports (sha256):"
 ENV_ATTR = "fresh_figures_modules"  # {docname: {"modules": [...], "digest": "..."}}
+#: A glue role or directive that names another page (``path/to/page::key``).
+CROSS_PAGE_GLUE = re.compile(r"\{glue(?::\w+)?\}[` ]\s*([^`\n]*::[^`\n]*)")
 
 
 class ImportGraph:
@@ -209,6 +215,10 @@ def _source_read(app: Sphinx, docname: str, source: list[str]) -> None:
     """Record what the page's kernel imports; key its execution cache on their digest."""
     env = app.env
     _record(env, docname, ())
+    for glued in CROSS_PAGE_GLUE.findall(source[0]):
+        logger.warning("%s glues %r from another page: its value could go stale when that page "
+                       "executes again; glue it on this page instead (book/_ext/fresh_figures.py)",
+                       docname, glued.strip(), location=docname)
     path = env.doc2path(docname)
     cells = _code_cells(docname, str(path), source[0])
     if not cells:

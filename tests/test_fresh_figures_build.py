@@ -17,24 +17,10 @@ import textwrap
 from pathlib import Path
 
 import pytest
+from test_build import FRONT_MATTER, ROOT, VENV  # the one-page build's front matter and venv
 
 pytestmark = [pytest.mark.build]
 
-ROOT = Path(__file__).resolve().parents[1]
-VENV = ROOT / ".venv"
-
-FRONT_MATTER = """\
----
-jupytext:
-  text_representation:
-    extension: .md
-    format_name: myst
-kernelspec:
-  display_name: Python 3
-  language: python
-  name: python3
----
-"""
 #: A cell that prints when it ran: a page executed again prints another time.
 PROBE = "```{code-cell} ipython3\nimport time\nprint('executed at', time.time_ns())\n```\n"
 

@@ -169,21 +169,19 @@ def momentum_triangle_alt(
 # --- The book's figures from this module (see book_figure.py); a page calls one of these. ---
 
 
-def pucks_triangle(collision: GlancingCollision) -> BookFigure:
-    graph = plot_momentum_triangle(collision, names=("P", "Q"), figures=2)
+def _triangle(name: str, collision: GlancingCollision, names: tuple[str, str], figures: int) -> BookFigure:
+    graph = plot_momentum_triangle(collision, names=names, figures=figures)
     return BookFigure(
-        "fig-pucks-triangle",
+        name,
         graph.axes.figure,
-        momentum_triangle_caption(collision, names=("P", "Q")),
-        momentum_triangle_alt(collision, names=("P", "Q"), figures=2),
+        momentum_triangle_caption(collision, names=names),
+        momentum_triangle_alt(collision, names=names, figures=figures),
     )
+
+
+def pucks_triangle(collision: GlancingCollision) -> BookFigure:
+    return _triangle("fig-pucks-triangle", collision, ("P", "Q"), 2)
 
 
 def example4_triangle(collision: GlancingCollision) -> BookFigure:
-    graph = plot_momentum_triangle(collision, names=("X", "Y"), figures=3)
-    return BookFigure(
-        "fig-example4-triangle",
-        graph.axes.figure,
-        momentum_triangle_caption(collision, names=("X", "Y")),
-        momentum_triangle_alt(collision, names=("X", "Y"), figures=3),
-    )
+    return _triangle("fig-example4-triangle", collision, ("X", "Y"), 3)

@@ -6,8 +6,11 @@ bundled are removed by the build (book/_ext/offline)."""
 
 from __future__ import annotations
 
+import re
+
 import offline
 import pytest
+from conftest import ROOT
 
 pytestmark = pytest.mark.site
 
@@ -29,3 +32,30 @@ def test_a_file_nothing_names_is_found(site_dir, tmp_path):
     (tmp_path / "site" / "_static" / "used.js").write_text("1", encoding="utf-8")
     stray.write_text("2", encoding="utf-8")
     assert offline.unreferenced_files(tmp_path / "site") == ["_static/stray.js"]
+
+
+def _pages(site_dir):
+    return {p.relative_to(site_dir).as_posix(): p.read_text(encoding="utf-8")
+            for p in site_dir.rglob("*.html") if "_static" not in p.parts}
+
+
+def test_no_page_needs_bootstrap_s_javascript(site_dir):
+    """The pages load the theme's scripts without bootstrap.js (book/_templates/layout.html):
+    no page may hold a Bootstrap widget that only its JavaScript works (a dropdown, a collapse,
+    a modal...); hover tooltips fall back to the buttons' titles."""
+    widgets = re.compile(r'data-bs-toggle="(?!tooltip")[^"]*"')
+    needing = {name: widgets.findall(text) for name, text in _pages(site_dir).items()}
+    assert not {name: found for name, found in needing.items() if found}
+    assert not [name for name, text in _pages(site_dir).items() if "bootstrap.js" in text]
+
+
+def test_the_site_s_own_scripts_are_shipped_minified(site_dir):
+    """The explorables', the questions' and the other own scripts are minified in the site
+    (terser, book/_ext/site_assets/minify-js.js): one line, fewer bytes than the source."""
+    shipped = 0
+    for static in (ROOT / "book" / "_ext").glob("*/static"):
+        for source in static.rglob("*.js"):
+            text = (site_dir / "_static" / source.relative_to(static)).read_text(encoding="utf-8")
+            assert text.count("\n") <= 1 and len(text) < len(source.read_text(encoding="utf-8")), source
+            shipped += 1
+    assert shipped >= 10

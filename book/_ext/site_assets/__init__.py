@@ -293,6 +293,46 @@ def prune_bundles(app: Sphinx, outdir: Path, names: list[str]) -> None:
         raise ExtensionError(f"site_assets: pruning the CSS failed (is `npm ci` done?): {done.stderr.strip()}")
 
 
+def own_scripts(app: Sphinx) -> list[str]:
+    """The site's own scripts (the project's static folders: the extensions' and _static),
+    as paths in the site. The theme's and Sphinx's come minified already."""
+    project = Path(app.confdir).resolve()
+    found = []
+    for folder in app.config.html_static_path:
+        source = Path(app.confdir, folder).resolve()
+        if source.is_dir() and source.is_relative_to(project) and "site-packages" not in source.parts:
+            found += [f"_static/{p.relative_to(source).as_posix()}" for p in sorted(source.rglob("*.js"))]
+    return found
+
+
+def minify_scripts(app: Sphinx, outdir: Path) -> None:
+    """Minify the copies of the site's own scripts (terser under node, minify-js.js): the
+    explorables' and the questions' scripts shrink by about 40 % gzip.
+
+    Sphinx copies the sources over them only in a build that writes pages, so a copy is
+    minified again only when it is not the output recorded last time (a no-op build leaves
+    the site, and the service worker's content hashes, as they were).
+    """
+    record_path = outdir.parent / f"{outdir.name}-minified-scripts.json"
+    record = json.loads(record_path.read_text()) if record_path.exists() else {}
+
+    def digest(name: str) -> str:
+        return hashlib.sha256((outdir / name).read_bytes()).hexdigest()
+
+    todo = [name for name in own_scripts(app) if (outdir / name).exists() and record.get(name) != digest(name)]
+    if todo:
+        node = shutil.which("node")
+        if node is None:
+            raise ExtensionError("site_assets: `node` is missing (apt-get install nodejs npm)")
+        done = subprocess.run([node, str(HERE / "minify-js.js"), str(outdir), *todo], cwd=app.confdir,
+                              capture_output=True, text=True, check=False)
+        if done.returncode != 0:
+            raise ExtensionError(f"site_assets: minifying the scripts failed (is `npm ci` done?): "
+                                 f"{done.stderr.strip()}")
+        record.update({name: digest(name) for name in todo})
+        record_path.write_text(json.dumps(record, indent=1, sort_keys=True))
+
+
 # ---------------------------------------------------------------- page context
 
 
@@ -489,6 +529,7 @@ def _build_finished(app: Sphinx, exception) -> None:
         shutil.copyfile(outdir / name, unpruned)
     if copied:
         prune_bundles(app, outdir, sorted(bundles))
+    minify_scripts(app, outdir)
     registry.write_text(json.dumps(bundles, indent=1, sort_keys=True))
     write_root_redirect(app)
     _static_record(app).write_text(json.dumps(static_digests(app), indent=1))

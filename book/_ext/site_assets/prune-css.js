@@ -1,4 +1,4 @@
-// Ship only the CSS rules the site uses: PurgeCSS keeps a rule when its selectors' class
+// Ship only the CSS rules the site uses, minified: PurgeCSS keeps a rule when its selectors' class
 // names, ids and tags appear in the built pages or in the scripts that add classes at run
 // time (the theme's, dark mode's, the explorables', the questions'). Called by
 // book/_ext/site_assets when the HTML build finishes:
@@ -7,6 +7,7 @@
 const fs = require("node:fs");
 const path = require("node:path");
 const { PurgeCSS } = require(path.join(process.cwd(), "node_modules", "purgecss"));
+const csso = require(path.join(process.cwd(), "node_modules", "csso"));
 
 // Classes a script builds from pieces, or a state the theme sets on <html>/<body>, that no
 // page or script names whole: kept by pattern.
@@ -49,9 +50,12 @@ async function main() {
   for (const bundle of bundles) {
     const file = path.join(site, bundle);
     const [result] = await new PurgeCSS().purge({
-      content, css: [file], safelist: SAFELIST, fontFace: false, keyframes: false, variables: false,
+      content, css: [file], safelist: SAFELIST, fontFace: false, keyframes: false,
+      // custom properties no kept rule reads (var()): most of the theme's and Bootstrap's
+      variables: true,
     });
-    fs.writeFileSync(file, result.css);
+    // then minified (comments and spaces out; no rule merged or moved, so the cascade stands)
+    fs.writeFileSync(file, csso.minify(result.css, { restructure: false }).css);
   }
 }
 

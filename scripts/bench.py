@@ -204,7 +204,12 @@ fs.writeFileSync(out, JSON.stringify(scores));
 """
 
 
-def lighthouse_scores(site: Path, pages: list[str]) -> dict[str, dict]:
+LIGHTHOUSE_GOAL = {"performance": 0.97, "accessibility": 1.0, "best-practices": 1.0, "seo": 1.0}
+LIGHTHOUSE_RUNS = 3
+
+
+def _lighthouse_run(site: Path, pages: list[str]) -> dict[str, dict]:
+    """One Lighthouse run over `pages` (one Chrome, one page after another)."""
     node_module("lighthouse")
     with serve_site(site) as base, tempfile.TemporaryDirectory() as folder:
         runner = ROOT / "node_modules" / ".bench-lighthouse.mjs"  # beside lighthouse, to import it
@@ -222,6 +227,24 @@ def lighthouse_scores(site: Path, pages: list[str]) -> dict[str, dict]:
             raise SystemExit(f"lighthouse failed:\n{result.stderr[-3000:]}")
         scores = json.loads(out.read_text())
     return {url.split("/", 3)[3]: value for url, value in scores.items()}
+
+
+def lighthouse_scores(site: Path, pages: list[str]) -> dict[str, dict]:
+    """Each page's best of up to three runs, category by category (CLARIFICATIONS: a run on a
+    busy machine can score a page low). A page that meets LIGHTHOUSE_GOAL is not run again."""
+    best: dict[str, dict] = {}
+    todo = list(pages)
+    for run in range(1, LIGHTHOUSE_RUNS + 1):
+        for page, scores in _lighthouse_run(site, todo).items():
+            kept = best.setdefault(page, {**scores, "runs": 0})
+            kept["runs"] = run
+            for category in LIGHTHOUSE_GOAL:
+                kept[category] = max(kept[category], scores[category])
+        todo = [p for p in pages if any(best[p][c] < goal for c, goal in LIGHTHOUSE_GOAL.items())]
+        if not todo:
+            break
+        print(f">>> lighthouse again on {len(todo)} page(s) below the goal", flush=True)
+    return best
 
 
 def machine() -> str:
@@ -382,8 +405,8 @@ def render(*, timings, executed, edited_page, edited_function, default, ours, sc
     heaviest = max(data["bytes"] for data in ours.values())
     lines += [
         "",
-        (f"Heaviest page: {heaviest:,} bytes = {heaviest / default['bytes']:.2f} of the default page "
-         "(goal: at most 0.30 until the offline issue lands, then 0.12; each page measured on a first "
+        (f"Heaviest page: {heaviest:,} bytes = {heaviest / default['bytes']:.3f} of the default page "
+         "(goal: at most 0.12; each page measured on a first "
          "visit, in a fresh browser context with service workers blocked)."),
         "",
         "## Offline",
@@ -412,7 +435,8 @@ def render(*, timings, executed, edited_page, edited_function, default, ours, sc
         lines.append(
             "Lighthouse (mobile, simulated slow 4G, offline against localhost), lowest over all pages: "
             + ", ".join(f"{c} {round(100 * v)}" for c, v in worst.items())
-            + " (goal: performance >= 95, the others 100)."
+            + f" (goal: performance >= {round(100 * LIGHTHOUSE_GOAL['performance'])}, the others 100;"
+            + f" best of up to {LIGHTHOUSE_RUNS} runs a page)."
         )
     lines.append("")
     return "\n".join(lines)

@@ -193,6 +193,18 @@ def _visible_text_in_print(page) -> str:
     return page.locator("body").inner_text()
 
 
+def test_without_javascript_the_self_test_has_no_dead_buttons(site):
+    browser, base = site
+    context = browser.new_context(java_script_enabled=False)
+    page = context.new_page()
+    page.goto(base + DEFINITIONS, wait_until="load")
+    box = page.locator(".admonition.self-test")
+    assert box.locator(".st-bar").count() == 1  # in the page from the start (no layout shift)
+    assert not box.locator(".st-bar").is_visible()
+    assert box.locator("li").count() == 8 and box.locator("li").first.is_visible()
+    context.close()
+
+
 @pytest.mark.parametrize("path,title", [("/book/understand/weight.html", "Weight"),
                                         (QUICK, "Quick check"),
                                         ("/book/exam/example-2.html", "Example 2")])

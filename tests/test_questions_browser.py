@@ -108,6 +108,7 @@ def test_without_javascript_each_question_has_an_answer_line_and_no_dead_boxes(b
     assert "final momentum = " in question.locator(".q-answer-lines").inner_text()
     assert not question.locator("form").is_visible()
     assert not question.locator(".q-worked").is_visible()
+    assert page.locator(".q-print").count() == 1 and not page.locator(".q-print").is_visible()
     context.close()
 
 

@@ -44,6 +44,7 @@ pytestmark = [pytest.mark.site, pytest.mark.browser]
 DEFAULT_PAGE_BYTES = 856_586
 PAGE_BUDGET_BYTES = int(0.12 * DEFAULT_PAGE_BYTES)
 LIGHTHOUSE_MINIMUM = {"performance": 0.95, "accessibility": 1.0, "best-practices": 1.0, "seo": 1.0}
+LAYOUT_SHIFT_MAXIMUM = 0.02  # Lighthouse counts up to 0.1 as good; the pages shift by 0.000
 NO_TRANSITIONS = "*, *::before, *::after { transition: none !important; animation: none !important; }"
 # The axe-core rules that depend on colours alone.
 COLOUR_RULES = ["color-contrast", "link-in-text-block"]
@@ -61,6 +62,7 @@ class PageReport:
 
     path: str
     total_bytes: int = 0
+    layout_shift: float = 0.0  # what Lighthouse calls CLS, while the page loads (first visit, phone)
     foreign: list[str] = field(default_factory=list)
     failed: list[str] = field(default_factory=list)
     console: list[str] = field(default_factory=list)
@@ -148,14 +150,29 @@ async def _sweep_mode(browser, base: str, pages: list[str], viewport: str, schem
     await context.close()
 
 
+# Sums the page's layout shifts until the first scroll (the visit scrolls to the bottom to
+# load every figure; Lighthouse, whose CLS this is, does not scroll).
+LAYOUT_SHIFTS = """
+window.__loadShift = 0;
+addEventListener('scroll', () => { window.__scrolled = true; }, {once: true});
+new PerformanceObserver((list) => {
+  for (const shift of list.getEntries())
+    if (!shift.hadRecentInput && !window.__scrolled) window.__loadShift += shift.value;
+}).observe({type: 'layout-shift', buffered: true});
+"""
+
+
 async def _weigh(browser, base: str, pages: list[str], reports) -> None:
     """Each page's first visit: a fresh context (nothing cached from another page), service
-    workers blocked, as `make bench` weighs it."""
+    workers blocked, as `make bench` weighs it. Its layout shift while it loads, too."""
     for path in pages:
         context = await browser.new_context(viewport=VIEWPORTS["mobile"], service_workers="block")
         await context.route(re.compile(r"^(?!http://127\.0\.0\.1:)"), lambda route: route.abort())
-        load = await PageVisitor(await context.new_page()).visit(f"{base}/{path}", scroll=True)
+        await context.add_init_script(LAYOUT_SHIFTS)
+        visitor = PageVisitor(await context.new_page())
+        load = await visitor.visit(f"{base}/{path}", scroll=True)
         reports[path].total_bytes = load.total_bytes
+        reports[path].layout_shift = await visitor.page.evaluate("window.__loadShift")
         await context.close()
 
 
@@ -302,6 +319,15 @@ def test_light_every_first_visit_within_0_12_of_a_default_page(sweep):
     _fail_pages(
         f"light (at most {PAGE_BUDGET_BYTES:,} bytes gzip on a first visit, 0.12 of a default page)",
         {p: f"{r.total_bytes:,} bytes" for p, r in sweep.items() if r.total_bytes > PAGE_BUDGET_BYTES},
+    )
+
+
+def test_nothing_shifts_while_a_page_loads(sweep):
+    """Lighthouse's layout-shift metric: questions.js used to unhide each question's form after
+    the first paint, shifting the page by 0.21 and costing it 10 points of performance."""
+    _fail_pages(
+        f"steady (layout shift while loading at most {LAYOUT_SHIFT_MAXIMUM})",
+        {p: f"shift {r.layout_shift:.3f}" for p, r in sweep.items() if r.layout_shift > LAYOUT_SHIFT_MAXIMUM},
     )
 
 

@@ -489,6 +489,21 @@ def find_self_tests(app, doctree):
         _self_test_docs(app.env).add(app.env.docname)
 
 
+def _self_test_bar(count: int) -> nodes.raw:
+    """The self-test's bar, in the page rather than added by selftest.js, which would push the
+    list down after the first paint (a layout shift); hidden without JavaScript."""
+    return nodes.raw("", '<div class="st-bar"><button type="button" class="st-toggle" aria-pressed="false">'
+                     'Test yourself: hide the definitions</button><p class="st-status" role="status">'
+                     f'Known: 0 of {count} definitions.</p></div>', format="html")
+
+
+def add_self_test_bars(doctree) -> None:
+    for box in doctree.findall(nodes.admonition):
+        lists = [child for child in box.children if isinstance(child, (nodes.bullet_list, nodes.enumerated_list))]
+        if "self-test" in box["classes"] and lists:
+            box.insert(box.index(lists[0]), _self_test_bar(len(lists[0].children)))
+
+
 def answer_key_has_maths(app, doctree):
     """The key's mark schemes hold maths, so the page needs MathJax (runs after the math domain)."""
     if any(doctree.findall(answer_key)):
@@ -555,6 +570,8 @@ def _source_page(env, node, docname: str) -> str:
 def resolve(app, doctree, docname):
     """Fill each answer key; outside HTML, questions become plain text with answer lines."""
     html = app.builder.format == "html"
+    if html:
+        add_self_test_bars(doctree)
     for listing in list(doctree.findall(book_map)):
         listing.replace_self(_book_map_content(app, docname, listing["what"]))
     for similar in list(doctree.findall(try_similar)):
@@ -668,7 +685,7 @@ def add_static_path(app, config):
 
 #: Before a page's first question (not a worked example's try-first): printing gives the
 #: questions with room to work; this button prints the worked answers too.
-PRINT_CHOICE = ('<p class="q-print" hidden><button type="button" class="q-print-answers">Print with answers'
+PRINT_CHOICE = ('<p class="q-print"><button type="button" class="q-print-answers">Print with answers'
                 '</button>Printing this page gives its questions with room for working, without the answers. '
                 'Print with answers adds each worked answer and mark scheme.</p>\n')
 
@@ -808,7 +825,7 @@ def visit_question_form(self, node):
         attributes = (f' data-question="{escape(template["key"])}" data-type="{escape(template["type"])}"'
                       f' data-variant="0" data-kind="{escape(" ".join(template["kinds"]))}"'
                       f' data-variants="{template["variants"]}"')
-    html = [f'<form class="q-form"{attributes} hidden novalidate>']
+    html = [f'<form class="q-form"{attributes} novalidate>']
     if not getattr(self, "_q_ideas_written", False):  # once a page: feedback's links to the ideas
         self._q_ideas_written = True
         ideas = json.dumps(_idea_links(self), ensure_ascii=False).replace("</", "<\\/")

@@ -727,7 +727,6 @@
     var undoButton = form.querySelector("button.q-undo");
     var undone = null; // what Clear my answers cleared, until Undo clear or another change
     var key = form.getAttribute("data-question");
-    form.hidden = false;
 
     function storeId() { return data.id + (key ? "@" + form.getAttribute("data-variant") : ""); }
 
@@ -976,7 +975,6 @@
     var bar = document.querySelector(".q-print");
     if (!bar) return;
     var html = document.documentElement;
-    bar.hidden = false;
     bar.querySelector("button").addEventListener("click", function () {
       html.classList.add("q-print-answers");
       window.print();

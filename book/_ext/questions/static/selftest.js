@@ -53,20 +53,9 @@
   function setUp(box, index) {
     var items = box.querySelectorAll(":scope > ul > li, :scope > ol > li");
     if (!items.length) return;
-    var bar = document.createElement("div");
-    bar.className = "st-bar";
-    var toggle = document.createElement("button");
-    toggle.type = "button";
-    toggle.className = "st-toggle";
-    toggle.setAttribute("aria-pressed", "false");
-    toggle.textContent = "Test yourself: hide the definitions";
-    var status = document.createElement("p");
-    status.className = "st-status";
-    status.setAttribute("role", "status");
-    bar.appendChild(toggle);
-    bar.appendChild(status);
-    var list = items[0].parentNode;
-    list.parentNode.insertBefore(bar, list);
+    var bar = box.querySelector(".st-bar"); // in the page (the build puts it there): no layout shift
+    var toggle = bar.querySelector(".st-toggle");
+    var status = bar.querySelector(".st-status");
 
     var cards = Array.prototype.map.call(items, function (item, i) {
       var paragraph = item.querySelector("p") || item;

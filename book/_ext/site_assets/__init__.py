@@ -284,13 +284,18 @@ def linked_bundles(outdir: Path) -> set[str]:
 def prune_bundles(app: Sphinx, outdir: Path, names: list[str]) -> None:
     """Keep only the rules the pages use (PurgeCSS under node, prune-css.js): a bundle
     shrinks from about 92 KB to 31 KB gzip. The unpruned bundle is write_bundle's."""
+    run_node(app, "prune-css.js", [str(outdir), *names], doing="pruning the CSS")
+
+
+def run_node(app: Sphinx, script: str, arguments: list[str], *, doing: str) -> None:
+    """Run one of this extension's node scripts in the project (its node_modules)."""
     node = shutil.which("node")
     if node is None:
         raise ExtensionError("site_assets: `node` is missing (apt-get install nodejs npm)")
-    done = subprocess.run([node, str(HERE / "prune-css.js"), str(outdir), *names], cwd=app.confdir,
+    done = subprocess.run([node, str(HERE / script), *arguments], cwd=app.confdir,
                           capture_output=True, text=True, check=False)
     if done.returncode != 0:
-        raise ExtensionError(f"site_assets: pruning the CSS failed (is `npm ci` done?): {done.stderr.strip()}")
+        raise ExtensionError(f"site_assets: {doing} failed (is `npm ci` done?): {done.stderr.strip()}")
 
 
 def own_scripts(app: Sphinx) -> list[str]:
@@ -321,14 +326,7 @@ def minify_scripts(app: Sphinx, outdir: Path) -> None:
 
     todo = [name for name in own_scripts(app) if (outdir / name).exists() and record.get(name) != digest(name)]
     if todo:
-        node = shutil.which("node")
-        if node is None:
-            raise ExtensionError("site_assets: `node` is missing (apt-get install nodejs npm)")
-        done = subprocess.run([node, str(HERE / "minify-js.js"), str(outdir), *todo], cwd=app.confdir,
-                              capture_output=True, text=True, check=False)
-        if done.returncode != 0:
-            raise ExtensionError(f"site_assets: minifying the scripts failed (is `npm ci` done?): "
-                                 f"{done.stderr.strip()}")
+        run_node(app, "minify-js.js", [str(outdir), *todo], doing="minifying the scripts")
         record.update({name: digest(name) for name in todo})
         record_path.write_text(json.dumps(record, indent=1, sort_keys=True))
 

@@ -145,6 +145,7 @@ def _run(capsys, *argv) -> tuple[int, str]:
 @pytest.mark.parametrize(("argv", "names"), [
     (["--types", "drag,gravity"], ["types", "'gravity'", "newton"]),
     (["--templates", "quick-check-9"], ["templates", "'quick-check-9'", "--list"]),
+    (["--templates", "graph-skydiver-termnal"], ["(did you mean graph-skydiver-terminal?)"]),
     (["--types", "elastic", "--marks", "30"], ["marks", "30", "elastic"]),
     (["--types", "drag,two-d", "--marks", "400"], ["marks", "400"]),
     (["--templates", "terminal-velocity-explained", "--versions", "5"], ["versions", "terminal-velocity-explained has 4"]),

@@ -18,6 +18,7 @@ the bank appears here with nothing else to change.
 
 from __future__ import annotations
 
+import difflib
 import random
 import string
 from collections.abc import Sequence
@@ -185,7 +186,7 @@ def select(*, types: Sequence[str] = (), templates: Sequence[str] = ()) -> list[
     known = {t.key: t for t in bank_templates()}
     for key in templates:
         if key not in known:
-            close = [k for k in known if key.split("-")[0] in k][:5]
+            close = difflib.get_close_matches(key, known, n=3)  # a typing slip
             hint = f" (did you mean {', '.join(close)}?)" if close else ""
             raise ValueError(f"templates names {key!r}, which is no template of the bank{hint}; "
                              f"`python -m physics_figures.worksheets --list` lists them "

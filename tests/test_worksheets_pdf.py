@@ -119,6 +119,20 @@ def test_multiple_choice_items_get_an_answer_grid(teachers):
 
 @pytest.mark.site
 @pytest.mark.parametrize("sheet", SHEETS, ids=lambda s: s.name)
+def test_the_cover_and_its_answer_grid_are_one_page(teachers, sheet):
+    """The grid sits beside the marks table: a 13-question test once left the grid's heading
+    at the foot of the cover and the grid alone on page 2."""
+    has_choice = any(p.kind == "mcq" for i in sheet.versions[0].items for p in i.question.parts)
+    for version in sheet.versions:
+        path = str(teachers / f"{sheet.name}-{version.letter}.pdf")
+        first, second = (_poppler("pdftotext", "-enc", "UTF-8", "-f", n, "-l", n, path, "-") for n in "12")
+        assert f"Total: {sheet.marks} marks" in first
+        assert ("Shade one circle" in first) == has_choice, f"{path}: the answer grid is not on the cover"
+        assert "Shade one circle" not in second
+
+
+@pytest.mark.site
+@pytest.mark.parametrize("sheet", SHEETS, ids=lambda s: s.name)
 def test_print_quality_a4_embedded_fonts_vector_graphs(teachers, sheet):
     for version in sheet.versions:
         for name in (f"{sheet.name}-{version.letter}.pdf", f"{sheet.name}-key-{version.letter}.pdf"):

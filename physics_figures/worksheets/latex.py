@@ -150,26 +150,35 @@ def _cover(sheet: Sheet, version: Version) -> str:
         r"\vspace{10pt}",
         r"{\sffamily\bfseries\Large Total: " + str(version.marks) + r" marks\par}",
         r"\vspace{12pt}",
-        r"\begin{center}\renewcommand{\arraystretch}{1.5}",
+    ]
+    marks_table = [
+        r"\renewcommand{\arraystretch}{1.5}",
         r"\begin{tabular}{|c|c|c|}\hline",
         r"\textbf{Question} & \textbf{Marks available} & \textbf{Marks awarded} \\ \hline",
         rows,
         r"\textbf{Total} & \textbf{" + str(version.marks) + r"} & \\ \hline",
-        r"\end{tabular}\end{center}",
+        r"\end{tabular}",
     ]
-    if choices:
+    if not choices:
+        out += [r"\begin{center}", *marks_table, r"\end{center}"]
+    else:
         header = " & ".join(["\\textbf{Question}", *(f"\\textbf{{{letter}}}" for letter in OPTION_LETTERS),
                              "\\textbf{Answer}"])
         grid = "\n".join(f"{number} & " + " & ".join("$\\bigcirc$" for _ in OPTION_LETTERS)
                          + r" & \gridbox \\ \hline" for number, _ in choices)
+        # Side by side, tops aligned (\vspace{0pt}), so a long test's cover stays on one page
+        # and the grid never leaves its heading at the foot of one.
         out += [
-            r"\vspace{8pt}\begin{center}{\sffamily\bfseries Multiple-choice answer grid}\par\vspace{4pt}",
+            r"\begin{center}\begin{minipage}[t]{0.49\linewidth}\vspace{0pt}\centering",
+            *marks_table,
+            r"\end{minipage}\hfill\begin{minipage}[t]{0.49\linewidth}\vspace{0pt}\centering",
+            r"{\sffamily\bfseries Multiple-choice answer grid}\par\vspace{4pt}",
             r"Shade one circle for each question, and write the letter in the box.\par\vspace{4pt}",
             r"\renewcommand{\arraystretch}{1.6}",
             r"\begin{tabular}{|c|c|c|c|c|c|}\hline",
             header + r" \\ \hline",
             grid,
-            r"\end{tabular}\end{center}",
+            r"\end{tabular}\end{minipage}\end{center}",
         ]
     out.append(r"\newpage")
     return "\n".join(line for line in out if line)

@@ -90,18 +90,24 @@ def _wrap_html(span: Span) -> str:
 
 _LATEX_SPECIAL = {"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&",
                   "#": r"\#", "_": r"\_", "%": r"\%", "~": r"\textasciitilde{}",
-                  "^": r"\textasciicircum{}"}
+                  "^": r"\textasciicircum{}", "\u00a0": "~"}  # a no-break space is TeX's tie
 _LATEX_TAG = {"sup": r"\textsuperscript{%s}", "sub": r"\textsubscript{%s}", "em": r"\emph{%s}",
               "strong": r"\textbf{%s}"}
 
 
+def latex_escape(text: str) -> str:
+    """Plain text for LaTeX: its special characters escaped, no-break spaces as ties."""
+    return "".join(_LATEX_SPECIAL.get(char, char) for char in text)
+
+
 def to_latex(source: str) -> str:
-    """LaTeX for xelatex (Unicode text stays Unicode); paragraphs separated by blank lines."""
+    """LaTeX for xelatex (Unicode text stays Unicode); paragraphs separated by blank lines.
+    Numbers are tied to their units, as on the site, so a line never breaks between them."""
     out = []
     for spans in parse(source):
         body = ""
-        for span in spans:
-            text = "".join(_LATEX_SPECIAL.get(c, c) for c in span.text)
+        for span in _joined(spans):
+            text = latex_escape(span.text)
             for tag in reversed(span.tags):
                 text = _LATEX_TAG[tag] % text
             body += text

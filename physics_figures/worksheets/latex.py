@@ -20,7 +20,7 @@ import sympy
 
 from .. import textformat
 from ..bank._common import w as working_number
-from ..notation import format_number
+from ..notation import format_number, join_units
 from ..questions import OPTION_LETTERS, Question, unit_text
 from . import DATA_LINE, Sheet, Version, part_marks
 
@@ -29,10 +29,6 @@ WORKING_CM_PER_MARK = 1.5
 LINES_PER_MARK = 2
 #: The key prints a wrong answer to this many significant figures (as the marker reads it).
 MISTAKE_SIG_FIGS = 3
-
-_SPECIAL = {"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&",
-            "#": r"\#", "_": r"\_", "%": r"\%", "~": r"\textasciitilde{}",
-            "^": r"\textasciicircum{}"}
 
 PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 % Written by physics_figures.worksheets: do not edit (run the command again).
@@ -80,8 +76,9 @@ def _marks(count: int) -> str:
 
 
 def tex(plain: str) -> str:
-    """Plain text (a prompt, a mistake's name, feedback) for LaTeX; Unicode stays Unicode."""
-    return _subscripts("".join(_SPECIAL.get(char, char) for char in plain))
+    """Plain text (a prompt, a mistake's name, feedback) for LaTeX; Unicode stays Unicode,
+    and numbers are tied to their units."""
+    return _subscripts(textformat.latex_escape(join_units(plain)))
 
 
 def rich(source: str) -> str:

@@ -30,22 +30,23 @@ import math
 import re
 from collections.abc import Callable, Mapping
 from dataclasses import KW_ONLY, dataclass, field
+from functools import cached_property
 from typing import ClassVar
 
 import sympy
 
-from . import textformat
+from . import marking, textformat
 from .constants import G_EARTH
 from .notation import format_number, round_number
 
 #: How a part treats direction: a size only, a signed value along a stated positive
 #: direction, or a size plus a direction chosen from a list.
 DIRECTION_MODES = ("none", "signed", "choice")
-#: Cambridge 9702 accepts 2 or more significant figures unless a question says otherwise.
-DEFAULT_MIN_SIG_FIGS = 2
-#: The key is trusted to 3 s.f.: an answer worked with intermediates rounded to 3 s.f.
-#: still agrees with it at that precision.
-DEFAULT_CHECK_SIG_FIGS = 3
+#: Cambridge 9702 accepts 2 or more significant figures unless a question says otherwise;
+#: the key is trusted to 3 s.f., so an answer worked with intermediates rounded to 3 s.f.
+#: still agrees with it (the rule table, marking_rules.json).
+DEFAULT_MIN_SIG_FIGS = marking.rules()["sig_figs"]["min"]
+DEFAULT_CHECK_SIG_FIGS = marking.rules()["sig_figs"]["check"]
 MARK_CODES = ("C1", "M1", "A1", "B1", "")
 #: What a part asks for. M1 (with its dependent A1) belongs only to the last three: a plain
 #: calculation earns C1 for its steps and A1 for its answer.
@@ -100,6 +101,11 @@ class Mistake:
     size). unit: only when the mistake gives another quantity (e.g. "J" for kinetic
     energy instead of momentum). direction: only when the mistake is a wrong direction.
     feedback: names the mistake and the idea to revisit (plain text).
+    kind: what the mistake is, for the marks it keeps (marking_rules.json): "slip" (g = 10,
+    a power-of-ten or prefix slip: keeps the C1 and M1), "direction" (keeps all but the
+    direction's mark; the default when ``direction`` is set) or "physics" (a wrong formula or
+    idea: keeps nothing; the default otherwise). keeps: the roles it keeps where a published
+    scheme says otherwise than its kind ("method", "answer", "direction").
     """
 
     name: str
@@ -108,10 +114,39 @@ class Mistake:
     _: KW_ONLY
     unit: str | None = None
     direction: str | None = None
+    kind: str = ""
+    keeps: tuple[str, ...] | None = None
 
     def __post_init__(self):
         _require(math.isfinite(self.value), "value", self.value, "must be a finite number")
         _require(bool(self.feedback.strip()), "feedback", self.feedback, "must not be empty")
+        if not self.kind:
+            object.__setattr__(self, "kind", "direction" if self.direction else "physics")
+        _require(self.kind in marking.MISTAKE_KINDS, "kind", self.kind, f"must be one of {marking.MISTAKE_KINDS}")
+        _require(self.keeps is None or set(self.keeps) <= set(marking.ROLES), "keeps", self.keeps,
+                 f"must be some of {marking.ROLES}")
+
+    @property
+    def loses(self) -> tuple[str, ...]:
+        """The roles of the part's mark lines this mistake loses."""
+        if self.keeps is not None:
+            return tuple(role for role in marking.ROLES if role not in self.keeps)
+        return marking.mistake_losses(self.kind)
+
+
+@dataclass(frozen=True)
+class Alternative:
+    """A value the mark scheme also accepts for a part (SI units): from another valid route
+    ("4500 or 4600"), or what the scheme's own rounded working gives. ``why`` says which, for
+    the feedback."""
+
+    value: float
+    why: str
+
+    def __post_init__(self):
+        object.__setattr__(self, "value", float(self.value))
+        _require(math.isfinite(self.value), "value", self.value, "must be a finite number")
+        _require(bool(self.why.strip()), "why", self.why, "must say where the value comes from")
 
 
 @dataclass(frozen=True)
@@ -212,6 +247,11 @@ class Part:
     answer_from: Callable[..., float] | None = field(default=None, compare=False, repr=False)
     answer_for_g: Callable[[float], float] | None = field(default=None, compare=False, repr=False)
     ecf: Ecf | None = None
+    #: Other valid methods for error carried forward (e.g. the tension from the hanging mass
+    #: as well as from the block): each is tried in turn.
+    ecf_also: tuple[Ecf, ...] = ()
+    #: Values the scheme also accepts (another route, a range's ends are not needed: see GraphPart).
+    alternatives: tuple[Alternative, ...] = ()
     kind: ClassVar[str] = "numeric"
 
     def __post_init__(self):
@@ -234,6 +274,8 @@ class Part:
                  "is only for a part that asks for a size (direction 'none')")
         _require((self.answer_from is None) == (not self.working), "working", self.working,
                  "and answer_from go together")
+        _require(not self.ecf_also or self.ecf is not None, "ecf_also", self.ecf_also,
+                 "needs ecf, the first method, too")
         if self.answer_from is not None:
             # The working must lead to the answer, or "rounded part-way" would be a guess.
             worked = self.answer_from(*(step.value for step in self.working))
@@ -246,7 +288,8 @@ class Part:
             g_ten = Mistake(
                 "used g = 10 m s⁻²", self._size(self.answer_for_g(G_TEN)),
                 "You used g = 10 m s⁻². The data give g = 9.81 m s⁻²: with 10 the answer "
-                "is out in the second significant figure, which loses the accuracy mark (A1).")
+                "is out in the second significant figure, which loses the accuracy mark (A1).",
+                kind="slip")
             object.__setattr__(self, "mistakes", (*self.mistakes, g_ten))
         for mistake in self.mistakes:
             _require(mistake.direction is None or mistake.direction in self.choices,
@@ -280,6 +323,11 @@ class Part:
         return any(m.unit is None and m.direction is None
                    and number(m.value, self.check_sig_figs) == number(value, self.check_sig_figs)
                    for m in self.mistakes)
+
+    @property
+    def ecf_methods(self) -> tuple[Ecf, ...]:
+        """Every valid method that carries an earlier answer forward to this part."""
+        return () if self.ecf is None else (self.ecf, *self.ecf_also)
 
     @property
     def g_nine_eight(self) -> float | None:
@@ -339,12 +387,13 @@ class Part:
             "revisit": self.revisit,
             "mistakes": [
                 {"name": m.name, "value": m.value, "unit": m.unit, "direction": m.direction,
-                 "feedback": m.feedback}
+                 "feedback": m.feedback, "loses": list(m.loses)}
                 for m in self.mistakes
             ],
+            "alternatives": [{"value": a.value, "why": a.why} for a in self.alternatives],
             "gNineEight": self.g_nine_eight,
             "roundedPartWay": [{"value": value, "rounded": what} for value, what in self.rounded_part_way],
-            "ecf": self.ecf.browser_data() if self.ecf else None, "kind": self.kind,
+            "ecf": [method.browser_data() for method in self.ecf_methods], "kind": self.kind,
         }
 
 
@@ -484,6 +533,7 @@ class ChoicePart:
     mistakes: ClassVar[tuple] = ()
     direction: ClassVar[str] = "none"
     ecf: ClassVar[None] = None
+    ecf_methods: ClassVar[tuple] = ()
 
     def __post_init__(self):
         _require(len(self.options) == len(OPTION_LETTERS), "options", len(self.options),
@@ -505,7 +555,8 @@ class ChoicePart:
         return {"id": part_id, "kind": self.kind, "prompt": self.prompt, "answer": self.answer,
                 "revisit": self.revisit,
                 "options": [{"letter": letter, "html": textformat.to_html(o.text, paragraphs=False),
-                             "mistake": o.mistake, "feedback": o.feedback}
+                             "mistake": o.mistake, "feedback": o.feedback,
+                             **({"loses": list(marking.mistake_losses("physics"))} if o.mistake else {})}
                             for letter, o in zip(OPTION_LETTERS, self.options, strict=True)]}
 
 
@@ -539,6 +590,7 @@ class ExplainPart:
     mistakes: ClassVar[tuple] = ()
     direction: ClassVar[str] = "none"
     ecf: ClassVar[None] = None
+    ecf_methods: ClassVar[tuple] = ()
     revisit: ClassVar[str] = ""
 
     def __post_init__(self):
@@ -558,15 +610,24 @@ class Mark:
     """One line of the mark scheme (physics_figures.textformat), the mark it earns and its part(s).
 
     part: the ids of the parts the line belongs to ("a", or "ab" for working that
-    serves two parts); "" in a one-part question means that part.
+    serves two parts); "" in a one-part question means that part. A line of two parts is
+    earned in one of them (``Question.owner``), so a right part never shows fewer than its
+    own marks. earns: "direction" for the B1 that is a direction's own (it alone is lost
+    for a wrong direction); otherwise the line's code says what it earns (marking.py).
     """
 
     text: str
     code: str = ""
     part: str = ""
+    _: KW_ONLY
+    earns: str = ""
 
     def __post_init__(self):
         _require(self.code in MARK_CODES, "code", self.code, f"must be one of {MARK_CODES}")
+        _require(not self.earns or self.code == "B1", "earns", self.earns,
+                 "is for a B1 line (a direction's own mark); C1, M1 and A1 earn what their code says")
+        if self.earns:
+            marking.line_roles(self.code, earns=self.earns)  # raises ValueError naming a bad role
         _require("$" not in self.text, "text", self.text,
                  "must be in the text format (m s<sup>−1</sup>, ×, −), not $...$ maths")
         textformat.parse(self.text)  # raises ValueError naming a bad tag
@@ -602,22 +663,95 @@ class Question:
                  "must award at least one mark")
         self._check_mark_codes()
         self._check_ecf()
+        self._check_direction_lines()
         if self.text:
             textformat.parse(self.text)  # raises ValueError naming a bad tag
 
     def _check_ecf(self) -> None:
-        """A later part's formula must give its key from the earlier keys: one source."""
+        """Every method of a later part must give its key from the earlier keys: one source."""
         answers = dict(zip(self.part_ids, (p.value for p in self.parts), strict=True))
         for index, part in enumerate(self.parts):
-            if part.ecf is None:
+            for method in part.ecf_methods:
+                _require(all(PART_IDS.index(u) < index for u in method.uses), "ecf", method.formula,
+                         f"may use only earlier parts than ({self.part_ids[index]}) in {self.key}")
+                worked = method.evaluate(answers)
+                if part.direction != "signed":
+                    worked = abs(worked)
+                _require(math.isclose(worked, part.value, rel_tol=1e-9, abs_tol=1e-12), "ecf", method.formula,
+                         f"must give ({self.part_ids[index]})'s key {part.value!r} in {self.key}, not {worked!r}")
+
+    def _check_direction_lines(self) -> None:
+        """A line that earns a direction belongs to a part that asks for one."""
+        for mark in self.mark_scheme:
+            if mark.earns == "direction":
+                part = self.parts[self.part_ids.index(self.owner(mark))]
+                _require(part.direction != "none", "earns", mark.earns,
+                         f"'direction' needs a part that asks for a direction ({self.key}: {mark.text!r})")
+
+    def owner(self, mark: Mark) -> str:
+        """The part whose marks a line counts in. A line of two parts ("(a, b) C1 C1") goes to
+        the one of them with fewer marks so far (the earlier on a tie), so the working's marks
+        stay spread over the parts it serves and each is earned on that part's own terms."""
+        return self._owners[self.mark_scheme.index(mark)]
+
+    @cached_property
+    def _owners(self) -> list[str]:
+        counts = dict.fromkeys(self.part_ids, 0)
+        owners: list[str] = [""] * len(self.mark_scheme)
+        shared = []
+        for index, mark in enumerate(self.mark_scheme):
+            if not mark.code:
                 continue
-            _require(all(PART_IDS.index(u) < index for u in part.ecf.uses), "ecf", part.ecf.formula,
-                     f"may use only earlier parts than ({self.part_ids[index]}) in {self.key}")
-            worked = part.ecf.evaluate(answers)
-            if part.direction != "signed":
-                worked = abs(worked)
-            _require(math.isclose(worked, part.value, rel_tol=1e-9, abs_tol=1e-12), "ecf", part.ecf.formula,
-                     f"must give ({self.part_ids[index]})'s key {part.value!r} in {self.key}, not {worked!r}")
+            parts = self.parts_of(mark)
+            if len(parts) == 1:
+                owners[index] = parts[0]
+                counts[parts[0]] += 1
+            else:
+                shared.append((index, parts))
+        for index, parts in shared:
+            fewest = min(parts, key=lambda part: (counts[part], parts.index(part)))
+            owners[index] = fewest
+            counts[fewest] += 1
+        return owners
+
+    def part_marks(self) -> list[int]:
+        """The marks of each part, [2] on a paper: the one number the site, the sheets and
+        Moodle print."""
+        owners = [o for o in self._owners if o]
+        return [owners.count(part_id) for part_id in self.part_ids]
+
+    def line_roles(self, mark: Mark) -> tuple[str, ...]:
+        """What a line earns (marking.py). In a part that asks for a direction but has no line
+        of its own for it, the answer line carries the direction: a wrong one loses the A1."""
+        roles = marking.line_roles(mark.code, earns=mark.earns)
+        part_id = self.owner(mark)
+        part = self.parts[self.part_ids.index(part_id)]
+        own_line = any(m.earns == "direction" for m in self.mark_scheme if m.code and self.owner(m) == part_id)
+        if part.direction != "none" and not own_line and "answer" in roles:
+            roles = (*roles, "direction")
+        return roles
+
+    def scheme_alternatives(self, index: int) -> tuple[Alternative, ...]:
+        """What the scheme's own working gives for a later part: its formula worked from the
+        earlier answers as the key prints them, where that differs from the key at the
+        marker's precision (an examiner credits it)."""
+        part = self.parts[index]
+        if part.kind != "numeric" or not part.ecf_methods:
+            return ()
+        printed = {pid: round_number(p.value, p.shown_sig_figs) if p.value is not None else None
+                   for pid, p in zip(self.part_ids, self.parts, strict=True)}
+        found: dict[str, Alternative] = {}
+        for method in part.ecf_methods:
+            if any(printed[u] is None for u in method.uses):
+                continue
+            value = method.evaluate({u: float(printed[u]) for u in method.uses})
+            value = value if part.direction == "signed" else abs(value)
+            typed = number(value, part.check_sig_figs)
+            if part._accepted(value) or part._named(value) or typed in found:
+                continue
+            found[typed] = Alternative(value, "the value the scheme's working gives from the "
+                                              "earlier answers as printed")
+        return tuple(found.values())
 
     def _check_mark_codes(self) -> None:
         """9702's codes: M1 only where a part asks to show, explain or state; every A1
@@ -664,12 +798,29 @@ class Question:
         return sum(1 for m in self.mark_scheme if m.code)
 
     def browser_data(self) -> dict:
-        """What the marking script needs: the parts and, per mark line, its part(s) and code."""
-        return {"id": self.key,
-                "parts": [p.browser_data(i) for i, p in zip(self.part_ids, self.parts, strict=True)],
-                "marks": [{"parts": list(self.parts_of(m)), "code": m.code,
-                           "html": textformat.to_html(m.text, paragraphs=False) if self.text else ""}
-                          for m in self.mark_scheme if m.code]}
+        """What the marking script needs: the parts and, per mark line, the part it counts in,
+        its code and the roles it plays (marking.py)."""
+        parts = []
+        for index, (part_id, part) in enumerate(zip(self.part_ids, self.parts, strict=True)):
+            data = part.browser_data(part_id)
+            extra = self.scheme_alternatives(index)
+            if extra:
+                data["alternatives"] = data["alternatives"] + [{"value": a.value, "why": a.why} for a in extra]
+            parts.append(data)
+        lines = [m for m in self.mark_scheme if m.code]
+        return {"id": self.key, "parts": parts,
+                "marks": [self._line_data(m, index, lines) for index, m in enumerate(lines)]}
+
+    def _line_data(self, mark: Mark, index: int, lines: list[Mark]) -> dict:
+        data = {"part": self.owner(mark), "code": mark.code, "roles": list(self.line_roles(mark)),
+                "html": textformat.to_html(mark.text, paragraphs=False) if self.text else ""}
+        part = self.parts[self.part_ids.index(data["part"])]
+        if part.kind == "explain" and mark.code == "A1":
+            # a self-marked A1 depends on the M1 before it in its part (9702's M1 A1)
+            before = [i for i in range(index) if lines[i].code == "M1" and self.owner(lines[i]) == data["part"]]
+            if before:
+                data["needs"] = before[-1]
+        return data
 
     def variant_data(self) -> dict:
         """One variant for the browser's New numbers: its text, mark scheme and marking data."""

@@ -333,12 +333,9 @@ def test_site_offers_the_pdfs_for_download(site_dir):
 
 
 def _part_marks(question) -> list[int]:
-    """Each part's marks as the sheet prints them: a mark line counts for the last part it
-    belongs to (book/_ext/questions.part_marks, the browser's award)."""
-    count = dict.fromkeys(question.part_ids, 0)
-    for line in question.browser_data()["marks"]:
-        count[line["parts"][-1]] += 1
-    return [count[part_id] for part_id in question.part_ids]
+    """Each part's marks as the browser awards them: the lines its data gives that part."""
+    lines = [line["part"] for line in question.browser_data()["marks"]]
+    return [lines.count(part_id) for part_id in question.part_ids]
 
 
 @pytest.mark.parametrize("number", range(1, len(all_questions()) + 1),

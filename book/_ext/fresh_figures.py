@@ -126,10 +126,28 @@ class ImportGraph:
                 todo |= self.direct(module) - seen
         return seen
 
+    def data_files(self, module: str) -> list[Path]:
+        """The data files a module reads: those beside it that a string in its code names
+        (``Path(__file__).with_name("marking_rules.json")``)."""
+        path = self.path(module)
+        names = {node.value for node in ast.walk(ast.parse(path.read_bytes()))
+                 if isinstance(node, ast.Constant) and isinstance(node.value, str)
+                 and re.fullmatch(r"[\w-]+\.\w+", node.value) and not node.value.endswith(".py")}
+        return sorted(path.with_name(name) for name in names if path.with_name(name).is_file())
+
+    def files(self, modules: Iterable[str]) -> list[Path]:
+        """Every file of the closure of `modules`: the modules and the data files they read."""
+        closure = self.closure(modules)
+        found = {self.path(module) for module in closure}
+        for module in closure:
+            found.update(self.data_files(module))
+        return sorted(found)
+
     def digest(self, modules: Iterable[str]) -> str:
-        """SHA-256 over the relative path and bytes of every file of the closure of `modules`."""
+        """SHA-256 over the relative path and bytes of every file of the closure of `modules`
+        (data files included)."""
         digest = hashlib.sha256()
-        for path in sorted(self.path(module) for module in self.closure(modules)):
+        for path in self.files(modules):
             digest.update(path.relative_to(self.root).as_posix().encode() + b"\0")
             digest.update(path.read_bytes() + b"\0")
         return digest.hexdigest()
@@ -176,8 +194,8 @@ def _record(env, docname: str, modules: Iterable[str]) -> None:
     record["digest"] = graph.digest(record["modules"])
     # Sphinx's own dependency list too (by mtime: a touched file re-reads the page, whose
     # unchanged digest then finds its outputs in the cache).
-    for module in sorted(graph.closure(modules)):
-        env.note_dependency(str(graph.path(module)))
+    for path in graph.files(modules):
+        env.note_dependency(str(path))
 
 
 def uses_modules(env, *modules: str) -> None:

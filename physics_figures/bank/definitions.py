@@ -81,7 +81,7 @@ def tennis_ball(grams: float = 57.0, speed: float = 50.0) -> Question:
                  revisit="Momentum = mass × velocity, with the mass in kg.",
                  mistakes=(
                      Mistake("mass left in grams", grams * speed,
-                             f"You used the mass in g. Convert to kg first: {g} g = {kg} kg."),
+                             f"You used the mass in g. Convert to kg first: {g} g = {kg} kg.", kind="slip"),
                      Mistake("kinetic energy instead of momentum", kinetic_energy(mass, speed),
                              "That is the kinetic energy, ½mv², in J. Momentum is mv, in N s.", unit="J"),
                      Mistake("mass divided by speed", mass / speed,

@@ -101,7 +101,7 @@ def skydiver_parachute_opens(mass: float = 70.0, open_drag: float = 1500.0) -> Q
                  f"= {w} N", "B1", "a"),
             Mark(f"a = ({d} − {w}) / {m}", "C1", "b"),
             Mark(f"= {n(a, 3)} {PER_S2}", "A1", "b"),
-            Mark("<strong>upwards</strong> (she slows down while still falling)", "B1", "b"),
+            Mark("<strong>upwards</strong> (she slows down while still falling)", "B1", "b", earns="direction"),
         ),
     )
 
@@ -466,7 +466,7 @@ def sphere_in_liquid(grams: float = 6.3, volume_cm3: float = 0.80, density: floa
                  mistakes=(
                      Mistake("volume left in cm³", upthrust(density, volume_cm3),
                              f"You used the volume in cm³. Convert it to m³ first: {vol} cm³ = "
-                             f"{vol} × 10⁻⁶ m³."),
+                             f"{vol} × 10⁻⁶ m³.", kind="slip"),
                      Mistake("sphere's density used, not the liquid's", w_,
                              "That is the sphere's weight. The upthrust uses the density of the "
                              "liquid: ρgV."),
@@ -487,7 +487,7 @@ def sphere_in_liquid(grams: float = 6.3, volume_cm3: float = 0.80, density: floa
                              "The upthrust acts upwards, with the drag: weight = drag + upthrust, so "
                              "subtract it."),
                      Mistake("mass left in grams", weight(grams) - u,
-                             f"You used the mass in g. Convert to kg first: {gr} g = {n(mass, 2)} kg."),
+                             f"You used the mass in g. Convert to kg first: {gr} g = {n(mass, 2)} kg.", kind="slip"),
                  )),
             Part("size of the acceleration at half the terminal velocity", a, "m s^-2", "acceleration",
                  units=M_S2, shown_sig_figs=3,

@@ -134,7 +134,7 @@ def ball_bounces_off_wall(mass: float = 0.16, speed_in: float = 15.0, speed_out:
                  revisit="Average force = change in momentum ÷ contact time, with the time in s.",
                  mistakes=(
                      Mistake("milliseconds not converted", dp / contact_ms,
-                             f"You divided by {t_ms} instead of {t}: convert ms to s."),
+                             f"You divided by {t_ms} instead of {t}: convert ms to s.", kind="slip"),
                      Mistake("u - v carried through", slip / contact,
                              "You used m(u − v) for the change in momentum. The ball reverses: "
                              "Δp = m(u + v)."),
@@ -364,7 +364,7 @@ def ball_bounce_momentum_time(before: float = 2.4, after: float = 1.6, arrives: 
             Mark(f"{reading(-after, 0.05)} N s (negative: away from the wall)", "B1", "b"),
             Mark(f"F = Δp / Δt = ({reading(-after, 0.05)} − {reading(before, 0.05)}) / {w(contact)}", "C1", "c"),
             Mark(f"= {n(abs(force), 2)} N", "A1", "c"),
-            Mark("<strong>away from the wall</strong>", "B1", "c"),
+            Mark("<strong>away from the wall</strong>", "B1", "c", earns="direction"),
         ),
     )
 

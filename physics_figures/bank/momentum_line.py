@@ -61,7 +61,7 @@ def rifle_recoil(rifle: float = 4.0, bullet: float = 0.010, bullet_speed: float 
                              f"{b} × {s} = {w(bullet_momentum)} is the bullet's momentum (in N s). Divide "
                              "it by the rifle's mass to get the rifle's speed."),
                      Mistake("mass in grams", bullet * 1000 * bullet_speed / rifle,
-                             f"You used the bullet's mass in g. Convert to kg: {b} kg."),
+                             f"You used the bullet's mass in g. Convert to kg: {b} kg.", kind="slip"),
                      Mistake("kinetic energy conserved", bullet_speed * math.sqrt(bullet / rifle),
                              "You set the kinetic energies equal. In an explosion kinetic energy "
                              "increases (from the chemical energy of the charge); only momentum is "
@@ -282,7 +282,7 @@ def trolleys_spring_apart(mass_a: float = 1.5, mass_b: float = 0.50, speed_b: fl
         mark_scheme=(
             Mark(f"Total momentum zero: {a_} v<sub>A</sub> + {b_} × {u} = 0", "C1", "a"),
             Mark(f"v<sub>A</sub> = {n(v_a, 2)} {PER_S}: {n(abs(v_a), 2)} {PER_S}", "A1", "a"),
-            Mark("the opposite way to B", "B1", "a"),
+            Mark("the opposite way to B", "B1", "a", earns="direction"),
             Mark(f"E<sub>k</sub> = ½ × {a_} × {w(abs(v_a))}<sup>2</sup> + ½ × {b_} × {u}<sup>2</sup>", "C1", "b"),
             Mark(f"= {n(energy, 2)} J", "A1", "b"),
         ),

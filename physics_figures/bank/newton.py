@@ -33,6 +33,7 @@ from ..variants import Draw, Template
 from ._common import M_S2, PER_S2, w
 
 a_answer, trailer_mass_symbol, trailer_resistance_symbol = sympy.symbols("a trailer_mass trailer_resistance")
+hanging_mass_symbol, gravity_symbol = sympy.symbols("hanging_mass gravity")
 block_mass_symbol, friction_symbol, thrust_symbol, rocket_mass_symbol = sympy.symbols(
     "block_mass friction thrust rocket_mass")
 
@@ -416,6 +417,9 @@ def block_and_hanging_mass(block_mass: float = 1.2, hanging_mass: float = 0.60,
                  answer_for_g=lambda g_: pulled(g_).tensions[0],
                  ecf=Ecf(friction_symbol + block_mass_symbol * a_answer,
                          {"friction": friction, "block_mass": block_mass}),
+                 # or the hanging mass alone: mg - T = ma, so T = m(g - a)
+                 ecf_also=(Ecf(hanging_mass_symbol * (gravity_symbol - a_answer),
+                               {"hanging_mass": hanging_mass, "gravity": G_EARTH}),),
                  revisit="F = ma for the block alone: T − friction = block mass × a (or, for the "
                          "hanging mass alone, mg − T = ma).",
                  mistakes=(

@@ -212,7 +212,7 @@ def explosion_three_pieces(m1: float = 0.20, v1: float = 30.0, m2: float = 0.30,
             Mark(f"= {n(speed, 2)} {PER_S}", "A1", "b"),
             Mark(f"tan θ = {w(p2)} / {w(p1)}", "C1", "c"),
             Mark(f"θ = {n(angle, 3)}°", "A1", "c"),
-            Mark("south of west (opposite to the resultant of the other two)", "B1", "c"),
+            Mark("south of west (opposite to the resultant of the other two)", "B1", "c", earns="direction"),
         ),
     )
 
@@ -340,7 +340,7 @@ def oblique_wall_bounce(mass: float = 0.060, speed: float = 20.0, angle: float =
                  revisit="Average force = change in momentum ÷ contact time, with the time in s.",
                  mistakes=(
                      Mistake("milliseconds not converted", average_force(dp, contact_ms),
-                             f"You divided by {t_ms} instead of {t}: convert ms to s."),
+                             f"You divided by {t_ms} instead of {t}: convert ms to s.", kind="slip"),
                      Mistake("forgot the reversal", average_force(across, contact),
                              "The change in momentum is 2p sin θ, not p sin θ: the component at right "
                              "angles to the wall reverses."),
@@ -354,7 +354,7 @@ def oblique_wall_bounce(mass: float = 0.060, speed: float = 20.0, angle: float =
             Mark(f"= {n(across, 2)} N s", "A1", "a"),
             Mark(f"Δp = 2 × {n(across, 3)}", "C1", "b"),
             Mark(f"= {n(dp, 2)} N s", "A1", "b"),
-            Mark("away from the wall, at right angles to it", "B1", "b"),
+            Mark("away from the wall, at right angles to it", "B1", "b", earns="direction"),
             Mark(f"F = {n(dp, 3)} / {t}", "C1", "c"),
             Mark(f"= {n(force, 2)} N, away from the wall at right angles to it", "A1", "c"),
         ),

@@ -149,7 +149,7 @@ def car_and_trailer() -> Question:
             Mark(f"Trailer alone: T − {n(trailer_drag, 1)} = {n(trailer, 1)} × {n(a, 2)}", "C1", "b"),
             Mark(f"T = {n(tension, 2)} N", "A1", "b"),
             Mark(f"{n(tension, 2)} N", "B1", "c"),
-            Mark("backwards (opposite to the motion), by Newton's third law", "B1", "c"),
+            Mark("backwards (opposite to the motion), by Newton's third law", "B1", "c", earns="direction"),
         ),
     )
 
@@ -199,7 +199,7 @@ def ball_off_a_wall() -> Question:
                  mistakes=(
                      Mistake("time left in ms", dp / (contact * 1000),
                              f"You divided by {in_ms}, the time in ms. Convert to seconds: {in_ms} ms = "
-                             f"{n(contact, 2)} s."),
+                             f"{n(contact, 2)} s.", kind="slip"),
                      Mistake("speeds subtracted", sizes_subtracted / contact,
                              "Your change in momentum subtracts the speeds. The ball turns round, so the "
                              "size of Δp is the mass × the sum of the speeds; then F = Δp / Δt."),
@@ -218,7 +218,7 @@ def ball_off_a_wall() -> Question:
                  mistakes=(
                      Mistake("time left in ms", dp / (contact * 1000),
                              f"That is Δp ÷ {in_ms}. The time must be in seconds, {n(contact, 2)} s; then the force "
-                             "on the wall equals the force on the ball, by Newton's third law."),
+                             "on the wall equals the force on the ball, by Newton's third law.", kind="slip"),
                  )),
         ),
         mark_scheme=(

@@ -61,23 +61,9 @@ def template_marks(template: Template) -> int:
 
 
 def part_marks(question: Question) -> list[int]:
-    """The marks printed beside each part, adding up to the question's marks. A mark line
-    that serves two parts ("ab": working for both) goes to the one of them with fewer
-    marks so far (the earlier on a tie), so the marks stay spread as the working is."""
-    counts = dict.fromkeys(question.part_ids, 0)
-    shared = []
-    for mark in question.mark_scheme:
-        if not mark.code:
-            continue
-        parts = question.parts_of(mark)
-        if len(parts) == 1:
-            counts[parts[0]] += 1
-        else:
-            shared.append(parts)
-    for parts in shared:
-        fewest = min(parts, key=lambda part: (counts[part], parts.index(part)))
-        counts[fewest] += 1
-    return [counts[part] for part in question.part_ids]
+    """The marks printed beside each part: the question's own count (Question.part_marks),
+    the same number the site and Moodle give."""
+    return question.part_marks()
 
 
 @dataclass(frozen=True)

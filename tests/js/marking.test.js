@@ -170,27 +170,31 @@ test("default rule: 2 or more significant figures; fewer is wrong", () => {
   assert.equal(code(drag, "686.70", "N"), "correct");
   assert.equal(code(acceleration, "12", "m s^-2", "upwards"), "correct");
   const few = mark(velocity, { value: "-2", unit: "m/s" });
-  assert.equal(few.code, "more-sf");
+  assert.equal(few.code, "too-few-sf");
   assert.equal(few.correct, false);
-  assert.match(few.message, /Right value, but give more significant figures/);
+  assert.match(few.message, /^1 s\.f\.: the A1 needs 2 or more\. The value is right/);
   const zeros = mark(Object.assign({}, drag, { value: 703.2 }), { value: "700", unit: "N" });
   assert.equal(zeros.code, "correct"); // 700 read as 2 s.f. is 703.2 rounded
 });
 
-test("'right value' needs agreement to 2 s.f. under some reading of the trailing zeros", () => {
-  // 700 and 7e2 agree with 686.7 only at 1 s.f.: they are g = 10's answer, not "right".
-  for (const typed of ["700", "7e2", "7.0 × 10²", "7.0e2"]) assert.notEqual(code(drag, typed, "N"), "more-sf", typed);
-  assert.equal(code(drag, "700", "N"), "wrong");
-  assert.equal(code(acceleration, "1e1", "m s^-2", "upwards"), "wrong");
-  assert.equal(code(dragG, "700", "N"), "mistake");
+test("a value right only to 1 s.f. is the key at 1 s.f.: too few figures, not wrong physics", () => {
+  // 700 and 7e2 are 686.7 to 1 s.f.; 7.0 × 10² (2 s.f.) is not 686.7, it is g = 10's answer.
+  for (const typed of ["700", "7e2"]) assert.equal(code(drag, typed, "N"), "too-few-sf", typed);
+  for (const typed of ["60", "6e1"]) assert.equal(code(Object.assign({}, drag, { value: 56.0 }), typed, "N"), "too-few-sf", typed);
+  assert.equal(code(Object.assign({}, drag, { value: 225 }), "200", "N"), "too-few-sf");
+  assert.equal(code(Object.assign({}, drag, { value: 0.275 }), "0.3", "N"), "too-few-sf");
+  assert.equal(code(drag, "7.0 × 10²", "N"), "wrong");
+  assert.equal(code(drag, "8e2", "N"), "wrong"); // not the key at any precision
+  assert.equal(code(acceleration, "1e1", "m s^-2", "upwards"), "too-few-sf");
+  assert.equal(code(dragG, "700", "N"), "mistake"); // 700 may be 3 s.f.: g = 10's answer, named
   assert.equal(mark(dragG, { value: "7.0 × 10²", unit: "N" }).mistake, "used g = 10 m s⁻²");
-  assert.equal(code(dragG, "7e2", "N"), "wrong"); // 1 s.f. is never read as a named mistake
+  assert.equal(code(dragG, "7e2", "N"), "too-few-sf"); // 1 s.f. is never read as a named mistake
 });
 
 test("a question can ask for more significant figures", () => {
   assert.equal(code(showThat, "687", "N"), "correct");
-  assert.equal(code(showThat, "690", "N"), "more-sf"); // read as 2 s.f., not 3
-  assert.equal(code(showThat, "6.9e2", "N"), "more-sf");
+  assert.equal(code(showThat, "690", "N"), "too-few-sf"); // read as 2 s.f., not 3
+  assert.match(mark(showThat, { value: "6.9e2", unit: "N" }).message, /^2 s\.f\.: the A1 needs 3 or more/);
 });
 
 test("intermediate values rounded to 3 s.f. still pass; only the working's own rounding is called rounding", () => {
@@ -232,11 +236,11 @@ test("named mistakes are matched before generic feedback", () => {
 test("direction: signed answers and sign slips", () => {
   assert.equal(code(velocity, "-2.0", "m s^-1"), "correct");
   assert.equal(code(velocity, "−2.0", "m/s"), "correct");
-  assert.equal(code(velocity, "-2", "m/s"), "more-sf");
+  assert.equal(code(velocity, "-2", "m/s"), "too-few-sf");
   const slip = mark(velocity, { value: "2.0", unit: "m s^-1" });
   assert.equal(slip.code, "sign");
   assert.match(slip.message, /sign is wrong. Positive is forwards/);
-  assert.equal(code(speed, "-7.5", "m/s"), "sign"); // a speed is a size
+  assert.equal(code(speed, "-7.5", "m/s"), "sign-on-size"); // a speed is a size
   assert.equal(code(velocity, "- 2.0", "m s^-1"), "correct"); // a space after the minus sign
   assert.equal(code(velocity, "− 2.0", "m s^-1"), "correct");
 });
@@ -260,7 +264,9 @@ test("direction: magnitude and direction answers", () => {
   const generic = mark(plain, { value: "11.6", unit: "m s^-2", direction: "downwards" });
   assert.equal(generic.code, "direction");
   assert.match(generic.message, /direction is wrong. Drag > weight./);
-  assert.equal(code(acceleration, "-11.6", "m s^-2", "upwards"), "sign");
+  // A size with a minus sign, its direction asked separately and right: "ignore sign".
+  assert.equal(code(acceleration, "-11.6", "m s^-2", "upwards"), "ignore-sign");
+  assert.equal(code(plain, "-11.6", "m s^-2", "downwards"), "direction");
 });
 
 test("a wrong method gets the idea to revisit", () => {
@@ -298,7 +304,8 @@ test("a unit in the wrong case says units are case-sensitive and what was meant"
 });
 
 test("a unit in the wrong case loses only the A1", () => {
-  const data = { parts: [Object.assign({ id: "a" }, mass)], marks: [{ parts: ["a"], code: "C1" }, { parts: ["a"], code: "A1" }] };
+  const data = { parts: [Object.assign({ id: "a" }, mass)],
+    marks: [{ part: "a", code: "C1", roles: ["method"] }, { part: "a", code: "A1", roles: ["answer"] }] };
   const { results, marks } = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static",
     "questions.js")).markQuestion(data, { a: { value: "12", unit: "Kg" } });
   assert.equal(results.a.code, "unit-case");

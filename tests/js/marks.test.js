@@ -12,9 +12,10 @@ const data = {
     { id: "a", value: 15, unit: "N s", units: "N s", quantity: "momentum", direction: "none", mistakes: [], revisit: "r" },
     { id: "b", value: 7.5, unit: "m s^-1", units: "m s^-1", quantity: "velocity", direction: "choice",
       choices: ["forwards", "backwards"], answerDirection: "forwards", mistakes: [], revisit: "r",
-      ecf: { js: "a/mass", args: ["a", "mass"], uses: ["a"], values: { mass: 2 } } }],
-  marks: [{ parts: ["a"], code: "C1" }, { parts: ["a"], code: "A1" },
-    { parts: ["b"], code: "C1" }, { parts: ["b"], code: "A1" }, { parts: ["b"], code: "B1" }]
+      ecf: [{ js: "a/mass", args: ["a", "mass"], uses: ["a"], values: { mass: 2 } }] }],
+  marks: [{ part: "a", code: "C1", roles: ["method"] }, { part: "a", code: "A1", roles: ["answer"] },
+    { part: "b", code: "C1", roles: ["method"] }, { part: "b", code: "A1", roles: ["answer"] },
+    { part: "b", code: "B1", roles: ["direction"] }]
 };
 const ask = (a, b, dir) => markQuestion(data, { a: { value: a, unit: "N s" }, b: { value: b, unit: "m/s", direction: dir } });
 
@@ -23,13 +24,13 @@ test("right answers earn every mark", () => {
 });
 
 test("a later part worked from a wrong earlier answer earns its marks as ecf", () => {
-  const r = ask("20", "10", "forwards");
+  const r = ask("22", "11", "forwards");
   assert.equal(r.results.b.code, "ecf");
   assert.deepEqual(r.marks.byPart, { a: [0, 2], b: [3, 3] });
 });
 
 test("ecf in the wrong direction loses only the direction's B1", () => {
-  const r = ask("20", "10", "backwards");
+  const r = ask("22", "11", "backwards");
   assert.equal(r.results.b.code, "direction");
   assert.match(r.results.b.message, /ecf/);
   assert.deepEqual(r.marks.byPart.b, [2, 3]);
@@ -44,7 +45,8 @@ test("an earlier answer right to 2 s.f. is not an error: nothing is carried from
 
 test("a self-marked explanation: an A1 counts only with the M1 before it", () => {
   const explain = { id: "e", parts: [{ id: "a", kind: "explain" }],
-    marks: [{ parts: ["a"], code: "B1" }, { parts: ["a"], code: "M1" }, { parts: ["a"], code: "A1" }] };
+    marks: [{ part: "a", code: "B1", roles: ["answer"] }, { part: "a", code: "M1", roles: ["method"] },
+      { part: "a", code: "A1", roles: ["answer"], needs: 1 }] };
   const marks = (ticked) => markQuestion(explain, { a: { text: "drag grows", ticked } }).marks.earned;
   assert.equal(marks([0, 2]), 1);
   assert.equal(marks([0, 1, 2]), 3);
@@ -58,8 +60,9 @@ const graph = {
     { id: "a", kind: "graph", value: 20, tolerance: 0.25, unit: "m s^-1", units: "m s^-1", quantity: "velocity",
       minSf: 1, direction: "none", mistakes: [], revisit: "r" },
     { id: "b", value: 0.49, unit: "kg m^-1", units: "kg m^-1", quantity: "drag constant", direction: "none",
-      mistakes: [], revisit: "r", ecf: { js: "196/Math.pow(a, 2)", args: ["a"], uses: ["a"], values: {} } }],
-  marks: [{ parts: ["a"], code: "B1" }, { parts: ["b"], code: "C1" }, { parts: ["b"], code: "A1" }]
+      mistakes: [], revisit: "r", ecf: [{ js: "196/Math.pow(a, 2)", args: ["a"], uses: ["a"], values: {} }] }],
+  marks: [{ part: "a", code: "B1", roles: ["answer"] }, { part: "b", code: "C1", roles: ["method"] },
+    { part: "b", code: "A1", roles: ["answer"] }]
 };
 const read = (a, b) => markQuestion(graph, { a: { value: a, unit: "m/s" }, b: { value: b, unit: "kg/m" } });
 

@@ -37,6 +37,7 @@ from notation import add_notation_script  # book/_ext/notation: the browser's nu
 from sphinx.util import logging
 from sphinx.util.docutils import SphinxDirective
 
+from physics_figures import marking  # the rule table the browser's engine reads
 from physics_figures.notation import join_units  # a number never parts from its unit
 
 __version__ = "1.0"
@@ -163,12 +164,9 @@ class QuestionDirective(SphinxDirective):
 
 
 def part_marks(data) -> list[int]:
-    """The marks of each part, as an exam paper prints them ([2]): each mark line counts for
-    the last part it belongs to (as the browser's marking awards it)."""
-    count = dict.fromkeys(data.part_ids, 0)
-    for line in data.browser_data()["marks"]:
-        count[line["parts"][-1]] += 1
-    return [count[part_id] for part_id in data.part_ids]
+    """The marks of each part, as an exam paper prints them ([2]): the question's own count,
+    the one the browser awards and the sheets and Moodle print (Question.part_marks)."""
+    return data.part_marks()
 
 
 def answer_lines(label: str, part, marks: int) -> list[nodes.Node]:
@@ -809,7 +807,7 @@ def _explain_html(base: str, part: dict, data: dict) -> str:
     points = "".join(
         f'<label class="q-point"><input type="checkbox" class="q-tick" value="{i}"> '
         f'<span class="q-point-text">{mark["html"]}</span> <strong>{mark["code"]}</strong></label>'
-        for i, mark in enumerate(data["marks"]) if part["id"] in mark["parts"])
+        for i, mark in enumerate(data["marks"]) if mark["part"] == part["id"])
     return (f'<label class="q-field q-field-wide" for="{base}-text"><span>Your answer</span>'
             f'<textarea class="q-explain" id="{base}-text" rows="4" aria-describedby="{base}-feedback">'
             f'</textarea></label>'
@@ -830,6 +828,9 @@ def visit_question_form(self, node):
         self._q_ideas_written = True
         ideas = json.dumps(_idea_links(self), ensure_ascii=False).replace("</", "<\\/")
         html.insert(0, f'<script type="application/json" class="q-ideas">{ideas}</script>')
+        # the rule table the marking engine reads (physics_figures/marking_rules.json)
+        table = json.dumps({"outcomes": marking.outcome_losses(), "sigFigs": marking.sig_figs()})
+        html.insert(0, f'<script type="application/json" class="q-rules">{table}</script>')
     labels = node.get("labels") or [""] * len(data["parts"])
     for part, legend, label in zip(data["parts"], node["legends"], labels, strict=True):
         base = f"q-{data['id']}-{part['id']}"

@@ -8,6 +8,25 @@
   // How numbers are written (book/_ext/notation): loaded before this script in a page.
   var Notation = root.Notation || require("../../notation/static/notation.js");
 
+  /* The rule table (physics_figures/marking_rules.json): what each outcome loses of a part's
+   * mark lines, by their roles. A page carries it once (script.q-rules, from the build);
+   * under Node the engine reads the file itself. This engine has no marking rule of its own. */
+  var rulesCache = null;
+  function rules() {
+    if (rulesCache) return rulesCache;
+    if (typeof document !== "undefined") {
+      var script = document.querySelector("script.q-rules");
+      rulesCache = script ? JSON.parse(script.textContent) : null;
+    } else {
+      var table = require("../../../../physics_figures/marking_rules.json"), losses = {};
+      Object.keys(table.outcomes).forEach(function (code) {
+        if (Array.isArray(table.outcomes[code].loses)) losses[code] = table.outcomes[code].loses;
+      });
+      rulesCache = { outcomes: losses, sigFigs: table.sig_figs };
+    }
+    return rulesCache;
+  }
+
   var SUPERSCRIPTS = { "⁰": "0", "¹": "1", "²": "2", "³": "3", "⁴": "4", "⁵": "5",
     "⁶": "6", "⁷": "7", "⁸": "8", "⁹": "9", "⁻": "-", "⁺": "+" };
 
@@ -293,12 +312,20 @@
     return best;
   }
 
+  /* Is value the target rounded to sf significant figures (60 for 56.0 at 1 s.f.; not 10 for 7.5)? */
+  function roundsTo(value, target, sf) {
+    var place = Math.floor(Math.log10(Math.abs(target)) + 1e-12) - sf + 1, scaled = value / Math.pow(10, place);
+    return steps(Math.abs(target), place).some(function (n) {
+      return Math.abs(Math.abs(scaled) - n) < 1e-7 * Math.max(1, n);
+    }) && (value < 0) === (target < 0);
+  }
+
   /* Compare a typed number with a target (in the same unit) at every reading
    * of its significant figures. The comparison is at the student's last digit,
    * but never finer than checkSf figures of the target: the key is only
    * trusted that far, so rounding intermediate values to 3 s.f. still passes.
-   * match: right to minSf or more. matchFewSf: too few figures, yet still the
-   * key to at least 2 s.f. (700 for 686.7 is not: 7.0 × 10² is g = 10's answer). */
+   * match: right to minSf or more. matchFewSf: the key rounded to fewer figures
+   * (60 for 56.0: right to 1 s.f.). */
   function compare(number, target, minSf, checkSf) {
     var result = { match: false, matchFewSf: false };
     if (target === 0) { result.match = number.value === 0; return result; } // zero has no significant figures
@@ -306,7 +333,7 @@
     for (var sf = number.sfMax; sf >= number.sfMin; sf--) {
       if (sf >= minSf) {
         if (stepsApart(number.value, target, Math.max(number.lead - sf + 1, checkPlace)) === 0) result.match = true;
-      } else if (stepsApart(number.value, target, Math.max(number.lead - Math.max(sf, 2) + 1, checkPlace)) === 0) {
+      } else if (roundsTo(number.value, target, sf)) {
         result.matchFewSf = true;
       }
     }
@@ -361,7 +388,7 @@
     }
     if (!unit.ok) return outcome("unreadable-unit", unit.message);
 
-    var minSf = part.minSf || 2, checkSf = part.checkSf || 3;
+    var minSf = part.minSf || rules().sigFigs.min, checkSf = part.checkSf || rules().sigFigs.check;
     var mode = part.direction || "none";
     var quantity = part.quantity, units = superscript(part.units || part.unit);
     var typed = number.value;
@@ -386,7 +413,9 @@
     function out(code, message, extra) {
       var result = outcome(code, message, extra);
       result.si = si;
-      result.valueRight = against(target, reading.scale).match || against(target, 1).match;
+      result.valueRight = !!alternative || against(target, reading.scale).match || against(target, 1).match;
+      // a direction asked for and chosen wrong (or not chosen) never earns the direction's mark
+      result.directionWrong = mode === "choice" && direction !== part.answerDirection;
       return result;
     }
 
@@ -399,7 +428,7 @@
         if (mistake.direction && mistake.direction !== direction) continue;
         var value = mode === "signed" ? mistake.value : Math.abs(mistake.value);
         if ((number.sfMax >= 2 || value === 0) && against(value, scale).match) {
-          return out("mistake", mistake.feedback, { mistake: mistake.name });
+          return out("mistake", mistake.feedback, { mistake: mistake.name, loses: mistake.loses });
         }
       }
       return null;
@@ -409,20 +438,33 @@
       var found = namedMistake(reading.dims, reading.scale);
       if (found) return found;
       var other = quantityOf(reading.dims);
-      return out("wrong-unit", (against(target, 1).match ? "The number is right, but " : "") +
+      return out(against(target, 1).match ? "wrong-unit" : "wrong", (against(target, 1).match ? "The number is right, but " : "") +
         superscript(normalise(unitText)) + (other && other !== quantity ?
           " is a unit of " + other + ", not of " + quantity + "." : " is not a unit of " + quantity + ".") +
         " Give " + quantity + " in " + units + ".");
     }
 
-    // A size typed with a minus sign is a slip, unless the part says what the sign means.
+    // A size typed with a minus sign: ignored where the direction is asked separately (the
+    // schemes' "ignore sign"), right where the part says what the sign means, else a slip.
     var signed = mode !== "signed" && typed < 0;
-    var sign = signed && !part.signMeans;
+    var signIgnored = signed && mode === "choice";
+    var sign = signed && !part.signMeans && !signIgnored;
     var result = against(target, reading.scale);
+    // A value the scheme also accepts (another route, or its own rounded working).
+    var alternative = null;
+    if (!result.match) {
+      (part.alternatives || []).some(function (alt) {
+        var byAlt = against(mode === "signed" ? alt.value : Math.abs(alt.value), reading.scale);
+        if (byAlt.match) { result = byAlt; alternative = alt; }
+        return byAlt.match;
+      });
+    }
     var directionRight = mode !== "choice" || direction === part.answerDirection;
 
     if (result.match && !sign && directionRight) {
       if (unit.empty) return out("missing-unit", "The number is right. Now give the unit: " + units + ".");
+      if (alternative) return out("alternative", "Accepted: " + alternative.why + ".");
+      if (signIgnored) return out("ignore-sign", "Correct: the minus sign is ignored, as the direction is given separately.");
       return out("correct", signed ? "Correct: the minus sign says " + part.signMeans + "." : "Correct.");
     }
     if (result.match && !sign && mode === "choice" && !direction) {
@@ -443,9 +485,8 @@
     }
 
     if (sign && result.match) {
-      return out("sign", mode === "choice" ?
-        "The size is right. Give it as a positive number and choose the direction from the list." :
-        "The size is right, but a " + quantity + " here is a size with no sign: leave out the minus sign.");
+      return out("sign-on-size", "The size is right, but a " + quantity +
+        " here is a size with no sign: leave out the minus sign.");
     }
     if (mode === "signed" && target !== 0 && compare(
       { value: -typed, sfMin: number.sfMin, sfMax: number.sfMax, lead: number.lead },
@@ -459,7 +500,8 @@
         (part.directionHint ? " " + part.directionHint : ""));
     }
     if (result.matchFewSf) {
-      return out("more-sf", "Right value, but give more significant figures: at least " + minSf +
+      var few = Math.min(number.sfMax, minSf - 1);
+      return out("too-few-sf", few + " s.f.: the A1 needs " + minSf + " or more. The value is right, so the other marks stand" +
         (number.sfMin < number.sfMax ? " (zeros at the end of a whole number may not count: write 7.0 × 10², not 700)." : "."));
     }
     // Slips computed from the working (physics_figures.questions): nothing else is called rounding.
@@ -482,7 +524,7 @@
     var option = (part.options || []).filter(function (o) { return o.letter === letter; })[0];
     if (!option) return outcome("no-choice", "Choose one of the options A to D.");
     if (letter === part.answer) return outcome("correct", "Correct.");
-    return outcome("mistake", option.feedback, { mistake: option.mistake }); // it names the idea already
+    return outcome("mistake", option.feedback, { mistake: option.mistake, loses: option.loses }); // it names the idea already
   }
 
   /* A describe-and-explain part is self-marked: the student ticks the marking points made. */
@@ -496,83 +538,87 @@
 
   // ------------------------------------------------------------ marks, as an exam awards them
 
-  // Outcomes that earn every mark of the part but the A1: the value is right, but its unit
-  // is missing or wrong, it has too few s.f., or it was rounded or used g = 9.8 part-way.
-  var ALL_BUT_A1 = ["missing-unit", "prefix", "angle-unit", "unit-case", "more-sf", "g-9.8", "rounded-part-way"];
-  var WRONG_WAY = ["direction", "sign", "missing-direction"];
-  // An earlier answer this good is not an error, so nothing is carried forward from it.
-  var NOT_AN_ERROR = ["correct", "missing-unit", "more-sf", "prefix", "angle-unit", "unit-case"];
-
-  /* Which mark lines a part's outcome loses: "none", "all", "A1", "direction" or a count kept. */
-  function lost(result, part) {
-    if (result.code === "correct" || result.code === "ecf") return { lose: "none" };
-    if (ALL_BUT_A1.indexOf(result.code) >= 0 || (result.code === "wrong-unit" && result.valueRight)) {
-      return { lose: "A1" };
-    }
-    if (WRONG_WAY.indexOf(result.code) >= 0) return { lose: "direction" };
-    if (result.code === "mistake") {
-      var named = (part.mistakes || []).filter(function (m) { return m.name === result.mistake; })[0];
-      return { lose: "all", keep: (named && named.earns) || 0 };
-    }
-    return { lose: "all", keep: 0 };
+  /* The roles of a part's mark lines that an outcome loses: a named mistake's own, else the
+   * rule table's; a direction chosen wrong loses the direction's mark whatever else. */
+  function lostRoles(result) {
+    var table = rules().outcomes;
+    var lost = result.loses || table[result.code] || table.wrong;
+    return result.directionWrong ? lost.concat(["direction"]) : lost;
   }
 
-  /* The marks earned: each mark line of data.marks ({parts, code}) is earned unless a part it
-   * belongs to loses it. Returns {earned, available, byPart: {id: [earned, available]}}. */
+  /* The marks earned: each line of data.marks ({part, code, roles}) counts in its one part and
+   * is earned unless that part's outcome loses a role it plays (a self-marked line: when
+   * ticked). Returns {earned, available, byPart: {id: [earned, available]}, lines: [bool]}. */
   function award(data, results) {
-    var byPart = {}, earned = 0;
+    var byPart = {}, earned = 0, lines = [];
     data.parts.forEach(function (part) { byPart[part.id] = [0, 0]; });
-    var kept = {};
-    data.marks.forEach(function (line) {
-      var index = data.marks.indexOf(line);
-      var ok = line.parts.every(function (id) {
-        var part = data.parts.filter(function (p) { return p.id === id; })[0];
-        if (part.kind === "explain") return ticked(data, results[id], id, index);
-        var loss = lost(results[id] || { code: "wrong" }, part);
-        var lines = data.marks.filter(function (m) { return m.parts.indexOf(id) >= 0; });
-        var isDirection = line.code === "B1" && part.direction !== "none" &&
-          lines.filter(function (m) { return m.code === "B1"; }).slice(-1)[0] === line;
-        var hasDirectionMark = part.direction !== "none" && lines.some(function (m) { return m.code === "B1"; });
-        if (loss.lose === "none") return true;
-        if (loss.lose === "A1") return line.code !== "A1";
-        if (loss.lose === "direction") return hasDirectionMark ? !isDirection : line.code !== "A1";
-        kept[id] = (kept[id] || 0) + 1; // a named mistake keeps the first lines it earns
-        return kept[id] <= loss.keep;
-      });
-      var owner = line.parts[line.parts.length - 1];
-      byPart[owner][1] += 1;
-      if (ok) { byPart[owner][0] += 1; earned += 1; }
+    data.marks.forEach(function (line, index) {
+      var part = data.parts.filter(function (p) { return p.id === line.part; })[0];
+      var result = results[line.part] || { code: "wrong" };
+      var ok = part.kind === "explain" ? ticked(data, result, index) :
+        !line.roles.some(function (role) { return lostRoles(result).indexOf(role) >= 0; });
+      byPart[line.part][1] += 1;
+      if (ok) { byPart[line.part][0] += 1; earned += 1; }
+      lines.push(ok);
     });
-    return { earned: earned, available: data.marks.length, byPart: byPart };
+    return { earned: earned, available: data.marks.length, byPart: byPart, lines: lines };
   }
 
-  /* A self-marked line counts when ticked; an A1 also needs the M1 before it in its part ticked. */
-  function ticked(data, result, id, index) {
+  /* A self-marked line counts when ticked, and when the line it needs (a dependent A1's M1,
+   * from the build) is ticked too. */
+  function ticked(data, result, index) {
     var list = (result && result.ticked) || [];
-    if (list.indexOf(index) < 0) return false;
-    if (data.marks[index].code !== "A1") return true;
-    for (var i = index - 1; i >= 0; i--) {
-      var line = data.marks[i];
-      if (line.parts.indexOf(id) >= 0 && line.code === "M1") return list.indexOf(i) >= 0;
-    }
-    return true;
+    var needs = data.marks[index].needs;
+    return list.indexOf(index) >= 0 && (needs === undefined || needs === null || list.indexOf(needs) >= 0);
   }
 
-  /* Mark every part of a question, carrying an error forward: a later part with an ecf
-   * formula (physics_figures.questions.Ecf, printed by sympy) is also marked against the
-   * student's own earlier answers, and earns its marks if it follows from them. */
+  /* What a part lost, in words: "2/3 marks: the A1 is lost; the C1 and B1 stand." */
+  function lostText(data, awarded, partId) {
+    var lost = [], kept = [];
+    data.marks.forEach(function (line, i) {
+      if (line.part === partId) (awarded.lines[i] ? kept : lost).push(line.code);
+    });
+    if (!lost.length || !kept.length) return "";
+    function list(codes) {
+      return codes.length === 1 ? codes[0] : codes.slice(0, -1).join(", ") + " and " + codes[codes.length - 1];
+    }
+    return marksText(kept.length, kept.length + lost.length) + ": the " + list(lost) +
+      (lost.length === 1 ? " is" : " are") + " lost; the " + list(kept) + (kept.length === 1 ? " stands." : " stand.");
+  }
+
+  function marksText(earned, available) {
+    return earned + "/" + available + " mark" + (available === 1 ? "" : "s");
+  }
+
+  /* Mark every part of a question, carrying an error forward: a later part with ecf methods
+   * (physics_figures.questions.Ecf, printed by sympy) is also marked against the student's
+   * own earlier answers by each method, and earns its marks if it follows from them. A right
+   * answer is right whatever the earlier parts say. */
   function markQuestion(data, answers) {
     var results = {};
     data.parts.forEach(function (part) {
       var result = mark(part, answers[part.id] || {});
-      if (result.code !== "correct" && part.ecf) result = carried(part, answers[part.id] || {}, results, data) || result;
+      var methods = part.ecf || [];
+      if (result.code !== "correct" && result.code !== "alternative" && methods.length) {
+        result = carried(part, methods, answers[part.id] || {}, results, data) || result;
+      }
       results[part.id] = result;
     });
     return { results: results, marks: award(data, results) };
   }
 
-  function carried(part, answer, earlier, data) {
-    var uses = part.ecf.uses, known = {};
+  function carried(part, methods, answer, earlier, data) {
+    var partial = null;
+    for (var m = 0; m < methods.length; m++) {
+      var found = carriedBy(part, methods[m], answer, earlier, data);
+      if (found && (found.code === "correct" || found.code === "ecf")) return found;
+      partial = partial || found;
+    }
+    return partial;
+  }
+
+  function carriedBy(part, ecf, answer, earlier, data) {
+    var uses = ecf.uses, known = {};
     for (var i = 0; i < uses.length; i++) {
       var before = earlier[uses[i]];
       if (!before || before.si === null || before.si === undefined) return null;
@@ -583,28 +629,27 @@
     var fromReadings = uses.some(function (id) {
       return data.parts.some(function (p) { return p.id === id && p.kind === "graph"; });
     });
-    var allRight = uses.every(function (id) { return NOT_AN_ERROR.indexOf(earlier[id].code) >= 0; });
+    var allRight = uses.every(function (id) { return earlier[id].valueRight; });
     if (allRight && !fromReadings) return null;
-    var args = part.ecf.args.map(function (name) { return name in known ? known[name] : part.ecf.values[name]; });
-    var value = formula(part.ecf).apply(null, args);
+    var args = ecf.args.map(function (name) { return name in known ? known[name] : ecf.values[name]; });
+    var value = formula(ecf).apply(null, args);
     if (!isFinite(value)) return null;
     var own = {}; Object.keys(part).forEach(function (k) { own[k] = part[k]; });
     own.value = part.direction === "signed" ? value : Math.abs(value);
-    own.mistakes = []; own.gNineEight = null; own.roundedPartWay = [];
+    own.mistakes = []; own.gNineEight = null; own.roundedPartWay = []; own.alternatives = [];
     var result = mark(own, answer);
     if (result.code === "correct" && allRight) {
-      return outcome("correct", "Correct: it follows from your readings of the graph.", { si: result.si });
+      return outcome("correct", "Correct: it follows from your readings of the graph.", { si: result.si, valueRight: true });
     }
     if (allRight) return null;
     if (result.code === "correct") {
       return outcome("ecf", "Follows correctly from your answer to (" + uses.join("), (") +
-        "): error carried forward (ecf), so this part earns its marks.", { si: result.si });
+        "): error carried forward (ecf), so this part earns its marks.", { si: result.si, valueRight: true });
     }
-    if (WRONG_WAY.indexOf(result.code) >= 0) { // follows from (a), but points the wrong way
-      result.message = "Follows from your answer to (" + uses.join("), (") + ") (ecf), but: " + result.message;
-      return result;
-    }
-    return ALL_BUT_A1.indexOf(result.code) >= 0 ? result : null;
+    // follows from the earlier answer, but with a slip of its own (direction, unit, s.f.)
+    if (result.code === "wrong" || /^unreadable/.test(result.code)) return null;
+    result.message = "Follows from your answer to (" + uses.join("), (") + ") (ecf), but: " + result.message;
+    return result;
   }
 
   var formulas = {};
@@ -616,7 +661,7 @@
 
   var engine = {
     parseNumber: parseNumber, parseUnit: parseUnit, splitValueAndUnit: splitValueAndUnit, recasedUnit: recasedUnit,
-    mark: mark, markQuestion: markQuestion, award: award, superscript: superscript
+    mark: mark, markQuestion: markQuestion, award: award, lostText: lostText, superscript: superscript
   };
 
   if (typeof module === "object" && module.exports) module.exports = engine;
@@ -665,10 +710,6 @@
       }
       localStorage.setItem(PROGRESS, JSON.stringify(progress));
     } catch (e) { /* private mode: progress is not kept */ }
-  }
-
-  function marksText(earned, available) {
-    return earned + "/" + available + " mark" + (available === 1 ? "" : "s");
   }
 
   /* New numbers: each template's variants come in one small script (loaded on the first
@@ -779,11 +820,14 @@
       var marked = markQuestion(data, answers());
       data.parts.forEach(function (part) {
         var f = fields(part), result = marked.results[part.id], got = marked.marks.byPart[part.id];
-        var right = result.code === "correct" || result.code === "ecf";
+        // ✓ only for a part that earned every one of its marks; a part that lost some says which
+        var right = got[0] === got[1] && result.code !== "wrong";
         var selfMarked = result.code === "self-marked";
         if (f.points && selfMarked) f.points.hidden = false;
+        var lost = selfMarked ? "" : engine.lostText(data, marked.marks, part.id);
         // a value in the message stays on one line with its unit, as everywhere in the book
-        f.feedback.textContent = (selfMarked ? "" : right ? "✓ " : "✗ ") + Notation.joinUnits(result.message);
+        f.feedback.textContent = (selfMarked ? "" : right ? "✓ " : "✗ ") + Notation.joinUnits(result.message) +
+          (lost ? " " + lost : "");
         var idea = !right && !selfMarked && ideaFor(result.message);
         if (idea) {
           var link = document.createElement("a");
@@ -860,7 +904,7 @@
             f.choices[i].parentNode.querySelector(".q-option-text").innerHTML = option.html;
           });
         } else if (part.kind === "explain") {
-          var lines = data.marks.filter(function (m) { return m.parts.indexOf(part.id) >= 0; });
+          var lines = data.marks.filter(function (m) { return m.part === part.id; });
           Array.prototype.forEach.call(f.ticks, function (tick, i) {
             tick.value = String(data.marks.indexOf(lines[i]));
             tick.parentNode.querySelector(".q-point-text").innerHTML = lines[i].html;

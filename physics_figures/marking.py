@@ -1,0 +1,58 @@
+"""How marks are earned: the rule table (``marking_rules.json``), read once.
+
+A part's marks are its mark lines. Each line plays a role: "method" (C1, M1: a step of the
+working), "answer" (A1, or a B1 that is the answer itself) or "direction" (the B1 that is
+the direction's own). The browser's engine classifies an answer (right, 1 s.f., unit
+missing, a named mistake...); the table says which roles that outcome loses, and a line
+earns its mark unless it plays a lost role. The table is JSON so that this module and the
+browser (which gets its ``outcomes`` from the build) read the same rules: the engine in
+``questions.js`` has no marking rule of its own.
+"""
+
+from __future__ import annotations
+
+import json
+from functools import cache
+from pathlib import Path
+
+RULES_FILE = Path(__file__).with_name("marking_rules.json")
+#: The roles a mark line can play, in the order feedback names them.
+ROLES = ("method", "answer", "direction")
+#: What a named mistake is, for what it keeps (CLARIFICATIONS, "Marks: the rule table").
+MISTAKE_KINDS = ("slip", "direction", "physics")
+
+
+@cache
+def rules() -> dict:
+    """The whole rule table: roles of each code, what each outcome and each kind of mistake loses."""
+    return json.loads(RULES_FILE.read_text(encoding="utf-8"))
+
+
+def outcome_losses() -> dict[str, list[str]]:
+    """{outcome code: the roles it loses}, for the browser (a named mistake's are its own)."""
+    return {code: rule["loses"] for code, rule in rules()["outcomes"].items()
+            if isinstance(rule["loses"], list)}
+
+
+def sig_figs() -> dict[str, int]:
+    """{"min": figures the A1 needs, "check": figures the key is trusted to}."""
+    table = rules()["sig_figs"]
+    return {"min": table["min"], "check": table["check"]}
+
+
+def mistake_losses(kind: str) -> tuple[str, ...]:
+    """The roles a named mistake of this kind loses by default."""
+    kinds = rules()["mistakes"]
+    if kind not in kinds:
+        raise ValueError(f"kind must be one of {tuple(kinds)} (got kind={kind!r})")
+    return tuple(kinds[kind]["loses"])
+
+
+def line_roles(code: str, *, earns: str = "") -> tuple[str, ...]:
+    """The roles of a mark line: its code's, or "direction" where the line says it earns it."""
+    if earns:
+        if earns not in ROLES:
+            raise ValueError(f"earns must be one of {ROLES} (got earns={earns!r})")
+        return (earns,)
+    return tuple(rules()["roles"][code])
+

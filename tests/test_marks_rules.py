@@ -1,0 +1,184 @@
+# ruff: noqa: RUF002  (docstrings are typeset: true minus, Greek letters)
+"""Marks as the published schemes give them, on the bank's own questions: the data the site
+ships (Question.browser_data) marked whole by the browser's engine under Node.
+
+Each case is a row of the rule table (physics_figures/marking_rules.json; the docs' table in
+book/exam/getting-the-marks.md cites the papers).
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import subprocess
+from pathlib import Path
+
+import pytest
+from test_questions_engine import node
+
+from physics_figures import bank, marking
+from physics_figures.constants import G_EARTH
+from physics_figures.notation import format_number, plain_number
+
+ROOT = Path(__file__).resolve().parents[1]
+ENGINE = ROOT / "book" / "_ext" / "questions" / "static" / "questions.js"
+
+
+def mark_questions(cases: list[tuple[dict, dict]]) -> list[dict]:
+    result = subprocess.run([node(), str(ROOT / "tests" / "js" / "mark_questions.js")],
+                            input=json.dumps([{"data": d, "answers": a} for d, a in cases]),
+                            check=False, capture_output=True, text=True, timeout=120)
+    assert result.returncode == 0, result.stderr
+    return json.loads(result.stdout)
+
+
+def typed(value: float, sig_figs: int = 3) -> str:
+    return plain_number(format_number(value, sig_figs))
+
+
+def one(key: str, answers: dict, variant: int = 0) -> dict:
+    data = bank.TEMPLATES[key].variant(variant).browser_data()
+    return mark_questions([(data, answers)])[0]
+
+
+def right(part, sig_figs: int = 3) -> dict:
+    return {"value": typed(part.value, sig_figs), "unit": part.unit, "direction": part.answer_direction}
+
+
+QC3 = bank.TEMPLATES["quick-check-3"].variant(0)
+
+
+def test_the_right_size_in_the_wrong_direction_loses_only_the_direction_mark():
+    b = QC3.parts[1]
+    for direction in ("downwards", ""):  # the named mistake "still falling", and no direction chosen
+        marked = one("quick-check-3", {"b": {**right(b), "direction": direction}})
+        assert marked["marks"]["byPart"]["b"] == [2, 3], direction
+        assert marked["lost"]["b"] == "2/3 marks: the B1 is lost; the C1 and A1 stand."
+
+
+def test_g_equals_10_loses_only_the_a1_and_says_so():
+    b = QC3.parts[1]
+    marked = one("quick-check-3", {"b": {**right(b), "value": typed(b.answer_for_g(10.0))}})
+    assert marked["results"]["b"]["mistake"] == "used g = 10 m s⁻²"
+    assert marked["marks"]["byPart"]["b"] == [2, 3]
+    assert marked["lost"]["b"] == "2/3 marks: the A1 is lost; the C1 and B1 stand."
+    assert "A1" in marked["results"]["b"]["message"]
+
+
+@pytest.mark.parametrize(("key", "part_id", "value"), [
+    ("quick-check-3", "b", "1e1"),   # 11.6 to 1 s.f.
+    ("quick-check-1", "b", "8"),     # 7.5 to 1 s.f. (half away from zero)
+    ("practice-wall-bounce", "b", "200"),
+])
+def test_a_one_sf_answer_loses_only_the_a1_and_says_so(key, part_id, value):
+    question = bank.TEMPLATES[key].variant(0)
+    index = question.part_ids.index(part_id)
+    part = question.parts[index]
+    marked = one(key, {part_id: {**right(part), "value": value}})
+    result = marked["results"][part_id]
+    got, available = marked["marks"]["byPart"][part_id]
+    if result["code"] == "correct":  # the key itself prints to 1 s.f. here (200 N): nothing to lose
+        assert got == available
+        return
+    assert result["code"] == "too-few-sf", result
+    assert result["message"].startswith("1 s.f.: the A1 needs 2 or more")
+    assert (got, available) == (available - 1, available)
+
+
+def test_a_minus_sign_on_a_size_whose_direction_is_asked_separately_loses_nothing():
+    b = QC3.parts[1]
+    marked = one("quick-check-3", {"b": {**right(b), "value": "-" + typed(b.value)}})
+    assert marked["results"]["b"]["code"] == "ignore-sign"
+    assert marked["marks"]["byPart"]["b"] == [3, 3]
+
+
+def test_a_wrong_or_missing_unit_never_earns_full_marks():
+    a, b = QC3.parts
+    cases = [("a", {"value": typed(a.value), "unit": ""}), ("a", {"value": typed(a.value), "unit": "kg"}),
+             ("b", {**right(b), "unit": ""}), ("b", {**right(b), "unit": "m/s"})]
+    data = QC3.browser_data()
+    marked = mark_questions([(data, {part_id: answer}) for part_id, answer in cases])
+    for (part_id, answer), got in zip(cases, marked, strict=True):
+        earned, available = got["marks"]["byPart"][part_id]
+        assert earned < available, (part_id, answer)
+    assert marked[0]["marks"]["byPart"]["a"] == [0, 1]  # a one-mark part: the mark is the A1's
+    assert marked[2]["marks"]["byPart"]["b"] == [2, 3]
+
+
+def test_a_power_of_ten_slip_keeps_the_c1():
+    question = bank.TEMPLATES["practice-wall-bounce"].variant(0)
+    slip = next(m for m in question.parts[1].mistakes if m.name == "milliseconds not converted")
+    assert slip.kind == "slip"
+    marked = one("practice-wall-bounce", {"b": {**right(question.parts[1]), "value": typed(slip.value)}})
+    assert marked["marks"]["byPart"]["b"] == [1, 2]
+
+
+def test_every_part_right_earns_its_own_marks_whatever_the_other_parts_say():
+    """Each part answered right with the others left blank: it shows every one of its marks."""
+    cases, where = [], []
+    for key, template in bank.TEMPLATES.items():
+        question = template.variant(0)
+        data = question.browser_data()
+        marks = question.part_marks()
+        for index, (part_id, part) in enumerate(zip(question.part_ids, question.parts, strict=True)):
+            if part.kind == "explain":
+                continue
+            answer = {"choice": part.answer} if part.kind == "mcq" else right(part, max(part.shown_sig_figs, 3))
+            cases.append((data, {part_id: answer}))
+            where.append((key, part_id, marks[index]))
+    for (key, part_id, own), got in zip(where, mark_questions(cases), strict=True):
+        assert got["marks"]["byPart"][part_id] == [own, own], (key, part_id, got["results"][part_id])
+
+
+def test_a_right_answer_after_wrong_earlier_parts_is_right():
+    """graph-ball-acceleration (c): 4.22 m s⁻², the scheme's working from the readings as printed,
+    and the key itself, earn (c)'s marks with (a) and (b) wrong."""
+    question = bank.TEMPLATES["graph-ball-acceleration"].variant(0)
+    c = question.parts[2]
+    wrong = {"a": {"value": "30", "unit": "m/s"}, "b": {"value": "9.0", "unit": "m/s"}}
+    for value in ("4.22", typed(c.value)):
+        marked = one("graph-ball-acceleration", {**wrong, "c": {"value": value, "unit": "m s^-2"}})
+        assert marked["marks"]["byPart"]["c"] == [2, 2], (value, marked["results"]["c"])
+
+
+def test_ecf_credits_each_method_the_template_declares():
+    """block-and-hanging-mass (b): the tension from the block (T − F = m₁a) and from the hanging
+    mass (m₂g − T = m₂a), each with the student's own wrong acceleration."""
+    question = bank.TEMPLATES["block-and-hanging-mass"].variant(0)
+    assert len(question.parts[1].ecf_methods) == 2
+    block_mass, hanging_mass, friction = (g.value for g in question.givens)
+    own_a = 3.0
+    for tension in (friction + block_mass * own_a, hanging_mass * (G_EARTH - own_a)):
+        marked = one("block-and-hanging-mass", {"a": {"value": "3.0", "unit": "m s^-2"},
+                                                "b": {"value": typed(tension), "unit": "N"}})
+        assert marked["results"]["b"]["code"] == "ecf", tension
+        assert marked["marks"]["byPart"]["b"] == [2, 2]
+
+
+def test_a_declared_alternative_value_is_accepted():
+    question = bank.TEMPLATES["graph-ball-acceleration"].variant(0)
+    data = question.browser_data()
+    alternatives = data["parts"][2]["alternatives"]
+    assert alternatives, "graph-ball-acceleration (c) declares the scheme's own working as an alternative"
+    for alternative in alternatives:
+        marked = mark_questions([(data, {"c": {"value": typed(alternative["value"]), "unit": "m s^-2"}})])[0]
+        assert marked["results"]["c"]["code"] == "alternative"
+        assert marked["marks"]["byPart"]["c"] == [2, 2]
+
+
+def test_no_marking_rule_is_written_in_the_engine():
+    """The rule table is physics_figures/marking_rules.json: the engine names no mark code, has no
+    significant-figure number of its own and no list of what an outcome loses, and every outcome
+    it can give is in the table."""
+    source = ENGINE.read_text(encoding="utf-8")
+    engine = source[:source.index("// ------------------------------------------------------------------ page")]
+    code_only = re.sub(r"/\*.*?\*/|//[^\n]*", "", engine, flags=re.DOTALL)
+    assert not re.search(r"\"[ABCM]1\"", code_only), "a mark code in the engine's code"
+    assert not re.search(r"minSf \|\| \d|checkSf \|\| \d", code_only), "a significant-figure default in the engine"
+    assert not re.search(r"ALL_BUT_A1|WRONG_WAY|NOT_AN_ERROR|lose: \"", code_only)
+    codes = set(re.findall(r"(?:\bout|\boutcome)\(\s*\"([a-z0-9.-]+)\"", code_only))
+    codes |= set(re.findall(r"\? \"([a-z-]+)\" : \"([a-z-]+)\"", code_only)[0]) if re.search(
+        r"\? \"([a-z-]+)\" : \"([a-z-]+)\"", code_only) else set()
+    table = set(marking.rules()["outcomes"])
+    assert codes, "no outcome codes found in the engine"
+    assert codes - {"self-marked"} <= table, f"outcomes with no rule: {sorted(codes - table)}"

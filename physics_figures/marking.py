@@ -56,3 +56,16 @@ def line_roles(code: str, *, earns: str = "") -> tuple[str, ...]:
         return (earns,)
     return tuple(rules()["roles"][code])
 
+
+
+def documented_rules() -> list[dict]:
+    """The rules the docs' table shows, each with the published schemes that show it:
+    [{"id", "rule", "sources": [{"paper", "says"}]}], outcomes first, then the kinds of
+    named mistake ("mistake-slip"), then the general principles."""
+    table = rules()
+    rows = []
+    for section, prefix in (("outcomes", ""), ("mistakes", "mistake-"), ("principles", "")):
+        for name, rule in table[section].items():
+            if rule.get("sources"):
+                rows.append({"id": prefix + name, "rule": rule["rule"], "sources": rule["sources"]})
+    return rows

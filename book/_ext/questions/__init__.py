@@ -936,6 +936,35 @@ def visit_practice_progress(self, node):
     raise nodes.SkipNode
 
 
+class MarkingRules(SphinxDirective):
+    """The rule table the marking follows (physics_figures/marking_rules.json), each rule with
+    the published 9702 schemes that show it: ``{marking-rules}``."""
+
+    def run(self):
+        self.env.note_dependency(str(marking.RULES_FILE))
+        table = nodes.table(classes=["q-rules-table"])
+        group = nodes.tgroup(cols=2)
+        table += group
+        group += nodes.colspec(colwidth=40)
+        group += nodes.colspec(colwidth=60)
+        head = nodes.thead()
+        head += nodes.row("", *(nodes.entry("", nodes.paragraph(text=t))
+                               for t in ("Your answer, and the marks it earns", "What the published schemes say")))
+        group += head
+        body = nodes.tbody()
+        for row in marking.documented_rules():
+            sources = nodes.bullet_list()
+            for source in row["sources"]:
+                item = nodes.paragraph()
+                item += nodes.strong(text=source["paper"])
+                item += nodes.Text(f": “{source['says']}”")
+                sources += nodes.list_item("", item)
+            rule = nodes.paragraph(text=row["rule"][:1].upper() + row["rule"][1:] + ".")
+            body += nodes.row("", nodes.entry("", rule), nodes.entry("", sources), ids=[f"rule-{row['id']}"])
+        group += body
+        return [table]
+
+
 def setup(app):
     app.add_node(question, html=(visit_question, depart_question))
     app.add_node(question_form, html=(visit_question_form, None))
@@ -943,6 +972,7 @@ def setup(app):
     app.add_node(answer_key, html=(visit_answer_key, depart_answer_key))
     app.add_node(practice_progress, html=(visit_practice_progress, None))
     app.add_directive("question", QuestionDirective)
+    app.add_directive("marking-rules", MarkingRules)
     app.add_directive("answer-key", AnswerKeyDirective)
     app.add_directive("try-similar", TrySimilarDirective)
     app.add_directive("book-map", BookMapDirective)

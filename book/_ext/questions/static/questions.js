@@ -501,7 +501,7 @@
     }
     if (result.matchFewSf) {
       var few = Math.min(number.sfMax, minSf - 1);
-      return out("too-few-sf", few + " s.f.: the A1 needs " + minSf + " or more. The value is right, so the other marks stand" +
+      return out("too-few-sf", few + " s.f.: the A1 needs " + minSf + " or more" +
         (number.sfMin < number.sfMax ? " (zeros at the end of a whole number may not count: write 7.0 × 10², not 700)." : "."));
     }
     // Slips computed from the working (physics_figures.questions): nothing else is called rounding.
@@ -824,7 +824,7 @@
         var right = got[0] === got[1] && result.code !== "wrong";
         var selfMarked = result.code === "self-marked";
         if (f.points && selfMarked) f.points.hidden = false;
-        var lost = selfMarked ? "" : engine.lostText(data, marked.marks, part.id);
+        var lost = engine.lostText(data, marked.marks, part.id);
         // a value in the message stays on one line with its unit, as everywhere in the book
         f.feedback.textContent = (selfMarked ? "" : right ? "✓ " : "✗ ") + Notation.joinUnits(result.message) +
           (lost ? " " + lost : "");

@@ -69,3 +69,10 @@ def documented_rules() -> list[dict]:
             if rule.get("sources"):
                 rows.append({"id": prefix + name, "rule": rule["rule"], "sources": rule["sources"]})
     return rows
+
+
+def lines_kept(lines: list[tuple[str, tuple[str, ...]]], lost) -> int:
+    """How many of a part's lines ((code, roles) each) an outcome that loses these roles keeps:
+    a line is kept unless it plays a lost role (the table's one reading, for what cannot run
+    the browser's engine: the sheets and Moodle)."""
+    return sum(1 for _, roles in lines if not set(roles) & set(lost))

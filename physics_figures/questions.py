@@ -194,9 +194,17 @@ class Ecf:
         """The earlier parts the formula reads."""
         return tuple(sorted(s.name for s in self.formula.free_symbols if s.name in PART_IDS))
 
+    @cached_property
+    def _function(self):
+        """The formula as a plain Python function of its symbols, sorted by name (sympy's
+        substitution is slow, and every variant is checked with it)."""
+        names = sorted(s.name for s in self.formula.free_symbols)
+        return names, sympy.lambdify([sympy.Symbol(name) for name in names], self.formula, "math")
+
     def evaluate(self, answers: Mapping[str, float]) -> float:
         known = {**self.values, **{part: answers[part] for part in self.uses}}
-        return float(self.formula.subs({sympy.Symbol(name): value for name, value in known.items()}))
+        names, function = self._function
+        return float(function(*(known[name] for name in names)))
 
     def browser_data(self) -> dict:
         symbols = sorted(s.name for s in self.formula.free_symbols)
@@ -730,6 +738,10 @@ class Question:
         if part.direction != "none" and not own_line and "answer" in roles:
             roles = (*roles, "direction")
         return roles
+
+    def part_lines(self, part_id: str) -> list[tuple[str, tuple[str, ...]]]:
+        """(code, roles) of each mark line that counts in a part, in the scheme's order."""
+        return [(m.code, self.line_roles(m)) for m in self.mark_scheme if m.code and self.owner(m) == part_id]
 
     def scheme_alternatives(self, index: int) -> tuple[Alternative, ...]:
         """What the scheme's own working gives for a later part: its formula worked from the

@@ -9,10 +9,13 @@ What it checks, question by question:
 - every <text> holding HTML parses as HTML with balanced tags, holds no raw TeX ($, \\frac,
   ^{...}) and no tag outside the book's text format plus the few the export adds;
 - numerical: each answer has a fraction among Moodle's grades, a number, a tolerance and
-  feedback; exactly one right answer, after the named mistakes; the right answer at 2, 3
-  and 4 s.f. (a reading from a graph: at 4 s.f.) reaches the right answer first (Moodle takes the first range that holds a
-  response, and adds its own tiny slack), each named mistake at 3 s.f. reaches itself first;
-  ×10, ÷10 and a sign slip are not right; units are written without spaces;
+  feedback; the right answers (100 %) come first, the key as it prints first of all; each
+  right form, and the key written to 4 s.f., reaches a right answer (Moodle takes the first
+  range that holds a response, and adds its own tiny slack); each other answer reaches
+  itself first; ×10, ÷10 and a sign slip are not right; units are
+  written without spaces;
+- cloze: each embedded NUMERICAL and MULTICHOICE answer is well formed with a grade among
+  Moodle's, one right option per MULTICHOICE, and the weights add up to the default grade;
 - multichoice: single answer, one 100 % option, feedback on every option;
 - essay: grader information with the mark codes;
 - images: every @@PLUGINFILE@@ file named in a text is embedded in that text's <file>
@@ -140,6 +143,8 @@ def check_question(question: ET.Element, where: str) -> list[str]:
         problems += _check_numerical(question, where)
     elif kind == "multichoice":
         problems += _check_multichoice(question, where)
+    elif kind == "cloze":
+        problems += _check_cloze(question, where)
     elif kind == "essay":
         grader = _text(question, "graderinfo")
         if not grader or not re.search(r"\b[ABCM]1\b", grader):
@@ -167,35 +172,54 @@ def _check_numerical(question, where) -> list[str]:
     problems = _check_answers_feedback(question, where)
     ranges = _ranges(question)
     right = [r for r in ranges if r[0] == 100]
-    if len(right) != 1:
-        return [*problems, f"{where}: {len(right)} right answers, not 1"]
-    if ranges[-1][0] != 100:
-        problems.append(f"{where}: the right answer is not after the named mistakes")
-    text = right[0][3]
-    value = float(text)
-    # a calculation is right at 2 s.f. or more (the export's questions say when a value is
-    # read from the graph instead: that is right within half a small square)
-    calculation = "read from the graph" not in (_text(question, "questiontext") or "")
-    for sig_figs in (2, 3, 4) if calculation else (4,):
-        typed = _round(value, sig_figs)
-        if _first_match(ranges, typed) != (100, text):
-            problems.append(f"{where}: the right answer {value:g} at {sig_figs} s.f. ({typed:g}) is not "
-                            "marked right")
-    for slip in (value * 10, value / 10, -value):  # a signed part names its sign slip (0 %)
+    if not right:
+        return [*problems, f"{where}: no right answer"]
+    if ranges[:len(right)] != right:
+        problems.append(f"{where}: the right answers do not come first")
+    value = float(right[0][3])
+    # each right form (the key at 2 and at 3 s.f.: the export writes both) and the key as
+    # printed, written to 4 s.f., are right
+    for typed in [float(r[3]) for r in right] + [_round(value, 4)]:
+        if (_first_match(ranges, typed) or (0, ""))[0] != 100:
+            problems.append(f"{where}: the right answer {value:g} written {typed:g} is not marked right")
+    for slip in (value * 10, value / 10, -value):  # a signed part names its sign slip
         if slip != value and (_first_match(ranges, slip) or (0, ""))[0] == 100:
             problems.append(f"{where}: the slip {slip:g} is marked right")
-    for fraction, mistake_low, mistake_high, mistake in ranges[:-1]:
-        if fraction == 100:
-            continue
-        typed = _round(float(mistake), 3)
-        if _first_match(ranges, typed) != (fraction, mistake):
-            problems.append(f"{where}: the named mistake {mistake} is never reached")
-        if mistake_high <= mistake_low:
-            problems.append(f"{where}: the named mistake {mistake} has no tolerance")
+    for fraction, low, high, other in ranges[len(right):]:
+        if _first_match(ranges, float(other)) != (fraction, other):
+            problems.append(f"{where}: the answer {other} ({fraction} %) is never reached")
+        if high < low:
+            problems.append(f"{where}: the answer {other} has a negative tolerance")
     units = [u.findtext("unit_name") for u in question.findall("units/unit")]
     if not units:
         problems.append(f"{where}: no unit")
     problems += [f"{where}: unit {u!r} has a space" for u in units if u is None or " " in u]
+    return problems
+
+
+CLOZE = re.compile(r"\{(\d+):(NUMERICAL|MULTICHOICE):((?:\\.|[^}])*)\}")
+
+
+def _check_cloze(question, where) -> list[str]:
+    problems, weights = [], 0
+    for weight, kind, body in CLOZE.findall(_text(question, "questiontext") or ""):
+        weights += int(weight)
+        answers = re.split(r"(?<!\\)~", body)
+        for answer in answers:
+            found = re.fullmatch(r"(=|%(-?[\d.]+)%)?((?:\\.|[^#])*)#((?:\\.|[^#])*)", answer)
+            if not found:
+                problems.append(f"{where}: {kind} answer {answer!r} is not well formed")
+                continue
+            if found[2] is not None and not any(math.isclose(float(found[2]), g, abs_tol=1e-5) for g in MOODLE_GRADES):
+                problems.append(f"{where}: grade {found[2]} is not one of Moodle's")
+            if kind == "NUMERICAL" and not re.fullmatch(r"-?\d+(\.\d+)?:\d+(\.\d+)?", found[3]):
+                problems.append(f"{where}: NUMERICAL answer {found[3]!r} is not number:tolerance")
+        if kind == "MULTICHOICE" and sum(a.startswith("=") for a in answers) != 1:
+            problems.append(f"{where}: a MULTICHOICE box without exactly one right option")
+    if not weights:
+        problems.append(f"{where}: a cloze question with no box")
+    elif weights != float(question.findtext("defaultgrade")):
+        problems.append(f"{where}: the boxes weigh {weights}, the question {question.findtext('defaultgrade')}")
     return problems
 
 

@@ -110,7 +110,8 @@ def test_a_power_of_ten_slip_keeps_the_c1():
     slip = next(m for m in question.parts[1].mistakes if m.name == "milliseconds not converted")
     assert slip.kind == "slip"
     marked = one("practice-wall-bounce", {"b": {**right(question.parts[1]), "value": typed(slip.value)}})
-    assert marked["marks"]["byPart"]["b"] == [1, 2]
+    assert marked["marks"]["byPart"]["b"] == [2, 3]  # the C1 and the direction's B1
+    assert marked["lost"]["b"] == "2/3 marks: the A1 is lost; the C1 and B1 stand."
 
 
 def test_every_part_right_earns_its_own_marks_whatever_the_other_parts_say():
@@ -182,3 +183,12 @@ def test_no_marking_rule_is_written_in_the_engine():
     table = set(marking.rules()["outcomes"])
     assert codes, "no outcome codes found in the engine"
     assert codes - {"self-marked"} <= table, f"outcomes with no rule: {sorted(codes - table)}"
+
+
+def test_ecf_carries_on_through_a_part_that_was_itself_ecf():
+    """example-1-try: (a) wrong (resistive forces left out), (b) worked from it, (c) from (b):
+    both later parts earn their marks as ecf."""
+    data = bank.TEMPLATES["example-1-try"].variant(0).browser_data()
+    marked = mark_questions([(data, {"a": {"value": "1.875", "unit": "m s^-2"}, "b": {"value": "950", "unit": "N"},
+                                     "c": {"value": "950", "unit": "N", "direction": "backwards"}})])[0]
+    assert [marked["results"][p]["code"] for p in "abc"] == ["mistake", "ecf", "ecf"]

@@ -3,7 +3,6 @@ Moodle export. Fast tests here; tests/test_worksheets_pdf.py reads the typeset P
 
 from __future__ import annotations
 
-import math
 import re
 import subprocess
 import sys
@@ -14,6 +13,7 @@ import pytest
 from moodle_format import check_file
 
 from physics_figures import bank, worksheets
+from physics_figures.notation import format_number
 from physics_figures.variants import QUESTION_TYPES
 from physics_figures.worksheets import (
     EXAM_QUESTION_COUNTS,
@@ -211,23 +211,61 @@ def test_moodle_has_a_category_per_type_and_every_variant_of_each_part(small_exp
     first = template.variant(0)
     for index, part in enumerate(first.parts):
         path = f"{root_path}/{worksheets.TYPE_TITLES['drag']}/{template.title} {first.label(index)}{part.prompt}"
-        numerical = [q for q in categories[path] if q.get("type") == "numerical"]
-        assert len(numerical) == len(template.values) >= moodle_export.MOODLE_MIN_VARIANTS
+        # a part that asks for a direction is one Cloze question (size and direction boxes)
+        kind = "cloze" if part.direction == "choice" else "numerical"
+        asked = [q for q in categories[path] if q.get("type") == kind]
+        assert len(asked) == len(categories[path]) == len(template.values) >= moodle_export.MOODLE_MIN_VARIANTS
     explain = bank.TEMPLATES["terminal-velocity-explained"]
     essays = [q for q in root.iter("question") if q.get("type") == "essay"]
     assert len(essays) == len(explain.values)  # fewer than 10 situations: every one
 
 
-def test_moodle_numerical_tolerance_is_half_a_unit_in_the_second_figure(small_export):
+def _question(root, idnumber: str):
+    return next(q for q in root.iter("question") if q.findtext("idnumber") == idnumber)
+
+
+def test_moodle_takes_the_books_written_forms_of_a_right_answer(small_export):
+    """The key at 2 s.f. (that value only) and at 3 s.f. (half a unit in the 3rd figure), the
+    key as it prints first; not half a unit in the 2nd s.f. (which took 2.88 for 2.85)."""
     root, _ = small_export
-    question = next(q for q in root.iter("question") if q.findtext("idnumber") == "quick-check-3-v0-b")
-    right = next(a for a in question.findall("answer") if a.get("fraction") == "100")
-    value = float(right.findtext("text"))
-    assert math.isclose(float(right.findtext("tolerance")), 0.5 * 10 ** (math.floor(math.log10(value)) - 1))
-    feedback = [a.findtext("feedback/text") for a in question.findall("answer")]
-    assert any("g = 10" in f for f in feedback[:-1]), "the g = 10 mistake comes before the right answer"
-    units = {u.findtext("unit_name") for u in question.findall("units/unit")}
-    assert {"ms^-2", "m/s^2", "ms⁻²"} <= units
+    question = _question(root, "quick-check-3-v0-a")  # 687 N
+    right = [(float(a.findtext("text")), float(a.findtext("tolerance")))
+             for a in question.findall("answer") if a.get("fraction") == "100"]
+    assert right[0] == (687.0, 0.5)
+    assert (690.0, pytest.approx(690 * moodle_export.EXACT)) in right
+    assert not any(abs(692 - value) <= width for value, width in right)  # 692 is not 687 at 3 s.f.
+
+
+def test_moodle_grades_each_mistake_by_the_lines_it_keeps(small_export):
+    root, _ = small_export
+    grades = {a.findtext("feedback/text")[:20]: float(a.get("fraction"))
+              for a in _question(root, "practice-pucks-v0-a").findall("answer")}
+    assert grades, "no answers"
+    # quick check 3 (b) asks a direction: one Cloze question, g = 10 keeping the C1 of the size's two lines
+    cloze = _question(root, "quick-check-3-v0-b")
+    assert cloze.get("type") == "cloze"
+    text = cloze.findtext("questiontext/text")
+    assert "{2:NUMERICAL:=11.6:0.05#" in text
+    assert "{1:MULTICHOICE:=upwards#" in text
+    g_ten = bank.TEMPLATES["quick-check-3"].variant(0).parts[1].answer_for_g(10.0)
+    assert f"%50%{format_number(g_ten, 3)}:0.05#" in text
+    assert "~=-11.6:0.05#Right: the minus sign is ignored" in text
+
+
+def test_moodle_units_have_their_forms_and_other_sizes(small_export):
+    root, _ = small_export
+    units = {u.findtext("unit_name"): float(u.findtext("multiplier"))
+             for u in _question(root, "practice-pucks-v0-a").findall("units/unit")}
+    assert units == {"Ns": 1.0, "kgm/s": 1.0, "kgms^-1": 1.0, "kgms⁻¹": 1.0, "kNs": 0.001}
+    assert float(_question(root, "practice-pucks-v0-a").findtext("unitpenalty")) == 0.5  # the A1 of 2
+
+
+def test_moodle_html_is_in_cdata():
+    tree, _ = moodle_export.export([bank.TEMPLATES["quick-check-1"]])
+    xml = moodle_export.to_xml(tree)
+    assert "<![CDATA[<p>A resultant force of" in xml
+    assert "&lt;p&gt;" not in xml
+    assert ET.fromstring(xml.split("\n", 1)[1]).find("question") is not None
 
 
 def test_moodle_check_catches_a_broken_file(small_export):
@@ -244,7 +282,7 @@ def test_moodle_check_catches_a_broken_file(small_export):
     choice = next(q for q in broken.iter("question") if q.get("type") == "multichoice")
     choice.find("answer/feedback/text").text = ""
     problems = "\n".join(check_file(broken)[0])
-    assert "not after the named mistakes" in problems
+    assert "the right answers do not come first" in problems
     assert "has no <file>" in problems
     assert "has no feedback" in problems
 

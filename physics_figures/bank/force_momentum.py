@@ -146,9 +146,11 @@ def ball_bounces_off_wall(mass: float = 0.16, speed_in: float = 15.0, speed_out:
         ),
         mark_scheme=(
             Mark(f"Away from the wall positive: Δp = mv − mu = {m} × {v} − {m} × (−{u})", "C1", "a"),
-            Mark(f"= {n(dp, 2)} N s, away from the wall", "A1", "a"),
+            Mark(f"= {n(dp, 2)} N s", "A1", "a"),
+            Mark("away from the wall", "B1", "a", earns="direction"),
             Mark(f"F = Δp / Δt = {w(dp)} / {t}", "C1", "b"),
-            Mark(f"= {n(force, 2)} N, away from the wall", "A1", "b"),
+            Mark(f"= {n(force, 2)} N", "A1", "b"),
+            Mark("away from the wall (the direction of the ball's change in momentum)", "B1", "b", earns="direction"),
         ),
     )
 

@@ -486,7 +486,8 @@ def rocket_lift_off(mass: float = 0.60, thrust: float = 9.0) -> Question:
         mark_scheme=(
             Mark(f"W = mg = {m} × {n(G_EARTH, 3)} = {wt} N", "B1", "a"),
             Mark(f"Resultant force = {t} − {w(rocket_weight)} = {w(thrust - rocket_weight)} N", "C1", "b"),
-            Mark(f"a = {w(thrust - rocket_weight)} / {m} = {n(a, 2)} {PER_S2} upwards", "A1", "b"),
+            Mark(f"a = {w(thrust - rocket_weight)} / {m} = {n(a, 2)} {PER_S2}", "A1", "b"),
+            Mark("upwards (the thrust is bigger than the weight)", "B1", "b", earns="direction"),
         ),
     )
 

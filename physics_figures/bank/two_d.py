@@ -356,7 +356,8 @@ def oblique_wall_bounce(mass: float = 0.060, speed: float = 20.0, angle: float =
             Mark(f"= {n(dp, 2)} N s", "A1", "b"),
             Mark("away from the wall, at right angles to it", "B1", "b", earns="direction"),
             Mark(f"F = {n(dp, 3)} / {t}", "C1", "c"),
-            Mark(f"= {n(force, 2)} N, away from the wall at right angles to it", "A1", "c"),
+            Mark(f"= {n(force, 2)} N", "A1", "c"),
+            Mark("away from the wall, at right angles to it", "B1", "c", earns="direction"),
         ),
     )
 

@@ -5,21 +5,31 @@ One question category per type (the notes' seven), and inside it one category pe
 template and part, so a quiz can draw "a random question from this category": every
 variant of the template (at least 10; a template with fewer situations gives all of them).
 
-* A numeric part (or a reading from a graph) is a Moodle **numerical** question with the
-  unit (every usual form, written without spaces, as Moodle strips them from a response)
-  and the book's tolerance: half a unit in the second significant figure, so the answer at
-  2, 3 or 4 s.f. is right; a reading from a graph is right within half a small square. The
-  named mistakes come first in the file, each with its own feedback, matched as the book's
-  marker matches them, at 3 significant figures, and never where a right rounding falls
-  (Moodle takes the first answer whose range holds the response). A part asking for a direction is followed by a multichoice on the direction.
+Moodle grades as the book grades wherever its core question types can: the same rule table
+(physics_figures/marking_rules.json) and the same mark lines of each part.
+
+* A numeric part (or a reading from a graph) is a **numerical** question. A right answer is
+  one 100 % answer per written form the book accepts: the key at 2 s.f. (that value only)
+  and at 3 s.f. (half a unit in its 3rd figure), the key as it prints first, so Moodle shows
+  it as the key does; a reading from a graph is right within half a small square. Then, each
+  with the grade of the lines it keeps: the named mistakes, the g = 9.8 slip, the part-way
+  roundings, the sign slip and the key to 1 s.f. A missing or wrong unit costs what it costs
+  in the book (Moodle's unit grading), and a unit may be typed in its usual forms and other
+  sizes (N or kN, kg or g, m/s or km/h), each with its multiplier.
+* A part that asks for a direction is one **Cloze** (multianswer) question: a NUMERICAL box
+  for the size and a MULTICHOICE box for the direction, weighted as the part's lines split
+  (the direction's own B1, or the A1 that carries the direction). A minus sign on the size
+  is ignored, as the schemes do.
 * A multiple-choice item is a **multichoice** question, options A to D in the printed
   order, each wrong option with the feedback of the mistake it stands for.
 * A describe-and-explain part is an **essay** question, with the model answer and the
   marking points (with their codes) as information for the grader.
-* A multi-part question becomes one question per part, each with the question's text.
+* A multi-part question becomes one question per part, each with the question's text; a part
+  marked by error carried forward says how in its text, as Moodle cannot carry an answer
+  from one question to another.
 
 Graphs are drawn for each variant and embedded as PNG images (``@@PLUGINFILE@@``). Text is the
-bank's text format as HTML, escaped inside ``<text>`` by the XML library (xml.etree).
+bank's text format as HTML, in CDATA (Moodle drops the space before each tag of escaped HTML).
 """
 
 from __future__ import annotations
@@ -31,13 +41,16 @@ import io
 import math
 import multiprocessing
 import os
+import re
 import sys
 import xml.etree.ElementTree as ET
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
-from .. import textformat
-from ..notation import format_number, round_number
+import numpy
+
+from .. import marking, textformat
+from ..notation import format_number, plain_number, round_number
 from ..questions import OPTION_LETTERS, Question, unit_text
 from ..variants import QUESTION_TYPES, Template
 from . import TYPE_TITLES, bank_templates, part_marks
@@ -46,34 +59,112 @@ from .latex import MISTAKE_SIG_FIGS, ecf_note
 #: Moodle's question bank is filled with this many variants of a template at least.
 MOODLE_MIN_VARIANTS = 10
 ROOT_CATEGORY = "$course$/top/Dynamics (9702)"
-#: A right answer is taken at 2, 3 and 4 significant figures (the book's marking).
-RIGHT_ROUNDINGS = (2, 3, 4)
+#: The written forms of a right answer Moodle is given: the key at 2 and at 3 s.f. (an answer
+#: at 4 s.f. or more falls in the 3 s.f. band, as the book takes it).
+RIGHT_SIG_FIGS = (2, 3)
+#: Moodle's allowed grades (question/engine/bank.php), in per cent.
+MOODLE_GRADES = (100.0, 90.0, 83.33333, 80.0, 75.0, 70.0, 66.66667, 60.0, 50.0, 40.0, 33.33333, 30.0,
+                 25.0, 20.0, 16.66667, 14.28571, 12.5, 11.11111, 10.0, 5.0, 0.0)
+#: Other forms of a unit, with Moodle's multiplier (the value in that unit = the SI value x it).
+UNIT_FORMS = {"N": (("kN", 0.001),), "kg": (("g", 1000.0),), "N s": (("kNs", 0.001),)}
+#: The width of an answer that takes one written value only (Moodle adds a tiny slack of its own).
+EXACT = 1e-9
 #: The resolution of the graphs' images (a 5.6 in wide graph is 728 pixels).
 GRAPH_DPI = 130
 
 
-def tolerance(value: float) -> float:
-    """Half a unit in the second significant figure: 11.6 -> 0.5, 0.57 -> 0.005."""
-    if value == 0:
-        return 0.0
-    return 0.5 * 10 ** (math.floor(math.log10(abs(value))) - 1)
+def grade(kept: int, marks: int) -> float:
+    """kept of marks as a Moodle grade (per cent): the nearest allowed grade not above it
+    (strict rather than lenient)."""
+    if marks <= 0:
+        raise ValueError(f"marks must be positive (got marks={marks!r})")
+    exact = 100 * kept / marks
+    return max(g for g in MOODLE_GRADES if g <= exact + 1e-4)
 
 
-def _mistake_range(mistake: float, right: float) -> tuple[float, float] | None:
-    """A named mistake is matched as the book's marker matches it: written to 3 significant
-    figures. So its answer is the mistake at 3 s.f. and its tolerance half a unit in the
-    third figure (two mistakes that differ at 3 s.f. never overlap). None when the right
-    answer at 2, 3 or 4 s.f. would fall in that range (then the mistake is left out)."""
-    if mistake == 0:
-        width = 0.5 * 10 ** (math.floor(math.log10(abs(right))) - 2)
-        centre = 0.0
-    else:
-        centre = float(round_number(mistake, MISTAKE_SIG_FIGS))
-        width = 0.5 * 10 ** (math.floor(math.log10(abs(centre))) - MISTAKE_SIG_FIGS + 1)
-    roundings = [float(round_number(right, sf)) for sf in RIGHT_ROUNDINGS] + [right]
-    if any(abs(r - centre) <= width * (1 + 1e-9) for r in roundings):
-        return None
-    return centre, width
+def _band(value: float, sig_figs: int) -> tuple[float, float]:
+    """(centre, width): the value at sig_figs s.f. and half a unit in its last figure."""
+    centre = float(round_number(value, sig_figs))
+    if centre == 0:
+        return 0.0, 0.0
+    return centre, 0.5 * 10 ** (math.floor(math.log10(abs(centre))) - sig_figs + 1)
+
+
+def _exact(value: float) -> tuple[float, float]:
+    return value, EXACT * max(abs(value), 1e-12)
+
+
+def right_forms(question: Question, index: int) -> list[tuple[float, float]]:
+    """(value, width) of each 100 % answer of a numeric part, the key as it prints first: the key
+    at 2 s.f. (that value only) and at 3 s.f. (half a unit in its 3rd figure), then each value
+    the scheme also accepts at 3 s.f.; a reading from a graph within its tolerance."""
+    part = question.parts[index]
+    if part.kind == "graph":
+        return [(part.value, part.tolerance)]
+    two = _exact(float(round_number(part.value, RIGHT_SIG_FIGS[0])))
+    three = _band(part.value, RIGHT_SIG_FIGS[1])
+    forms = [three, two] if part.shown_sig_figs >= RIGHT_SIG_FIGS[1] else [two, three]
+    if abs(two[0] - three[0]) <= three[1]:  # the 3 s.f. band holds the 2 s.f. value: one answer
+        forms = [three]
+    # a key on a tie at 2 s.f. (225) is right rounded either way, as the book takes it
+    step = 10 ** (math.floor(math.log10(abs(part.value))) - 1) if part.value else 0
+    if step and math.isclose(abs(part.value) / step % 1, 0.5, abs_tol=1e-7):
+        other = math.copysign(abs(two[0]) - step, part.value)
+        forms.append(_exact(float(round_number(other, RIGHT_SIG_FIGS[0]))))
+    size = (lambda v: v) if part.direction == "signed" else abs
+    forms += [_band(size(a.value), RIGHT_SIG_FIGS[1]) for a in (*part.alternatives, *question.scheme_alternatives(index))]
+    unique: list[tuple[float, float]] = []  # a range inside an earlier one's is never reached
+    for value, width in forms:
+        if not any(abs(value - v) + width <= w * (1 + 1e-9) for v, w in unique):
+            unique.append((value, width))
+    return unique
+
+
+def _overlaps(value: float, width: float, taken: list[tuple[float, float]]) -> bool:
+    """Ranges that share more than an end (Moodle takes the first that holds a response)."""
+    return any(abs(value - v) < (width + w) * (1 - 1e-9) or value == v for v, w in taken)
+
+
+def graded_answers(question: Question, index: int, *, direction_box: int = 0) -> list[tuple[float, float, float, str]]:
+    """(grade, value, width, feedback as plain text) of a numeric part's answers, in the order
+    Moodle tries them: the right forms, then each slip and named mistake with the grade of the
+    lines it keeps, and a 1 s.f. answer. One Moodle could not reach (its band holds a right
+    form or an earlier answer) is left out. direction_box: the marks a separate direction box
+    gives (a Cloze question); the number's box then earns the rest of what the part keeps with
+    the direction right."""
+    part = question.parts[index]
+    lines, losses = question.part_lines(question.part_ids[index]), marking.outcome_losses()
+    rows = [(100.0, value, width, f"Right: {part.answer_text}.") for value, width in right_forms(question, index)]
+
+    def kept(lost) -> float:
+        earned = marking.lines_kept(lines, lost) - direction_box
+        return grade(max(0, earned), len(lines) - direction_box)
+
+    size = (lambda v: v) if part.direction == "signed" else abs
+    wrong = [(size(m.value), kept(m.loses), f"{m.name[:1].upper()}{m.name[1:]}. {m.feedback}")
+             for m in part.mistakes if m.unit is None and m.direction is None]
+    if part.g_nine_eight is not None:
+        wrong.append((part.g_nine_eight, kept(losses["g-9.8"]),
+                      "Used g = 9.8 m s⁻². The data give g = 9.81 m s⁻²: the A1 is lost."))
+    wrong += [(value, kept(losses["rounded-part-way"]),
+               f"Rounded {what} part-way through: keep every figure until the end. The A1 is lost.")
+              for value, what in part.rounded_part_way]
+    if part.direction == "signed" and part.value != 0:
+        wrong.append((-part.value, kept(losses["sign"]),
+                      f"The size is right but the sign is wrong: positive is {part.positive}."))
+    taken = [(v, w) for _, v, w, _ in rows]
+    for value, points, feedback in wrong:
+        centre, width = _band(value, MISTAKE_SIG_FIGS)
+        if width == 0:  # a mistake of zero: as near zero as the key's 4th figure
+            width = _band(part.value, MISTAKE_SIG_FIGS + 1)[1]
+        if not _overlaps(centre, width, taken):
+            rows.append((points, centre, width, feedback))
+            taken.append((centre, width))
+    if part.kind != "graph" and part.value != 0:  # right only to 1 s.f.: all but the A1
+        one = _exact(float(round_number(part.value, 1)))
+        if not _overlaps(*one, taken):
+            rows.append((kept(losses["too-few-sf"]), *one, "1 s.f.: the A1 needs 2 or more significant figures."))
+    return rows
 
 
 def _number(value: float) -> str:
@@ -93,20 +184,26 @@ def _plain(parent: ET.Element, tag: str, text: str) -> ET.Element:
     return element
 
 
-def _units(unit: str, forms: str) -> list[str]:
-    """Every usual form of the unit, without spaces: "m s^-2", "m s^-2 (m/s^2)" ->
-    ["ms^-2", "ms⁻²", "m/s^2"]."""
+def _units(unit: str, forms: str) -> list[tuple[str, float]]:
+    """Every usual form of the unit, without spaces (Moodle deletes the spaces of a response),
+    with its multiplier: "m s^-1", "m s^-1 (m/s)" -> [("m/s", 1), ("ms^-1", 1), ("ms⁻¹", 1),
+    ("km/h", 3.6), ...]. Moodle shows the first after the key: the unit itself, or for a unit
+    with a negative power its slash form."""
     candidates = [unit]
     for chunk in forms.replace("(", " or ").replace(")", "").split(" or "):
         if chunk.strip():
             candidates.append(chunk.strip())
+    # "kg m s^-1" is typed "kg m/s" too
+    candidates += [re.sub(r" s\^-(\d)$", lambda m: "/s" + ("" if m[1] == "1" else f"^{m[1]}"), c) for c in candidates]
     out: list[str] = []
     for candidate in candidates:
         for form in (candidate, unit_text(candidate)):
             form = form.replace(" ", "")
             if form and form not in out:
                 out.append(form)
-    return out
+    plain = unit.replace(" ", "")
+    out.sort(key=lambda form: 0 if form == plain and "^-" not in unit else 1 if "/" in form else 2)
+    return [(form, 1.0) for form in out] + list(UNIT_FORMS.get(unit, ()))
 
 
 class _Export:
@@ -137,44 +234,57 @@ class _Export:
         _plain(question, "idnumber", idnumber)
         return question
 
-    def numerical(self, name, idnumber, html, marks, general, files, part) -> None:
-        question = self._question("numerical", name, idnumber, html, marks, general, files)
-        right = part.value
-        width = part.tolerance if part.kind == "graph" else tolerance(right)
-        named: dict[float, object] = {}
-        for mistake in part.mistakes:
-            if mistake.unit is not None or mistake.direction is not None:
-                continue  # another quantity or a direction: not a number to match
-            value = mistake.value if part.direction == "signed" else abs(mistake.value)
-            typed = round_number(value, MISTAKE_SIG_FIGS)
-            if all(round_number(other, MISTAKE_SIG_FIGS) != typed for other in named):
-                named[value] = mistake
-        for value, mistake in named.items():
-            found = _mistake_range(value, right)
-            if found is None:
-                continue
-            self._answer(question, 0, *found,
-                         f"<p><strong>{_escape(mistake.name)}.</strong> {_escape(mistake.feedback)}</p>")
-        if part.direction == "signed" and right != 0:
-            self._answer(question, 0, -right, width,
-                         f"<p><strong>Sign slip.</strong> The size is right but the sign is wrong: "
-                         f"positive is {_escape(part.positive)}.</p>")
-        self._answer(question, 100, right, width,
-                     f"<p>Right: {_escape(part.answer_text)}.</p>")
-        units = ET.SubElement(question, "units")
-        for form in _units(part.unit, part.units):
+    def numerical(self, name, idnumber, html, marks, general, files, question: Question, index: int) -> None:
+        part = question.parts[index]
+        lines = question.part_lines(question.part_ids[index])
+        element = self._question("numerical", name, idnumber, html, marks, general, files)
+        printed = plain_number(format_number(part.value, part.shown_sig_figs))
+        for points, value, width, feedback in graded_answers(question, index):
+            # the key as it prints ("-1.0", not "-1"): Moodle shows it as the right answer
+            text = printed if float(printed) == value else _number(value)
+            self._answer(element, points, value, width, f"<p>{_escape(feedback)}</p>", text=text)
+        units = ET.SubElement(element, "units")
+        for form, multiplier in _units(part.unit, part.units):
             unit = ET.SubElement(units, "unit")
-            _plain(unit, "multiplier", "1")
+            _plain(unit, "multiplier", _number(multiplier))
             _plain(unit, "unit_name", form)
-        _plain(question, "unitgradingtype", "1")  # a missing or wrong unit loses marks (as in the book)
-        _plain(question, "unitpenalty", _number(1 / max(1, marks)))  # the A1's share
-        _plain(question, "showunits", "0")  # the unit is typed after the number
-        _plain(question, "unitsleft", "0")
+        # a missing or wrong unit loses what the rule table says (the A1; on a one-mark part, all)
+        kept = marking.lines_kept(lines, marking.outcome_losses()["missing-unit"])
+        _plain(element, "unitgradingtype", "1")
+        _plain(element, "unitpenalty", _number(1 - kept / len(lines)))
+        _plain(element, "showunits", "0")  # the unit is typed after the number
+        _plain(element, "unitsleft", "0")
+
+    def cloze(self, name, idnumber, html, marks, general, files, question: Question, index: int) -> None:
+        """A size and a direction in one question: a NUMERICAL box weighted by the part's
+        lines that are not the direction's, a MULTICHOICE box by those that are."""
+        part = question.parts[index]
+        lines = question.part_lines(question.part_ids[index])
+        size_lines = [line for line in lines if "direction" not in line[1]]
+        way_lines = [line for line in lines if "direction" in line[1]]
+        if not size_lines or not way_lines:
+            raise ValueError(f"{question.key} ({question.part_ids[index]}): a direction part needs a line "
+                             f"for the size and one for the direction (got {lines})")
+        answers = graded_answers(question, index, direction_box=len(way_lines))
+        # "ignore sign": the size with a minus sign is right too, the direction asked apart
+        right = right_forms(question, index)
+        answers[len(right):len(right)] = [
+            (100.0, -value, width, "Right: the minus sign is ignored, as the direction is given separately.")
+            for value, width in right]
+        size = "~".join(f"{'=' if points == 100 else f'%{_number(points)}%'}{_decimal(value)}:{_decimal(width)}"
+                        f"#{_cloze_escape(feedback)}" for points, value, width, feedback in answers)
+        wrong = {m.direction: m.feedback for m in part.mistakes if m.direction}
+        way = "~".join(f"{'=' if choice == part.answer_direction else ''}{_cloze_escape(choice)}"
+                       f"#{_cloze_escape(wrong.get(choice) or part.direction_hint or part.revisit)}"
+                       for choice in part.choices)
+        boxes = (f"<p>Size: {{{len(size_lines)}:NUMERICAL:{size}}} {_escape(unit_text(part.unit))} "
+                 f"Direction: {{{len(way_lines)}:MULTICHOICE:{way}}}</p>")
+        self._question("cloze", name, idnumber, html + boxes, marks, general, files)
 
     @staticmethod
-    def _answer(question, fraction: int, value: float, width: float, feedback: str) -> None:
-        answer = ET.SubElement(question, "answer", {"fraction": str(fraction), "format": "moodle_auto_format"})
-        _plain(answer, "text", _number(value))
+    def _answer(question, fraction: float, value: float, width: float, feedback: str, *, text: str = "") -> None:
+        answer = ET.SubElement(question, "answer", {"fraction": _number(fraction), "format": "moodle_auto_format"})
+        _plain(answer, "text", text or _number(value))
         _plain(answer, "tolerance", _number(width))
         _text(answer, "feedback", feedback)
 
@@ -320,18 +430,41 @@ def _part(out: _Export, template: Template, index: int, question: Question, part
     else:
         how = " (read from the graph)" if part.kind == "graph" else ""
         sign = f" Give a signed value: positive is {_escape(part.positive)}." if part.direction == "signed" else ""
-        size = " Give its size here; the next question asks its direction." if part.direction == "choice" else ""
-        value_marks = marks - 1 if part.direction == "choice" and marks > 1 else marks
-        out.numerical(name, idnumber, stem + ask + f"{how}.{sign}{size} Type the number and its unit "
-                      f"({_escape(unit_text(part.unit))}).</p>", value_marks, general, files, part)
+        ecf = f"<p><em>How this part is marked: {_escape(note)}</em></p>" if note else ""
         if part.direction == "choice":
-            wrong = {m.direction: m.feedback for m in part.mistakes if m.direction}
-            options = [(_escape(choice), choice == part.answer_direction,
-                        f"<p>{_escape(wrong.get(choice) or part.direction_hint or part.revisit)}</p>")
-                       for choice in part.choices]
-            out.multichoice(f"{name} direction", f"{idnumber}-direction",
-                            stem + f"<p><strong>{_escape(label)}</strong>What is the direction of the "
-                            f"{_escape(part.prompt)}?</p>", 1, general, files, options, numbering="none")
+            out.cloze(name, idnumber, stem + ask + f"{how}. Type the size as a number in "
+                      f"{_escape(unit_text(part.unit))} and choose the direction.</p>" + ecf,
+                      marks, general, files, question, part_index)
+        else:
+            out.numerical(name, idnumber, stem + ask + f"{how}.{sign} Type the number and its unit "
+                          f"({_escape(unit_text(part.unit))}).</p>" + ecf, marks, general, files,
+                          question, part_index)
+
+
+def _decimal(value: float) -> str:
+    """A number for a Cloze answer: its shortest plain decimals (the syntax takes no exponent)."""
+    text = numpy.format_float_positional(float(value), trim="-")
+    return "0" if float(text) == 0 else text
+
+
+def _cloze_escape(text: str) -> str:
+    """Plain text inside a Cloze answer: HTML-escaped, and its own marks (} # ~ / " \\) escaped."""
+    return re.sub(r'([}#~/"\\])', r"\\\1", _escape(text))
+
+
+def to_xml(tree: ET.ElementTree) -> str:
+    """The file's text: every HTML <text> in CDATA, as Moodle needs it."""
+    blocks: dict[str, str] = {}
+    for element in tree.iter():
+        if element.get("format") == "html":
+            text = element.find("text")
+            if text is not None and text.text:
+                token = f"@@cdata-{len(blocks)}@@"
+                blocks[token], text.text = text.text, token
+    xml = ET.tostring(tree.getroot(), encoding="unicode")
+    for token, html_text in blocks.items():
+        xml = xml.replace(token, "<![CDATA[" + html_text.replace("]]>", "]]]]><![CDATA[>") + "]]>", 1)
+    return '<?xml version="1.0" encoding="UTF-8"?>\n' + xml + "\n"
 
 
 def write(path: Path) -> dict[str, int]:
@@ -339,7 +472,7 @@ def write(path: Path) -> dict[str, int]:
     tree, count = export()
     ET.indent(tree, space=" ")
     path.parent.mkdir(parents=True, exist_ok=True)
-    tree.write(path, encoding="UTF-8", xml_declaration=True)
+    path.write_text(to_xml(tree), encoding="utf-8")
     return count
 
 

@@ -40,7 +40,8 @@ test("an earlier answer right to 2 s.f. is not an error: nothing is carried from
   const r = ask("15.0", "10", "forwards");
   assert.equal(r.results.a.code, "correct");
   assert.notEqual(r.results.b.code, "ecf");
-  assert.deepEqual(r.marks.byPart.b, [0, 3]);
+  assert.deepEqual(r.marks.byPart.b, [1, 3]); // only the direction's B1: a B mark stands on its own
+  assert.deepEqual(ask("15.0", "10", "backwards").marks.byPart.b, [0, 3]);
 });
 
 test("a self-marked explanation: an A1 counts only with the M1 before it", () => {

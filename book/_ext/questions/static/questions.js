@@ -414,8 +414,6 @@
       var result = outcome(code, message, extra);
       result.si = si;
       result.valueRight = !!alternative || against(target, reading.scale).match || against(target, 1).match;
-      // a direction asked for and chosen wrong (or not chosen) never earns the direction's mark
-      result.directionWrong = mode === "choice" && direction !== part.answerDirection;
       return result;
     }
 
@@ -602,6 +600,9 @@
       if (result.code !== "correct" && result.code !== "alternative" && methods.length) {
         result = carried(part, methods, answers[part.id] || {}, results, data) || result;
       }
+      // a direction asked for and chosen wrong (or not chosen) never earns the direction's
+      // mark, and a right one earns it whatever the size (a B mark stands on its own)
+      result.directionWrong = part.direction === "choice" && (answers[part.id] || {}).direction !== part.answerDirection;
       results[part.id] = result;
     });
     return { results: results, marks: award(data, results) };
@@ -644,7 +645,7 @@
     if (allRight) return null;
     if (result.code === "correct") {
       return outcome("ecf", "Follows correctly from your answer to (" + uses.join("), (") +
-        "): error carried forward (ecf), so this part earns its marks.", { si: result.si, valueRight: true });
+        "): error carried forward (ecf), so this part earns its marks.", { si: result.si, valueRight: false });
     }
     // follows from the earlier answer, but with a slip of its own (direction, unit, s.f.)
     if (result.code === "wrong" || /^unreadable/.test(result.code)) return null;

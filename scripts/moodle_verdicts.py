@@ -167,13 +167,14 @@ def main(argv: list[str] | None = None) -> int:
         for (_, r, _), fraction in zip(asked, again, strict=True):
             if abs(fraction - r["moodle"]) < 0.01:
                 r["cannot"] = "trailing-zeros"
-    same, counted, left_out, differ = 0, 0, Counter(), []
+    same, counted, left_out, left_agree, differ = 0, 0, Counter(), Counter(), []
     for question, rows in table.items():
         for r in rows:
+            agree = r["moodle"] is not None and abs(r["moodle"] - r["book"]) < 0.01
             if r["cannot"]:
                 left_out[r["cannot"]] += 1
+                left_agree[r["cannot"]] += agree
                 continue
-            agree = r["moodle"] is not None and abs(r["moodle"] - r["book"]) < 0.01
             counted += 1
             same += agree
             if not agree:
@@ -182,7 +183,7 @@ def main(argv: list[str] | None = None) -> int:
     print(f"questions: {len(table)} asked, {len(missing)} not found in Moodle")
     print(f"same fraction: {same} of {counted} inputs = {100 * same / max(counted, 1):.1f} %")
     for kind, count in left_out.items():
-        print(f"left out ({CANNOT[kind]}): {count}")
+        print(f"left out ({CANNOT[kind]}): {count}, of which {left_agree[kind]} get the same fraction anyway")
     print(f"differ: {len(differ)}")
     for line in differ:
         print("  " + line)

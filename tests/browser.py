@@ -17,6 +17,7 @@ import contextlib
 import gzip
 import http.server
 import io
+import re
 import shutil
 import threading
 from collections.abc import Iterator
@@ -345,3 +346,12 @@ async def axe_violations_async(page, *, rules: list[str] | None = None) -> list[
     """As axe_violations, with the async API."""
     await page.add_script_tag(content=_axe_source())
     return await page.evaluate(AXE_RUN, [rules, None])
+
+
+def question_pages(site: Path) -> dict[str, str]:
+    """{template key: the site path of the first page that asks it ("/book/exam/x.html")}."""
+    pages: dict[str, str] = {}
+    for html in sorted(site.rglob("*.html")):
+        for key in re.findall(r'<form class="q-form" data-question="([^"]+)"', html.read_text(encoding="utf-8")):
+            pages.setdefault(key, "/" + html.relative_to(site).as_posix())
+    return pages

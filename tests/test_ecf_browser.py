@@ -7,7 +7,7 @@ from __future__ import annotations
 import re
 
 import pytest
-from browser import open_browser, page_without_errors, serve_site
+from browser import open_browser, page_without_errors, question_pages, serve_site
 
 from physics_figures import bank
 from physics_figures.notation import format_number, plain_number
@@ -31,12 +31,8 @@ DEPENDENT = list(_dependent_parts())
 
 @pytest.fixture(scope="module")
 def site(site_dir):
-    pages = {}  # template key -> the page that places it
-    for html in sorted(site_dir.rglob("*.html")):
-        for key in re.findall(r'<form class="q-form" data-question="([^"]+)"', html.read_text(encoding="utf-8")):
-            pages.setdefault(key, "/" + html.relative_to(site_dir).as_posix())
     with serve_site(site_dir) as base_url, open_browser() as browser:
-        yield browser, base_url, pages
+        yield browser, base_url, question_pages(site_dir)
 
 
 def _wrong(part, nth: int) -> float:

@@ -8,7 +8,7 @@ from __future__ import annotations
 import re
 
 import pytest
-from browser import open_browser, page_without_errors, serve_site
+from browser import open_browser, page_without_errors, question_pages, serve_site
 
 from physics_figures import bank, marking
 from physics_figures.constants import G_EARTH
@@ -77,12 +77,8 @@ def test_every_rule_of_the_docs_table_has_a_case_here():
 
 @pytest.fixture(scope="module")
 def site(site_dir):
-    pages = {}  # template key -> the page that places it
-    for html in sorted(site_dir.rglob("*.html")):
-        for key in re.findall(r'<form class="q-form" data-question="([^"]+)"', html.read_text(encoding="utf-8")):
-            pages.setdefault(key, "/" + html.relative_to(site_dir).as_posix())
     with serve_site(site_dir) as base_url, open_browser() as browser:
-        yield browser, base_url, pages
+        yield browser, base_url, question_pages(site_dir)
 
 
 def test_the_rule_table_is_on_the_marks_page_with_its_papers(site_dir):

@@ -1,6 +1,6 @@
 """A part's marks are one number everywhere: the site's question data (what the browser
 awards, every variant of every template), the worksheets and their keys as typeset PDFs, and
-the Moodle XML, all against Question.part_marks. (The question-sheet PDF is checked against
+the Moodle XML (every exported variant), all against Question.part_marks. (The question-sheet PDF is checked against
 the site's data in tests/test_pdf.py.)"""
 
 from __future__ import annotations
@@ -52,8 +52,9 @@ def test_moodle_gives_each_part_the_same_marks(site_dir):
 
 
 @pytest.mark.parametrize("sheet", SHEETS, ids=lambda s: s.name)
-def test_every_sheet_prints_each_parts_marks(site_dir, sheet):
+def test_every_sheet_and_key_prints_each_parts_marks(site_dir, sheet):
     for version in sheet.versions:
-        printed = [int(n) for n in MARK.findall(text(site_dir / "teachers", f"{sheet.name}-{version.letter}.pdf"))]
         expected = [marks for item in version.items for marks in item.question.part_marks()]
-        assert printed == expected, (sheet.name, version.letter)
+        for pdf in (f"{sheet.name}-{version.letter}.pdf", f"{sheet.name}-key-{version.letter}.pdf"):
+            printed = [int(n) for n in MARK.findall(text(site_dir / "teachers", pdf))]
+            assert printed == expected, pdf

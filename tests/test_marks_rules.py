@@ -168,11 +168,14 @@ def test_a_declared_alternative_value_is_accepted():
 
 
 def test_no_marking_rule_is_written_in_the_engine():
-    """The rule table is physics_figures/marking_rules.json: the engine names no mark code, has no
-    significant-figure number of its own and no list of what an outcome loses, and every outcome
-    it can give is in the table."""
+    """The rule table is physics_figures/marking_rules.json: the engine and its part kinds name no
+    mark code, have no significant-figure number of their own and no list of what an outcome
+    loses, and every outcome they can give is in the table."""
     source = ENGINE.read_text(encoding="utf-8")
     engine = source[:source.index("// ------------------------------------------------------------------ page")]
+    kinds = sorted((ENGINE.parent / "question-kinds").glob("*.js"))
+    assert kinds, "no part kind scripts"
+    engine += "".join(kind.read_text(encoding="utf-8") for kind in kinds)
     code_only = re.sub(r"/\*.*?\*/|//[^\n]*", "", engine, flags=re.DOTALL)
     assert not re.search(r"\"[ABCM]1\"", code_only), "a mark code in the engine's code"
     assert not re.search(r"minSf \|\| \d|checkSf \|\| \d", code_only), "a significant-figure default in the engine"
@@ -192,3 +195,53 @@ def test_ecf_carries_on_through_a_part_that_was_itself_ecf():
     marked = mark_questions([(data, {"a": {"value": "1.875", "unit": "m s^-2"}, "b": {"value": "950", "unit": "N"},
                                      "c": {"value": "950", "unit": "N", "direction": "backwards"}})])[0]
     assert [marked["results"][p]["code"] for p in "abc"] == ["mistake", "ecf", "ecf"]
+
+
+@pytest.mark.parametrize(("key", "part_id"), [("elastic-both-moving", "c"), ("sphere-in-liquid", "c")])
+def test_the_second_method_of_a_later_part_carries_a_wrong_earlier_answer(key, part_id):
+    """elastic-both-moving (c) by momentum as well as by relative speeds; sphere-in-liquid (c)
+    from the drag alone (W − U = D, so the resultant at half the speed is D / 2)."""
+    question = bank.TEMPLATES[key].variant(0)
+    index = question.part_ids.index(part_id)
+    part = question.parts[index]
+    assert len(part.ecf_methods) == 2
+    answers = {pid: p.value for pid, p in zip(question.part_ids, question.parts, strict=True)}
+    wrong = {used: answers[used] * 1.3 for used in part.ecf_methods[1].uses}
+    own = part.ecf_methods[1].evaluate({**answers, **wrong})
+    typed_answers = {pid: {"value": typed(v, 4), "unit": question.parts[question.part_ids.index(pid)].unit}
+                     for pid, v in {**answers, **wrong}.items() if pid < part_id}
+    typed_answers[part_id] = {"value": typed(own, 4), "unit": part.unit}
+    marked = one(key, typed_answers)
+    assert marked["results"][part_id]["code"] == "ecf", marked["results"][part_id]
+    own_marks = question.part_marks()[index]
+    assert marked["marks"]["byPart"][part_id] == [own_marks, own_marks]
+
+
+def test_a_template_may_declare_an_alternative_value():
+    """A value from another valid route, declared on the part (Part.alternatives), earns the
+    part's marks as the key does, with its reason."""
+    import dataclasses
+
+    from physics_figures.questions import Alternative
+
+    question = bank.TEMPLATES["quick-check-1"].variant(0)
+    other = dataclasses.replace(question.parts[1], alternatives=(Alternative(7.4, "another route's value"),))
+    data = dataclasses.replace(question, parts=(question.parts[0], other)).browser_data()
+    marked = mark_questions([(data, {"b": {"value": "7.4", "unit": "m/s"}})])[0]
+    assert marked["results"]["b"]["code"] == "alternative"
+    assert "another route's value" in marked["results"]["b"]["message"]
+    assert marked["marks"]["byPart"]["b"] == [2, 2]
+
+
+def test_every_part_kind_has_its_python_class_and_its_browser_marker():
+    """physics_figures.parts.KINDS and the markers in static/question-kinds/ name the same kinds,
+    and every template's kinds are among them."""
+    from physics_figures import parts
+    from physics_figures.variants import KINDS
+
+    registered = set()
+    for script in (ENGINE.parent / "question-kinds").glob("*.js"):
+        found = re.search(r"kinds: \[([^\]]*)\]", script.read_text(encoding="utf-8"))
+        assert found, f"{script.name} registers no kind"
+        registered |= set(re.findall(r'"([a-z]+)"', found[1]))
+    assert registered == set(parts.KINDS) == set(KINDS)

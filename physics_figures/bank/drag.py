@@ -498,6 +498,8 @@ def sphere_in_liquid(grams: float = 6.3, volume_cm3: float = 0.80, density: floa
                      g=g, upthrust=upthrust(density, volume, g=g)),
                  ecf=Ecf((mass_symbol * g_symbol - a_answer - b_answer / 2) / mass_symbol,
                          {"mass": mass, "g_earth": G_EARTH}),
+                 # or: W - U = D at terminal velocity, so the resultant at half the speed is D / 2
+                 ecf_also=(Ecf(b_answer / (2 * mass_symbol), {"mass": mass}),),
                  revisit="The drag is proportional to the speed, so at half the speed it is half the "
                          "terminal drag. Resultant force = weight − upthrust − drag; a = F / m.",
                  mistakes=(

@@ -351,6 +351,8 @@ def elastic_both_moving(m1: float = 0.20, u1: float = 3.0, m2: float = 0.30, spe
             Part("velocity of B after the collision", v2, "m s^-1", "velocity", units=M_S, shown_sig_figs=2,
                  direction="signed", positive=forward,
                  ecf=Ecf(sym_b + sym_a, {}),
+                 # or by momentum: m1 u1 + m2 u2 = m1 v1 + m2 v2, with (b) for v1
+                 ecf_also=(Ecf((sym_m1 * sym_u1 + sym_m2 * sym_u2 - sym_m1 * sym_b) / sym_m2, b_values),),
                  revisit="Relative speed of separation = relative speed of approach: v₂ = v₁ + (relative "
                          "speed of approach), where 1 is A and 2 is B.",
                  mistakes=(

@@ -47,6 +47,9 @@ __version__ = "1.0"
 BANK_MODULES = ("physics_figures.bank", "physics_figures.textformat", "physics_figures.variants")
 GRAPH_MODULE = "physics_figures.figures.question_graph"
 STATIC = Path(__file__).parent / "static"
+#: The part kinds' markers (static/question-kinds/), each the browser twin of a part class of
+#: physics_figures/questions.py; questions.js finds them by the kinds they register.
+KIND_SCRIPTS = ("numeric", "choice", "explain")
 logger = logging.getLogger(__name__)
 
 
@@ -610,6 +613,8 @@ def add_assets(app, pagename, templatename, context, doctree):
     if pagename in _questions(app.env) or pagename in _answer_key_docs(app.env):
         app.add_css_file("questions.css")
         add_notation_script(app)  # questions.js writes numbers with it
+        for kind in KIND_SCRIPTS:  # each part kind's marker, before the engine that finds them
+            app.add_js_file(f"question-kinds/{kind}.js", loading_method="defer", priority=450)
         app.add_js_file("questions.js", loading_method="defer")
     if pagename in _self_test_docs(app.env):
         app.add_css_file("selftest.css")

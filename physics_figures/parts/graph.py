@@ -1,0 +1,118 @@
+
+"""The graph part kind: a value read from the question's graph, right within half a small
+square, and the graph itself. Its browser twin is the numeric marker
+(question-kinds/numeric.js), which reads a part's tolerance."""
+
+from __future__ import annotations
+
+import itertools
+import math
+from dataclasses import dataclass, field
+from typing import ClassVar
+
+from .common import _require
+from .numeric import Part
+
+
+def reading_places(tolerance: float) -> int:
+    """Decimal places a reading is written to: those of a small square, twice the tolerance
+    (0.5 -> 1, 0.05 -> 2, 20 -> 0)."""
+    division = 2 * tolerance
+    for places in range(7):
+        if math.isclose(division * 10**places, round(division * 10**places), abs_tol=1e-9):
+            return places
+    return 7
+
+
+@dataclass(frozen=True)
+class GraphPart(Part):
+    """A value read from the question's graph. It is right within ``tolerance`` (SI) either
+    way, half the smallest grid division along the axis read, as the question states; a
+    reading needs no particular number of significant figures."""
+
+    tolerance: float = field(default=0.0, kw_only=True)
+    min_sig_figs: int = field(default=1, kw_only=True)
+    kind: ClassVar[str] = "graph"
+
+    def __post_init__(self):
+        _require(self.tolerance > 0, "tolerance", self.tolerance,
+                 "must be positive: half the smallest grid division of the axis read")
+        # the key prints to the places of a small square (12.5 on squares of 0.5, 240 on 20s)
+        whole_digits = math.floor(math.log10(abs(self.value))) + 1 if self.value else 1
+        object.__setattr__(self, "shown_sig_figs", max(1, whole_digits + reading_places(self.tolerance)))
+        super().__post_init__()
+
+    @property
+    def band(self) -> tuple[float, float]:
+        """The readings the marker takes as right."""
+        return (self.value - self.tolerance, self.value + self.tolerance)
+
+    def _accepted(self, value: float) -> bool:
+        low, high = self.band
+        return low - 1e-9 * abs(self.tolerance) <= value <= high + 1e-9 * abs(self.tolerance)
+
+    def _check_mistakes_differ(self) -> None:
+        """Each named mistake must lie outside the key's band and outside each other's."""
+        plain = [m for m in self.mistakes if m.unit is None and m.direction is None]
+        for mistake in plain:
+            _require(not self._accepted(self._size(mistake.value)), "mistakes", mistake.name,
+                     f"gives {mistake.value!r}, within the reading's tolerance {self.tolerance!r} "
+                     f"of the key {self.value!r}: the marker could not tell them apart")
+        for first, second in itertools.combinations(plain, 2):
+            _require(abs(first.value - second.value) > 2 * self.tolerance, "mistakes", second.name,
+                     f"is within two tolerances of '{first.name}': the marker could not tell them apart")
+
+    def browser_data(self, part_id: str) -> dict:
+        return {**super().browser_data(part_id), "tolerance": self.tolerance}
+
+
+@dataclass(frozen=True)
+class Graph:
+    """A graph that a question prints, drawn from its variant's own numbers: straight lines
+    through ``points`` (time in s, value in SI units), on a grid of small squares
+    ``time_division`` by ``value_division``. ``name`` says what it is ("momentum-time"),
+    ``quantity`` and ``unit`` label the value axis (unit in plain text, e.g. "N s");
+    ``shaded`` shades the area under the line (an impulse); ``curve`` says the points are
+    close enough to draw a smooth curve."""
+
+    name: str
+    quantity: str
+    unit: str
+    points: tuple[tuple[float, float], ...]
+    time_division: float
+    value_division: float
+    time_max: float
+    value_max: float
+    value_min: float = 0.0
+    shaded: bool = False
+    #: Many points close together that draw a smooth curve (e.g. v = v_t tanh(g t / v_t)).
+    curve: bool = False
+
+    def __post_init__(self):
+        object.__setattr__(self, "points", tuple((float(t), float(v)) for t, v in self.points))
+        _require(len(self.points) >= 2, "points", self.points, "must hold at least two points")
+        _require(self.time_division > 0 and self.value_division > 0, "time_division",
+                 (self.time_division, self.value_division), "and value_division must be positive")
+        _require(self.value_min < self.value_max, "value_min", self.value_min,
+                 f"must be below value_max={self.value_max}")
+        for name, span, division in (("time_max", self.time_max, self.time_division),
+                                     ("value_max", self.value_max - self.value_min, self.value_division)):
+            count = span / division
+            _require(abs(count - round(count)) < 1e-6 and 2 <= round(count) <= 60, name, span,
+                     f"must be 2 to 60 whole small squares of {division}")
+        times = [t for t, _ in self.points]
+        _require(all(b > a for a, b in itertools.pairwise(times)), "points", self.points,
+                 "must be in increasing time")
+        _require(times[0] >= 0 and times[-1] <= self.time_max + 1e-12, "points", self.points,
+                 f"must lie within 0 to time_max={self.time_max} s")
+        _require(all(self.value_min - 1e-12 <= v <= self.value_max + 1e-12 for _, v in self.points),
+                 "points", self.points, f"must lie within value_min={self.value_min} to value_max={self.value_max}")
+
+    def value_at(self, time: float) -> float:
+        """The value the drawn line passes through at ``time`` (what a student reads off)."""
+        for (t0, v0), (t1, v1) in itertools.pairwise(self.points):
+            if t0 <= time <= t1:
+                return v0 + (v1 - v0) * (time - t0) / (t1 - t0)
+        raise ValueError(f"time must lie on the drawn line, {self.points[0][0]} to "
+                         f"{self.points[-1][0]} s (got time={time!r})")
+

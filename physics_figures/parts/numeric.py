@@ -1,0 +1,345 @@
+
+"""The numeric part kind: a calculated value, with its unit, direction, named mistakes, the
+working that rounding part-way follows, error carried forward and alternatives. Its browser
+twin is book/_ext/questions/static/question-kinds/numeric.js."""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Callable, Mapping
+from dataclasses import KW_ONLY, dataclass, field
+from functools import cached_property
+from typing import ClassVar
+
+import sympy
+
+from .. import marking
+from ..constants import G_EARTH
+from ..notation import format_number, round_number
+from .common import (
+    ASKS,
+    DEFAULT_CHECK_SIG_FIGS,
+    DEFAULT_MIN_SIG_FIGS,
+    DIRECTION_MODES,
+    G_NINE_EIGHT,
+    G_TEN,
+    PART_IDS,
+    PART_WAY_SIG_FIGS,
+    _require,
+    number,
+    unit_text,
+)
+
+
+@dataclass(frozen=True)
+class Mistake:
+    """A classic wrong answer, computed from the question's inputs.
+
+    value: what the wrong method gives, in SI units (signed for a signed part, else a
+    size). unit: only when the mistake gives another quantity (e.g. "J" for kinetic
+    energy instead of momentum). direction: only when the mistake is a wrong direction.
+    feedback: names the mistake and the idea to revisit (plain text).
+    kind: what the mistake is, for the marks it keeps (marking_rules.json): "slip" (g = 10,
+    a power-of-ten or prefix slip: keeps the C1 and M1), "direction" (keeps all but the
+    direction's mark; the default when ``direction`` is set) or "physics" (a wrong formula or
+    idea: keeps nothing; the default otherwise). keeps: the roles it keeps where a published
+    scheme says otherwise than its kind ("method", "answer", "direction").
+    """
+
+    name: str
+    value: float
+    feedback: str
+    _: KW_ONLY
+    unit: str | None = None
+    direction: str | None = None
+    kind: str = ""
+    keeps: tuple[str, ...] | None = None
+
+    def __post_init__(self):
+        _require(math.isfinite(self.value), "value", self.value, "must be a finite number")
+        _require(bool(self.feedback.strip()), "feedback", self.feedback, "must not be empty")
+        if not self.kind:
+            object.__setattr__(self, "kind", "direction" if self.direction else "physics")
+        _require(self.kind in marking.MISTAKE_KINDS, "kind", self.kind, f"must be one of {marking.MISTAKE_KINDS}")
+        _require(self.keeps is None or set(self.keeps) <= set(marking.ROLES), "keeps", self.keeps,
+                 f"must be some of {marking.ROLES}")
+
+    @property
+    def loses(self) -> tuple[str, ...]:
+        """The roles of the part's mark lines this mistake loses."""
+        if self.keeps is not None:
+            return tuple(role for role in marking.ROLES if role not in self.keeps)
+        return marking.mistake_losses(self.kind)
+
+
+@dataclass(frozen=True)
+class Alternative:
+    """A value the mark scheme also accepts for a part (SI units): from another valid route
+    ("4500 or 4600"), or what the scheme's own rounded working gives. ``why`` says which, for
+    the feedback."""
+
+    value: float
+    why: str
+
+    def __post_init__(self):
+        object.__setattr__(self, "value", float(self.value))
+        _require(math.isfinite(self.value), "value", self.value, "must be a finite number")
+        _require(bool(self.why.strip()), "why", self.why, "must say where the value comes from")
+
+
+@dataclass(frozen=True)
+class Step:
+    """One intermediate quantity of a part's working, e.g. the rock's mass before its weight.
+
+    value: SI, unrounded; sig_figs: the precision the working prints it with.
+    """
+
+    name: str
+    value: float
+    unit: str
+    sig_figs: int = 3
+
+    def __post_init__(self):
+        object.__setattr__(self, "value", float(self.value))
+        _require(math.isfinite(self.value), "value", self.value, "must be a finite number")
+
+
+@dataclass(frozen=True)
+class Ecf:
+    """How a later part follows from earlier ones, for error carried forward.
+
+    formula: a sympy expression of the givens (symbols named as in ``values``) and of
+    earlier parts' answers (symbols named by part id: a, b, ...), in SI units. Python
+    evaluates it; sympy's JavaScript printer writes the same formula for the browser,
+    which marks a later part against the student's own earlier answer.
+    """
+
+    formula: sympy.Expr
+    values: Mapping[str, float]
+
+    def __post_init__(self):
+        names = {symbol.name for symbol in self.formula.free_symbols}
+        _require(bool(names & set(PART_IDS)), "formula", self.formula,
+                 "must use an earlier part's answer (a, b, ...): else no error is carried")
+        unknown = names - set(self.values) - set(PART_IDS)
+        clashes = sorted(set(self.values) & set(PART_IDS))
+        _require(not clashes, "values", dict(self.values),
+                 f"names {clashes}, which are part ids (a, b, ...): give a given a longer name")
+        _require(not unknown, "formula", self.formula, f"uses {sorted(unknown)}, which are not in values")
+
+    @property
+    def uses(self) -> tuple[str, ...]:
+        """The earlier parts the formula reads."""
+        return tuple(sorted(s.name for s in self.formula.free_symbols if s.name in PART_IDS))
+
+    @cached_property
+    def _function(self):
+        """The formula as a plain Python function of its symbols, sorted by name (sympy's
+        substitution is slow, and every variant is checked with it)."""
+        names = sorted(s.name for s in self.formula.free_symbols)
+        return names, sympy.lambdify([sympy.Symbol(name) for name in names], self.formula, "math")
+
+    def evaluate(self, answers: Mapping[str, float]) -> float:
+        known = {**self.values, **{part: answers[part] for part in self.uses}}
+        names, function = self._function
+        return float(function(*(known[name] for name in names)))
+
+    def browser_data(self) -> dict:
+        symbols = sorted(s.name for s in self.formula.free_symbols)
+        return {"js": sympy.jscode(self.formula), "args": symbols, "uses": list(self.uses),
+                "values": {name: self.values[name] for name in symbols if name not in PART_IDS}}
+
+
+def _round_sf(value: float, sig_figs: int) -> float:
+    return float(round_number(value, sig_figs))
+
+
+@dataclass(frozen=True)
+class Part:
+    """One answer box: prompt, answer (SI units) and how to mark it.
+
+    unit: the SI unit the answer is in, as typed ("N s", "m s^-2"); units: every usual
+    form, for messages. min_sig_figs: fewer is marked "give more significant figures".
+    shown_sig_figs: the precision the key prints (the notes' precision).
+    direction: "none" (a size), "signed" (positive is ``positive``) or "choice" (a size
+    plus one of ``choices``; the right one is ``answer_direction``). sign_means: for a
+    size, what a minus sign would say (e.g. "backwards"), when the signed form is right too.
+    asks: what the part asks for (ASKS); only "show that", "explain" and "state" earn M1.
+    working: the intermediate values, and answer_from: the answer as a function of them
+    (in order); with both, ``rounded_part_way`` lists what rounding them early gives.
+    answer_for_g: the answer as a function of g, for a part whose answer depends on g;
+    it adds the named mistake "used g = 10 m s⁻²" and the g = 9.8 slip.
+    """
+
+    prompt: str
+    value: float
+    unit: str
+    quantity: str
+    _: KW_ONLY
+    units: str = ""
+    shown_sig_figs: int = 2
+    min_sig_figs: int = DEFAULT_MIN_SIG_FIGS
+    check_sig_figs: int = DEFAULT_CHECK_SIG_FIGS
+    direction: str = "none"
+    positive: str = ""
+    choices: tuple[str, ...] = ()
+    answer_direction: str = ""
+    direction_hint: str = ""
+    sign_means: str = ""
+    mistakes: tuple[Mistake, ...] = ()
+    revisit: str = ""
+    asks: str = "calculate"
+    working: tuple[Step, ...] = ()
+    answer_from: Callable[..., float] | None = field(default=None, compare=False, repr=False)
+    answer_for_g: Callable[[float], float] | None = field(default=None, compare=False, repr=False)
+    ecf: Ecf | None = None
+    #: Other valid methods for error carried forward (e.g. the tension from the hanging mass
+    #: as well as from the block): each is tried in turn.
+    ecf_also: tuple[Ecf, ...] = ()
+    #: Values the scheme also accepts (another route, a range's ends are not needed: see GraphPart).
+    alternatives: tuple[Alternative, ...] = ()
+    kind: ClassVar[str] = "numeric"
+
+    def __post_init__(self):
+        object.__setattr__(self, "value", float(self.value))
+        _require(math.isfinite(self.value), "value", self.value, "must be a finite number")
+        _require(self.direction in DIRECTION_MODES, "direction", self.direction,
+                 f"must be one of {DIRECTION_MODES}")
+        _require(self.direction == "signed" or self.value >= 0, "value", self.value,
+                 "must be a size (>= 0) unless direction is 'signed'")
+        _require(self.direction != "signed" or bool(self.positive), "positive", self.positive,
+                 "must say which way is positive for a signed part")
+        _require(self.direction != "choice" or self.answer_direction in self.choices,
+                 "answer_direction", self.answer_direction, f"must be one of choices={self.choices}")
+        _require(1 <= self.min_sig_figs <= self.check_sig_figs, "min_sig_figs", self.min_sig_figs,
+                 f"must be between 1 and check_sig_figs={self.check_sig_figs}")
+        _require(bool(self.revisit.strip()), "revisit", self.revisit,
+                 "must name the idea to revisit after a wrong answer")
+        _require(self.asks in ASKS, "asks", self.asks, f"must be one of {ASKS}")
+        _require(not self.sign_means or self.direction == "none", "sign_means", self.sign_means,
+                 "is only for a part that asks for a size (direction 'none')")
+        _require((self.answer_from is None) == (not self.working), "working", self.working,
+                 "and answer_from go together")
+        _require(not self.ecf_also or self.ecf is not None, "ecf_also", self.ecf_also,
+                 "needs ecf, the first method, too")
+        if self.answer_from is not None:
+            # The working must lead to the answer, or "rounded part-way" would be a guess.
+            worked = self.answer_from(*(step.value for step in self.working))
+            _require(math.isclose(worked, self.value, rel_tol=1e-9, abs_tol=1e-12), "answer_from",
+                     worked, f"must give the part's value {self.value!r} from the working")
+        if self.answer_for_g is not None:
+            at_981 = self.answer_for_g(G_EARTH)
+            _require(math.isclose(at_981, self.value, rel_tol=1e-9), "answer_for_g", at_981,
+                     f"must give the part's value {self.value!r} at g = {G_EARTH}")
+            g_ten = Mistake(
+                "used g = 10 m s⁻²", self._size(self.answer_for_g(G_TEN)),
+                "You used g = 10 m s⁻². The data give g = 9.81 m s⁻²: with 10 the answer "
+                "is out in the second significant figure, which loses the accuracy mark (A1).",
+                kind="slip")
+            object.__setattr__(self, "mistakes", (*self.mistakes, g_ten))
+        for mistake in self.mistakes:
+            _require(mistake.direction is None or mistake.direction in self.choices,
+                     "mistake.direction", mistake.direction, f"must be one of choices={self.choices}")
+        self._check_mistakes_differ()
+
+    def _check_mistakes_differ(self) -> None:
+        """The marker names the first mistake a typed value matches at check_sig_figs, so two
+        named mistakes (or, for a signed part, a mistake and the sign slip) must differ there."""
+        seen: dict[str, str] = {}
+        slip = number(-self.value, self.check_sig_figs) if self.direction == "signed" else None
+        for mistake in self.mistakes:
+            if mistake.unit is not None or mistake.direction is not None:
+                continue
+            typed = number(self._size(mistake.value), self.check_sig_figs)
+            _require(typed not in seen, "mistakes", mistake.name,
+                     f"gives {typed}, as '{seen.get(typed)}' does: the marker could not tell them apart")
+            _require(typed != slip or self.value == 0, "mistakes", mistake.name,
+                     f"gives {typed}, the right answer with the wrong sign: the marker could not "
+                     "tell it from a sign slip")
+            seen[typed] = mistake.name
+
+    def _size(self, value: float) -> float:
+        return value if self.direction == "signed" else abs(value)
+
+    def _accepted(self, value: float) -> bool:
+        """The marker takes value, typed to 3 s.f., as right (it trusts the key to 3 s.f.)."""
+        return number(value, self.check_sig_figs) == number(self.value, self.check_sig_figs)
+
+    def _named(self, value: float) -> bool:
+        return any(m.unit is None and m.direction is None
+                   and number(m.value, self.check_sig_figs) == number(value, self.check_sig_figs)
+                   for m in self.mistakes)
+
+    @property
+    def ecf_methods(self) -> tuple[Ecf, ...]:
+        """Every valid method that carries an earlier answer forward to this part."""
+        return () if self.ecf is None else (self.ecf, *self.ecf_also)
+
+    @property
+    def g_nine_eight(self) -> float | None:
+        """The answer with g = 9.8 m s⁻², when the marker would not already accept it."""
+        if self.answer_for_g is None:
+            return None
+        value = self._size(self.answer_for_g(G_NINE_EIGHT))
+        return None if self._accepted(value) or self._named(value) else value
+
+    @property
+    def rounded_part_way(self) -> tuple[tuple[float, str], ...]:
+        """(answer, what was rounded) for each way of rounding the working to 2 or 3 s.f.
+        early that the marker would not accept as right and that is no named mistake (nor
+        the g = 9.8 slip, which the marker names first)."""
+        if self.answer_from is None:
+            return ()
+        found: dict[str, tuple[float, str]] = {}
+        # The marker says "g = 9.8" first for that value: it is no rounding to report.
+        g_slip = None if self.g_nine_eight is None else number(self.g_nine_eight, self.check_sig_figs)
+        indices = range(len(self.working))
+        for sig_figs in PART_WAY_SIG_FIGS:
+            for size in range(1, len(self.working) + 1):
+                for chosen in itertools.combinations(indices, size):
+                    values = [_round_sf(step.value, sig_figs) if i in chosen else step.value
+                              for i, step in enumerate(self.working)]
+                    answer = self._size(self.answer_from(*values))
+                    key = number(answer, self.check_sig_figs)
+                    if self._accepted(answer) or self._named(answer) or key in found or key == g_slip:
+                        continue
+                    what = " and ".join(
+                        f"the {self.working[i].name} to {number(values[i], sig_figs)}"
+                        f"{' ' if self.working[i].unit != '°' else ''}{unit_text(self.working[i].unit)}"
+                        for i in chosen)
+                    found[key] = (answer, what)
+        return tuple(found.values())
+
+    @property
+    def answer_text(self) -> str:
+        """The answer as the key prints it (plain text), e.g. "11.6 m s⁻² upwards"."""
+        space = "" if self.unit == "°" else " "
+        text = f"{format_number(self.value, self.shown_sig_figs)}{space}{unit_text(self.unit)}"
+        if self.direction == "choice":
+            text += f" {self.answer_direction}"
+        if self.direction == "signed":
+            text += f" (positive: {self.positive})"
+        return text
+
+    def browser_data(self, part_id: str) -> dict:
+        """What the marking script needs (JSON-ready)."""
+        return {
+            "id": part_id, "prompt": self.prompt, "value": self.value, "unit": self.unit,
+            "units": unit_text(self.units or self.unit), "quantity": self.quantity,
+            "minSf": self.min_sig_figs, "checkSf": self.check_sig_figs,
+            "direction": self.direction, "positive": self.positive, "choices": list(self.choices),
+            "answerDirection": self.answer_direction, "directionHint": self.direction_hint,
+            "signMeans": self.sign_means,
+            "revisit": self.revisit,
+            "mistakes": [
+                {"name": m.name, "value": m.value, "unit": m.unit, "direction": m.direction,
+                 "feedback": m.feedback, "loses": list(m.loses)}
+                for m in self.mistakes
+            ],
+            "alternatives": [{"value": a.value, "why": a.why} for a in self.alternatives],
+            "gNineEight": self.g_nine_eight,
+            "roundedPartWay": [{"value": value, "rounded": what} for value, what in self.rounded_part_way],
+            "ecf": [method.browser_data() for method in self.ecf_methods], "kind": self.kind,
+        }
+

@@ -180,7 +180,7 @@ def test_no_marking_rule_is_written_in_the_engine():
     assert not re.search(r"\"[ABCM]1\"", code_only), "a mark code in the engine's code"
     assert not re.search(r"minSf \|\| \d|checkSf \|\| \d", code_only), "a significant-figure default in the engine"
     assert not re.search(r"ALL_BUT_A1|WRONG_WAY|NOT_AN_ERROR|lose: \"", code_only)
-    codes = set(re.findall(r"(?:\bout|\boutcome)\(\s*\"([a-z0-9.-]+)\"", code_only))
+    codes = set(re.findall(r"(?:\bout\(|\boutcome\(|\bcode: )\s*\"([a-z0-9.-]+)\"", code_only))
     codes |= set(re.findall(r"\? \"([a-z-]+)\" : \"([a-z-]+)\"", code_only)[0]) if re.search(
         r"\? \"([a-z-]+)\" : \"([a-z-]+)\"", code_only) else set()
     table = set(marking.rules()["outcomes"])

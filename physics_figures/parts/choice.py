@@ -9,7 +9,7 @@ from typing import ClassVar
 
 from .. import marking, textformat
 from ..notation import format_number
-from .common import _require
+from .common import NoValue, _require
 
 OPTION_LETTERS = ("A", "B", "C", "D")
 
@@ -30,7 +30,7 @@ class Option:
 
 
 @dataclass(frozen=True)
-class ChoicePart:
+class ChoicePart(NoValue):
     """A Paper 1-style multiple-choice part: options A to D, one of them right (``answer``).
     The wrong options are named mistakes worked from the same givens, or named misconceptions."""
 
@@ -40,11 +40,6 @@ class ChoicePart:
     revisit: str
     kind: ClassVar[str] = "mcq"
     asks: ClassVar[str] = "state"
-    value: ClassVar[None] = None
-    mistakes: ClassVar[tuple] = ()
-    direction: ClassVar[str] = "none"
-    ecf: ClassVar[None] = None
-    ecf_methods: ClassVar[tuple] = ()
 
     def __post_init__(self):
         _require(len(self.options) == len(OPTION_LETTERS), "options", len(self.options),

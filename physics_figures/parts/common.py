@@ -5,6 +5,7 @@ that write a number and a unit and refuse an impossible value."""
 from __future__ import annotations
 
 import re
+from typing import ClassVar
 
 from .. import marking
 from ..notation import format_number
@@ -47,3 +48,14 @@ def _require(ok: bool, name: str, value, rule: str) -> None:
     if not ok:
         raise ValueError(f"{name} {rule} (got {name}={value!r})")
 
+
+class NoValue:
+    """What a part that asks for no number (a choice, an explanation) answers when the marker,
+    the sheets or Moodle ask it numeric questions: no value, no named mistakes of its own, no
+    direction and nothing carried forward."""
+
+    value: ClassVar[None] = None
+    mistakes: ClassVar[tuple] = ()
+    direction: ClassVar[str] = "none"
+    ecf: ClassVar[None] = None
+    ecf_methods: ClassVar[tuple] = ()

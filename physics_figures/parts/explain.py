@@ -8,10 +8,11 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from .. import textformat
+from .common import NoValue
 
 
 @dataclass(frozen=True)
-class ExplainPart:
+class ExplainPart(NoValue):
     """A describe-and-explain part. The student writes an answer, then ticks the marking points
     of its mark-scheme lines that they made, and scores themselves against them."""
 
@@ -19,11 +20,6 @@ class ExplainPart:
     model_answer: str
     kind: ClassVar[str] = "explain"
     asks: ClassVar[str] = "explain"
-    value: ClassVar[None] = None
-    mistakes: ClassVar[tuple] = ()
-    direction: ClassVar[str] = "none"
-    ecf: ClassVar[None] = None
-    ecf_methods: ClassVar[tuple] = ()
     revisit: ClassVar[str] = ""
 
     def __post_init__(self):

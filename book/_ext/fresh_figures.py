@@ -61,6 +61,7 @@ class ImportGraph:
         self.package = package
         self.root = Path(next(iter(spec.submodule_search_locations)))
         self._direct: dict[str, frozenset[str]] = {}
+        self._data: dict[str, list[Path]] = {}
 
     def path(self, module: str) -> Path | None:
         """The file Python runs for `module` (a package's ``__init__.py``), or None."""
@@ -128,12 +129,14 @@ class ImportGraph:
 
     def data_files(self, module: str) -> list[Path]:
         """The data files a module reads: those beside it that a string in its code names
-        (``Path(__file__).with_name("marking_rules.json")``)."""
-        path = self.path(module)
-        names = {node.value for node in ast.walk(ast.parse(path.read_bytes()))
-                 if isinstance(node, ast.Constant) and isinstance(node.value, str)
-                 and re.fullmatch(r"[\w-]+\.\w+", node.value) and not node.value.endswith(".py")}
-        return sorted(path.with_name(name) for name in names if path.with_name(name).is_file())
+        (``Path(__file__).with_name("marking_rules.json")``). Read once a build."""
+        if module not in self._data:
+            path = self.path(module)
+            names = {node.value for node in ast.walk(ast.parse(path.read_bytes()))
+                     if isinstance(node, ast.Constant) and isinstance(node.value, str)
+                     and re.fullmatch(r"[\w-]+\.\w+", node.value) and not node.value.endswith(".py")}
+            self._data[module] = sorted(path.with_name(name) for name in names if path.with_name(name).is_file())
+        return self._data[module]
 
     def files(self, modules: Iterable[str]) -> list[Path]:
         """Every file of the closure of `modules`: the modules and the data files they read."""

@@ -113,9 +113,15 @@ def right_forms(question: Question, index: int) -> list[tuple[float, float]]:
         forms.append(_exact(float(round_number(other, RIGHT_SIG_FIGS[0]))))
     size = (lambda v: v) if part.direction == "signed" else abs
     forms += [_band(size(a.value), RIGHT_SIG_FIGS[1]) for a in (*part.alternatives, *question.scheme_alternatives(index))]
-    unique: list[tuple[float, float]] = []  # a range inside an earlier one's is never reached
+    unique: list[tuple[float, float]] = []
     for value, width in forms:
-        if not any(abs(value - v) + width <= w * (1 + 1e-9) for v, w in unique):
+        if any(abs(value - v) + width <= w * (1 + 1e-9) for v, w in unique):
+            continue  # inside an earlier range: never reached
+        holds = [i for i, (v, w) in enumerate(unique) if abs(value - v) + w <= width * (1 + 1e-9)]
+        if holds:  # it holds an earlier range: it takes that one's place (the key still first)
+            unique[holds[0]] = (value, width)
+            unique = [form for i, form in enumerate(unique) if i not in holds[1:]]
+        else:
             unique.append((value, width))
     return unique
 

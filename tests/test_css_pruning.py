@@ -50,6 +50,8 @@ def _shot(browser, base_url: str, page_path: str, width: int, mode: str, *, menu
     context.add_init_script(f"localStorage.setItem('mode', '{mode}'); localStorage.setItem('theme', '{mode}');")
     page = context.new_page()
     page.goto(f"{base_url}/{page_path}", wait_until="load")
+    # every deferred script and figure fetched (a slow machine is still loading at "load")
+    page.wait_for_load_state("networkidle")
     page.evaluate("document.fonts.ready")
     if "search.html" in page_path:
         # every result, with its snippet (each comes with a fetch of its page, in any order)

@@ -294,3 +294,10 @@ def test_a_sheet_never_breaks_a_line_between_a_number_and_its_unit():
     assert r"at 1.5~m~s\textsuperscript{-2}" in rich("at 1.5 m s<sup>-2</sup>")
     assert "used g = 10~m~s⁻²" in tex("used g = 10 m s⁻²")
     assert r"100\% of 20~kg, \{a\}" in tex("100% of 20 kg, {a}")
+
+
+def test_the_moodle_verdict_script_is_valid_php():
+    """scripts/moodle_verdicts.php (the release check in a real Moodle) at least parses."""
+    result = subprocess.run(["php", "-l", str(Path(__file__).resolve().parents[1] / "scripts" / "moodle_verdicts.php")],
+                            capture_output=True, text=True, check=False)
+    assert result.returncode == 0 and "No syntax errors" in result.stdout, result.stdout + result.stderr

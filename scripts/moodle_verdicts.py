@@ -3,7 +3,7 @@
 For every question of the Moodle export (every template, variant and part), the table's inputs:
 the right answer at 2, 3 and 4 s.f., every named mistake, g = 9.8, each part-way rounding, a
 unit slip (no unit), the right value in another prefix, a wrong unit, and every option of a
-multiple-choice item. The book's fraction comes from the browser's own engine (questions.js under
+multiple-choice item. The book's fraction comes from the browser's own engine (marking.js under
 Node, on the data the site ships); Moodle's from Moodle's question engine, through
 scripts/moodle_verdicts.php on a Moodle where the file has been imported
 (../shared/moodle: setup.sh, then import.php FILE.xml).
@@ -31,7 +31,7 @@ from physics_figures.textformat import to_plain
 from physics_figures.worksheets.moodle import UNIT_FORMS, variant_indices
 
 ROOT = Path(__file__).resolve().parents[1]
-ENGINE = ROOT / "book" / "_ext" / "questions" / "static" / "questions.js"
+ENGINE = ROOT / "book" / "_ext" / "questions" / "static" / "marking.js"
 #: Inputs Moodle's core types cannot grade the book's way: left out of the rate, listed.
 CANNOT = {
     "shared": "a mark line shared by two parts",

@@ -21,7 +21,7 @@ from physics_figures.constants import G_EARTH
 from physics_figures.notation import format_number, plain_number
 
 ROOT = Path(__file__).resolve().parents[1]
-ENGINE = ROOT / "book" / "_ext" / "questions" / "static" / "questions.js"
+ENGINE = ROOT / "book" / "_ext" / "questions" / "static" / "marking.js"
 
 
 def mark_questions(cases: list[tuple[dict, dict]]) -> list[dict]:
@@ -171,11 +171,10 @@ def test_no_marking_rule_is_written_in_the_engine():
     """The rule table is physics_figures/marking_rules.json: the engine and its part kinds name no
     mark code, have no significant-figure number of their own and no list of what an outcome
     loses, and every outcome they can give is in the table."""
-    source = ENGINE.read_text(encoding="utf-8")
-    engine = source[:source.index("// ------------------------------------------------------------------ page")]
     kinds = sorted((ENGINE.parent / "question-kinds").glob("*.js"))
     assert kinds, "no part kind scripts"
-    engine += "".join(kind.read_text(encoding="utf-8") for kind in kinds)
+    scripts = [ENGINE, ENGINE.parent / "answer-reading.js", *kinds]  # the engine, not the page code
+    engine = "".join(script.read_text(encoding="utf-8") for script in scripts)
     code_only = re.sub(r"/\*.*?\*/|//[^\n]*", "", engine, flags=re.DOTALL)
     assert not re.search(r"\"[ABCM]1\"", code_only), "a mark code in the engine's code"
     assert not re.search(r"minSf \|\| \d|checkSf \|\| \d", code_only), "a significant-figure default in the engine"

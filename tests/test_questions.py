@@ -681,3 +681,22 @@ def test_a_graph_goes_with_a_part_read_from_it_at_half_a_small_square():
         _graph_question(graph=None)
     with pytest.raises(ValueError, match="tolerance must be half a small square of the graph"):
         _graph_question(parts=(_reading(tolerance=0.1),))
+
+
+def test_every_feedback_names_a_declared_section():
+    """Feedback links are named in the data (Part.see, Mistake.see, Option.see), never guessed
+    from the words: each id is a section of physics_figures.bank.sections, and every part a
+    student can get wrong by a value or a choice names one."""
+    from physics_figures.bank.sections import SECTIONS
+
+    named = 0
+    for template in bank.TEMPLATES.values():
+        for variant in template.variants:
+            for part in variant.parts:
+                if part.kind == "explain":
+                    continue
+                ids = [part.see, *(m.see for m in getattr(part, "mistakes", ())),
+                       *(o.see for o in getattr(part, "options", ()))]
+                assert all(i is None or i in SECTIONS for i in ids), (template.key, ids)
+                named += sum(i is not None for i in ids)
+    assert named > 1000

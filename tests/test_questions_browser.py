@@ -30,7 +30,7 @@ def _open(browser, url, **context_options):
     errors = []  # from the questions' script only (the theme's own errors are checked elsewhere)
     page.on("console", lambda m: m.type == "error" and "questions" in m.location.get("url", "")
             and errors.append(m.text))
-    page.on("pageerror", lambda e: "questions.js" in (e.stack or "") and errors.append(str(e)))
+    page.on("pageerror", lambda e: any(s in (e.stack or "") for s in ("questions.js", "marking.js", "answer-reading.js", "question-kinds")) and errors.append(str(e)))
     page.goto(url, wait_until="load")
     return context, page, errors
 

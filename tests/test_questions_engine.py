@@ -1,4 +1,4 @@
-"""The browser's marking engine (book/_ext/questions/static/questions.js), run under Node.
+"""The browser's marking engine (book/_ext/questions/static/marking.js), run under Node.
 
 1. `node --test tests/js` runs the engine's own tests (numbers, significant figures,
    units, direction, named mistakes).
@@ -22,7 +22,7 @@ from physics_figures import questions as q
 from physics_figures.notation import format_number, plain_number
 
 ROOT = Path(__file__).resolve().parents[1]
-ENGINE = ROOT / "book" / "_ext" / "questions" / "static" / "questions.js"
+ENGINE = ROOT / "book" / "_ext" / "questions" / "static" / "marking.js"
 
 
 def node() -> str:

@@ -20,7 +20,6 @@ drops from print.
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -28,7 +27,7 @@ from docutils import nodes
 from docutils.frontend import OptionParser
 from docutils.utils import new_document
 from latex_print import _latex_escape, _raw_latex  # same folder (book/_latex)
-from questions import page_of  # book/_ext/questions: the questions this prints
+from questions.store import page_of  # book/_ext/questions: the questions this prints
 from sphinx.application import Sphinx
 from sphinx.util import logging
 from sphinx.util.docutils import SphinxFileOutput
@@ -38,13 +37,6 @@ logger = logging.getLogger(__name__)
 
 QUESTIONS_TEX = "dynamics-questions.tex"
 ANSWERS_TEX = "dynamics-answers.tex"
-# "(a) speed = ........" or "... = ........ direction: ........" (dots may have become "…")
-ANSWER_LINE = re.compile(r"^(?P<prompt>.*?)\s*=\s*[.…]+(?P<direction>\s*direction:\s*[.…]+)?"
-                         r"(?:\s*\[(?P<marks>\d+)\])?\s*$")
-# "Total: 4 marks" after a question's answer lines (book/_ext/questions)
-TOTAL_LINE = re.compile(r"^Total: (?P<marks>\d+) marks?$")
-
-
 @dataclass
 class Printed:
     """What the book's questions look like in print, gathered from the merged doctree."""
@@ -58,17 +50,14 @@ def _has_class(node: nodes.Node, name: str) -> bool:
 
 
 def _answer_lines(container: nodes.container) -> None:
-    """Each "prompt = ...." paragraph becomes a dotted line (\\dynamicsanswerline)."""
+    """Each value's answer line becomes a dotted line (\\dynamicsanswerline), drawn from the
+    line's data (its prompt, marks and direction: book/_ext/questions/directive.py)."""
     for paragraph in list(container.findall(nodes.paragraph)):
-        total = TOTAL_LINE.match(paragraph.astext())
-        if total is not None:
-            paragraph.replace_self(_raw_latex(rf"\dynamicstotal{{{total['marks']}}}"))
-            continue
-        match = ANSWER_LINE.match(paragraph.astext())
-        if match is None:
-            continue
-        macro = r"\dynamicsanswerlinewithdirection" if match["direction"] else r"\dynamicsanswerline"
-        paragraph.replace_self(_raw_latex(f"{macro}{{{_latex_escape(match['prompt'])}}}{{{match['marks'] or ''}}}"))
+        if _has_class(paragraph, "q-total"):
+            paragraph.replace_self(_raw_latex(rf"\dynamicstotal{{{paragraph['marks']}}}"))
+        elif _has_class(paragraph, "q-answer-line"):
+            macro = r"\dynamicsanswerlinewithdirection" if paragraph["direction"] else r"\dynamicsanswerline"
+            paragraph.replace_self(_raw_latex(f"{macro}{{{_latex_escape(paragraph['prompt'])}}}{{{paragraph['marks']}}}"))
 
 
 def _number_title(question: nodes.container, number: int) -> None:
@@ -76,16 +65,6 @@ def _number_title(question: nodes.container, number: int) -> None:
         if _has_class(paragraph, "q-title"):
             paragraph.insert(0, nodes.Text(f"{number}. "))
             return
-
-
-def _try_first(anchor: str) -> bool:
-    """A worked example's try-first part (physics_figures.bank): the book prints it between
-    the example and its solution, but it is no question of the sheet or the key, as its
-    statement and its answers are the example's."""
-    from physics_figures import bank
-
-    template = bank.TEMPLATES.get(anchor.removeprefix("question-"))
-    return bool(template and template.try_first)
 
 
 def _keep_headings_with_their_text(key: nodes.container) -> None:
@@ -97,12 +76,13 @@ def _keep_headings_with_their_text(key: nodes.container) -> None:
 
 def _drop_try_first(key: nodes.container) -> None:
     """Take the try-first parts' entries (title, answers, mark scheme) out of the key, and a
-    page heading left with no entry."""
+    page heading left with no entry. A worked example's try-first part is printed between the
+    example and its solution, but it is no question of the sheet or the key: its statement
+    and its answers are the example's."""
     dropping = False
     for child in list(key.children):
         if _has_class(child, "q-key-title"):
-            anchors = [r.get("refuri", "").rpartition("#")[2] for r in child.findall(nodes.reference)]
-            dropping = any(_try_first(anchor) for anchor in anchors)
+            dropping = child["try_first"]
         elif _has_class(child, "q-key-page"):
             dropping = False
         if dropping:
@@ -125,9 +105,9 @@ def prepare(app: Sphinx, doctree: nodes.document, docname: str) -> None:
             for lines in container.findall(nodes.container):
                 if _has_class(lines, "q-answer-lines"):
                     _answer_lines(lines)
-            if _try_first(container["ids"][0]):
+            if container["try_first"]:
                 continue
-            number_of[container["ids"][0]] = number = len(number_of) + 1
+            number_of[container["question"]] = number = len(number_of) + 1
             _number_title(container, number)
             printed.questions.append((page_of(container, app.env), container.deepcopy()))
     for key in doctree.findall(nodes.container):
@@ -137,11 +117,8 @@ def prepare(app: Sphinx, doctree: nodes.document, docname: str) -> None:
             for title in key.findall(nodes.paragraph):
                 if not _has_class(title, "q-key-title"):
                     continue
-                for reference in title.findall(nodes.reference):
-                    anchor = reference.get("refuri", "").rpartition("#")[2]
-                    if anchor in number_of:
-                        title.insert(0, nodes.Text(f"{number_of[anchor]}. "))
-                        break
+                if title["question"] in number_of:
+                    title.insert(0, nodes.Text(f"{number_of[title['question']]}. "))
             printed.keys.append(key.deepcopy())
     if printed.questions:
         app.builder._dynamics_printed = printed

@@ -44,10 +44,10 @@ def backpack_on_the_moon(mass: float = 12.0) -> Question:
                  mistakes=(
                      Mistake("mass scaled with g", mass * G_MOON / G_EARTH,
                              "Mass doesn't change with g: it is the same on the Moon. Only the "
-                             "weight changes."),
+                             "weight changes.", see="weight"),
                      Mistake("mass divided by g", mass / G_MOON,
                              f"Mass doesn't depend on g at all: the backpack's mass is still {m} kg."),
-                 )),
+                 ), see="first-law"),
             Part("weight on the Moon", moon_weight, "N", "weight", shown_sig_figs=3,
                  revisit="Weight = mass × gravitational field strength, W = mg, with the Moon's g.",
                  mistakes=(
@@ -57,7 +57,7 @@ def backpack_on_the_moon(mass: float = 12.0) -> Question:
                              f"{m} is the mass in kg. Weight is a force: W = mg."),
                      Mistake("divided by g", mass / G_MOON,
                              "You divided by g. Weight = mass × g."),
-                 )),
+                 ), see="weight"),
         ),
         mark_scheme=(
             Mark(f"Mass = {m} kg (it doesn't change)", "B1", "a"),
@@ -83,10 +83,10 @@ def tennis_ball(grams: float = 57.0, speed: float = 50.0) -> Question:
                      Mistake("mass left in grams", grams * speed,
                              f"You used the mass in g. Convert to kg first: {g} g = {kg} kg.", kind="slip"),
                      Mistake("kinetic energy instead of momentum", kinetic_energy(mass, speed),
-                             "That is the kinetic energy, ½mv², in J. Momentum is mv, in N s.", unit="J"),
+                             "That is the kinetic energy, ½mv², in J. Momentum is mv, in N s.", unit="J", see="kinetic-energy"),
                      Mistake("mass divided by speed", mass / speed,
                              "You divided the mass by the speed. Momentum is mass × velocity."),
-                 )),
+                 ), see="momentum"),
         ),
         mark_scheme=(
             Mark(f"m = {g} g = {kg} kg, so p = mv = {kg} × {v}", "C1"),
@@ -118,7 +118,7 @@ def rock_from_mars(mars_weight: float = 5.4, g_mars: float = 3.7) -> Question:
                      Mistake("used the Earth's g", mass_from_weight(mars_weight),
                              f"You used the Earth's g. The {w_mars} N was measured on Mars, so divide "
                              f"by {g_m}."),
-                 )),
+                 ), see="weight"),
             Part("weight of the rock on the Earth", earth_weight, "N", "weight", shown_sig_figs=3,
                  working=(Step("mass", mass, "kg"),), answer_from=lambda m: weight(m),
                  answer_for_g=lambda g: weight(mass, g=g),
@@ -130,7 +130,7 @@ def rock_from_mars(mars_weight: float = 5.4, g_mars: float = 3.7) -> Question:
                              "what stays the same."),
                      Mistake("mass given as weight", mass,
                              "That is the mass in kg. Weight is a force: W = mg."),
-                 )),
+                 ), see="weight"),
         ),
         mark_scheme=(
             Mark(f"m = W / g = {w_mars} / {g_m}", "C1", "a"),
@@ -190,7 +190,7 @@ _MASS_WEIGHT = (
      "What are the SI base units of force?",
      "kg m s<sup>−2</sup>",
      (("kg m s<sup>−1</sup>", "units of momentum",
-       ("kg m s⁻¹ is the unit of momentum. Force is momentum ÷ time: kg m s⁻¹ ÷ s = kg m s⁻².")),
+       ("kg m s⁻¹ is the unit of momentum. Force is momentum ÷ time: kg m s⁻¹ ÷ s = kg m s⁻²."), "momentum"),
       ("N", "the newton taken as a base unit",
        "The newton is a derived unit. The SI base units are kg, m and s: 1 N = 1 kg m s⁻²."),
       ("kg m<sup>2</sup> s<sup>−2</sup>", "units of energy",
@@ -201,12 +201,12 @@ _MASS_WEIGHT = (
      (("It is larger than before lift-off, because the rocket accelerates upwards.",
        "weight confused with the contact force",
        ("The seat pushes up on her harder (the contact force is m(g + a)), but the gravitational force, "
-       "mg, does not depend on how the rocket accelerates.")),
+       "mg, does not depend on how the rocket accelerates."), "lift"),
       ("It is zero, because she is no longer on the ground.", "no weight off the ground",
        "The Earth's gravitational field still acts on her, so her weight is still mg."),
       ("It is smaller than before lift-off, because the rocket pushes her upwards.",
        "weight reduced by the upward push",
-       "The push of the seat is a separate force, the contact force. Her weight, mg, is unchanged."))),
+       "The push of the seat is a separate force, the contact force. Her weight, mg, is unchanged.", "lift"))),
 )
 
 
@@ -216,7 +216,7 @@ def mass_weight_choice(situation: float = 0) -> Question:
     index = int(situation)
     what, prompt, right, wrong = _MASS_WEIGHT[index]
     place = index % len(OPTION_LETTERS)
-    rows = [Option(text, name, feedback) for text, name, feedback in wrong]
+    rows = [Option(*row) for row in wrong]  # (text, mistake, feedback), and a section where not the part's
     rows.insert(place, Option(right))
     return Question(
         key="mass-weight-choice",
@@ -225,7 +225,7 @@ def mass_weight_choice(situation: float = 0) -> Question:
         parts=(ChoicePart(prompt, tuple(rows), OPTION_LETTERS[place],
                           revisit="Mass (kg, a scalar) resists a change in motion and is the same "
                                   "everywhere; weight (N, a vector) is the force of a gravitational "
-                                  "field on a mass, W = mg."),),
+                                  "field on a mass, W = mg.", see="weight"),),
         mark_scheme=(Mark(f"{OPTION_LETTERS[place]}: {right}", "B1"),),
     )
 

@@ -70,7 +70,7 @@ def skydiver_parachute_opens(mass: float = 70.0, open_drag: float = 1500.0) -> Q
                      Mistake("drag is zero", 0.0,
                              "At terminal velocity the resultant force is zero, not the drag: the drag "
                              "has grown to equal the weight."),
-                 )),
+                 ), see="skydiver"),
             Part("acceleration when the parachute opens", a, "m s^-2", "acceleration", units=M_S2,
                  shown_sig_figs=3, direction="choice", choices=("upwards", "downwards"),
                  answer_direction="upwards",
@@ -94,7 +94,7 @@ def skydiver_parachute_opens(mass: float = 70.0, open_drag: float = 1500.0) -> Q
                      Mistake("acceleration of free fall", G_EARTH,
                              "g is the acceleration with no drag at all. Here work out the resultant "
                              "force (drag − weight) and divide by the mass."),
-                 )),
+                 ), see="skydiver"),
         ),
         mark_scheme=(
             Mark(f"At terminal velocity the resultant force is zero, so drag = mg = {m} × {n(G_EARTH, 3)} "
@@ -134,7 +134,7 @@ def parachute_opens_choice(mass: float = 70.0, drag: float = 1500.0) -> Question
         givens=(Given("mass", mass, "kg", 2), Given("drag", drag, "N", 2)),
         parts=(ChoicePart("What is the magnitude of her acceleration just after the parachute opens?",
                           options, answer,
-                          revisit="Resultant force = drag − weight, and a = resultant force / mass."),),
+                          revisit="Resultant force = drag − weight, and a = resultant force / mass.", see="skydiver"),),
         mark_scheme=(Mark(f"{answer}: a = ({n(drag, 2)} − {n(mass, 2)} × 9.81) / {n(mass, 2)} "
                           f"= {n(key, 3)} {PER_S2} (upwards)", "B1"),),
     )
@@ -213,7 +213,7 @@ def drag_fraction_choice(percent: float = 25.0) -> Question:
         givens=(Given("air resistance as a percentage of the weight", percent, "%", 2),),
         parts=(ChoicePart("What is the acceleration of the stone at this instant?", options, answer,
                           revisit="Resultant force = weight − air resistance (they act in opposite "
-                                  "directions), and a = resultant force / mass."),),
+                                  "directions), and a = resultant force / mass.", see="skydiver"),),
         mark_scheme=(Mark(f"{answer}: resultant force = W − {p}% of W, so a = (1 − {n(fraction, 2)}) × "
                           f"9.81 = {n(key, 3)} {PER_S2} (downwards)", "B1"),),
     )
@@ -293,7 +293,7 @@ def terminal_velocity_choice(situation: float = 0) -> Question:
         parts=(ChoicePart("Which statement is correct?", tuple(rows), OPTION_LETTERS[place],
                           revisit="At terminal velocity the velocity is constant, so the acceleration "
                                   "and the resultant force are zero: weight = drag (+ upthrust in a "
-                                  "liquid)."),),
+                                  "liquid).", see="skydiver"),),
         mark_scheme=(Mark(f"{OPTION_LETTERS[place]}: {right}", "B1"),),
     )
 
@@ -409,7 +409,7 @@ def falling_with_drag_constant(mass: float = 80.0, k: float = 0.25, speed: float
                      Mistake("acceleration of free fall", G_EARTH,
                              "g is her acceleration only when there is no air resistance. At this speed "
                              "the resultant force is mg − D."),
-                 )),
+                 ), see="skydiver"),
             Part("terminal velocity", v_t, "m s^-1", "velocity", units=M_S, shown_sig_figs=3,
                  answer_for_g=lambda g: terminal_velocity(mass, k, g=g),
                  revisit="At terminal velocity the drag equals the weight: kv² = mg, so v = √(mg / k).",
@@ -418,7 +418,7 @@ def falling_with_drag_constant(mass: float = 80.0, k: float = 0.25, speed: float
                              "That is v², not v: kv² = mg gives v² = mg / k; take the square root."),
                      Mistake("mass used instead of weight", terminal_velocity(mass, k, g=1.0),
                              "You used the mass for the weight. The drag equals the weight, mg, in N."),
-                 )),
+                 ), see="skydiver"),
         ),
         mark_scheme=(
             Mark(f"D = kv<sup>2</sup> = {kk} × {v}<sup>2</sup>", "C1", "a"),
@@ -470,7 +470,7 @@ def sphere_in_liquid(grams: float = 6.3, volume_cm3: float = 0.80, density: floa
                      Mistake("sphere's density used, not the liquid's", w_,
                              "That is the sphere's weight. The upthrust uses the density of the "
                              "liquid: ρgV."),
-                 )),
+                 ), see="skydiver"),
             Part("viscous drag at terminal velocity", d, "N", "force", shown_sig_figs=3,
                  working=(Step("weight of the sphere", w_, "N"), Step("upthrust", u, "N")),
                  answer_from=lambda w1, u1: drag_at_terminal_velocity(w1, u1),
@@ -488,7 +488,7 @@ def sphere_in_liquid(grams: float = 6.3, volume_cm3: float = 0.80, density: floa
                              "subtract it."),
                      Mistake("mass left in grams", weight(grams) - u,
                              f"You used the mass in g. Convert to kg first: {gr} g = {n(mass, 2)} kg.", kind="slip"),
-                 )),
+                 ), see="skydiver"),
             Part("size of the acceleration at half the terminal velocity", a, "m s^-2", "acceleration",
                  units=M_S2, shown_sig_figs=3,
                  working=(Step("drag at half the terminal velocity", d / 2, "N"), Step("upthrust", u, "N")),
@@ -508,7 +508,7 @@ def sphere_in_liquid(grams: float = 6.3, volume_cm3: float = 0.80, density: floa
                      Mistake("acceleration of free fall", G_EARTH,
                              "g is the acceleration with no drag and no upthrust. Here both act "
                              "upwards: resultant = weight − upthrust − drag."),
-                 )),
+                 ), see="skydiver"),
         ),
         mark_scheme=(
             Mark(f"U = ρgV = {rho} × {n(G_EARTH, 3)} × {vol} × 10<sup>−6</sup>", "C1", "a"),
@@ -557,7 +557,7 @@ def skydiver_velocity_time(terminal: float = 50.0, mass: float = 70.0) -> Questi
         graph=graph,
         parts=(
             GraphPart("terminal velocity", terminal, "m s^-1", "velocity", units=M_S, tolerance=1.0,
-                      revisit="The terminal velocity is where the curve levels off: read that value."),
+                      revisit="The terminal velocity is where the curve levels off: read that value.", see="skydiver"),
             Part("drag force at terminal velocity", drag, "N", "force", shown_sig_figs=3, asks="state",
                  answer_for_g=lambda g: weight(mass, g=g),
                  revisit="At terminal velocity the resultant force is zero, so the drag equals the weight, mg.",
@@ -567,7 +567,7 @@ def skydiver_velocity_time(terminal: float = 50.0, mass: float = 70.0) -> Questi
                      Mistake("drag is zero", 0.0,
                              "At terminal velocity the resultant force is zero, not the drag: the drag "
                              "has grown to equal the weight."),
-                 )),
+                 ), see="skydiver"),
             Part("value of k", k, "kg m^-1", "drag constant", units="kg m^-1", shown_sig_figs=2,
                  ecf=Ecf(b_answer / a_answer**2, {}),
                  revisit="At terminal velocity kv² = mg, so k = mg / v².",
@@ -576,7 +576,7 @@ def skydiver_velocity_time(terminal: float = 50.0, mass: float = 70.0) -> Questi
                              "You divided by v. The drag is kv², so k = mg / v²."),
                      Mistake("mass, not weight", mass / terminal**2,
                              "You used the mass. The drag equals the weight, mg, in N."),
-                 )),
+                 ), see="skydiver"),
         ),
         mark_scheme=(
             Mark(f"{reading(terminal, 1.0)} {PER_S} (where the curve levels off)", "B1", "a"),
@@ -609,7 +609,7 @@ def ball_acceleration_from_graph(terminal: float = 20.0, moment: float = 2.0, ma
         graph=graph,
         parts=(
             GraphPart("terminal velocity", terminal, "m s^-1", "velocity", units=M_S, tolerance=0.25,
-                      revisit="The terminal velocity is where the curve levels off: read that value."),
+                      revisit="The terminal velocity is where the curve levels off: read that value.", see="skydiver"),
             GraphPart(f"velocity at {t} s", speed, "m s^-1", "velocity", units=M_S, tolerance=0.25, revisit=f"Go up from {t} s on the time axis to the curve, then across."),
             Part(f"acceleration at {t} s", a, "m s^-2", "acceleration", units=M_S2, shown_sig_figs=2,
                  ecf=Ecf(gravity_symbol * (1 - b_answer**2 / a_answer**2), {"gravity": G_EARTH}),
@@ -622,7 +622,7 @@ def ball_acceleration_from_graph(terminal: float = 20.0, moment: float = 2.0, ma
                      Mistake("drag taken as proportional to v", G_EARTH * (1 - speed / terminal),
                              "You took the drag as proportional to v. It is proportional to v², so "
                              "a = g(1 − v² / vₜ²)."),
-                 )),
+                 ), see="skydiver"),
         ),
         mark_scheme=(
             Mark(f"{reading(terminal, 0.25)} {PER_S}", "B1", "a"),

@@ -80,7 +80,7 @@ def light_ball_hits_heavy_ball(m1: float = 1.0, u1: float = 6.0, m2: float = 2.0
                      Mistake("bounces back at full speed", -u1,
                              f"It can't bounce back at its full speed: the {heavy} kg ball moves off, "
                              "taking momentum and kinetic energy. Solve the two equations together."),
-                 )),
+                 ), see="kinetic-energy"),
             Part(f"velocity of the {heavy} kg ball", v2, "m s^-1", "velocity", units=M_S, shown_sig_figs=2,
                  direction="signed", positive=forward, revisit=revisit,
                  mistakes=(
@@ -89,11 +89,11 @@ def light_ball_hits_heavy_ball(m1: float = 1.0, u1: float = 6.0, m2: float = 2.0
                              "collision. This one is elastic: use the relative speeds too."),
                      Mistake("assumed the first ball stops", velocity_from_momentum(p_before, m2),
                              f"You assumed the {light} kg ball stops. That happens only for equal masses; "
-                             "use momentum and relative speeds together."),
+                             "use momentum and relative speeds together.", see="relative-speed"),
                      Mistake("swapped velocities", u1,
                              "Balls swap velocities only when their masses are equal. Here they "
-                             "are not: solve momentum and relative speeds together."),
-                 )),
+                             "are not: solve momentum and relative speeds together.", see="relative-speed"),
+                 ), see="kinetic-energy"),
         ),
         mark_scheme=(
             Mark(f"Momentum: {w(p_before)} = {_times(m1, v_1)} + {heavy}{v_2}", "C1", "ab"),
@@ -196,7 +196,7 @@ def elastic_or_not_choice(situation: float = 0) -> Question:
                           OPTION_LETTERS[turn],
                           revisit="Momentum is conserved in every collision. To decide elastic or "
                                   "inelastic, compare the total kinetic energy before and after, or "
-                                  "the relative speeds of approach and separation."),),
+                                  "the relative speeds of approach and separation.", see="kinetic-energy"),),
         mark_scheme=(Mark(f"{OPTION_LETTERS[turn]}: kinetic energy {energy}; relative speeds: {speeds}, so "
                           f"{'elastic' if elastic else 'inelastic'}", "B1"),),
     )
@@ -236,7 +236,7 @@ def stick_energy_choice(m1: float = 2.0, u1: float = 4.0, m2: float = 1.0, speed
         "forgot B's direction": (
             before - total_kinetic_energy((m1 + m2,), (same_way,)),
             ("You gave B's velocity the same sign as A's. They move towards each other, so B's momentum "
-            "is negative: the common velocity is (m₁u₁ − m₂u₂) / (m₁ + m₂).")),
+            "is negative: the common velocity is (m₁u₁ − m₂u₂) / (m₁ + m₂)."), "momentum"),
         **forgot_b,
         "kinetic energy taken as conserved": (
             0.0,
@@ -254,7 +254,7 @@ def stick_energy_choice(m1: float = 2.0, u1: float = 4.0, m2: float = 1.0, speed
         parts=(ChoicePart("How much kinetic energy is transferred to other forms in the collision?",
                           options, answer,
                           revisit="Find the common velocity from momentum (with B's velocity negative), "
-                                  "then subtract the total kinetic energy after from the total before."),),
+                                  "then subtract the total kinetic energy after from the total before.", see="kinetic-energy"),),
         mark_scheme=(Mark(f"{answer}: v = ({w(momentum(m1, u1))} − {w(momentum(m2, speed2))}) / "
                           f"{w(m1 + m2)} = {w(v)} {PER_S}; {w(before)} − {w(after)} = {n(key, 2)} J", "B1"),),
     )
@@ -334,7 +334,7 @@ def elastic_both_moving(m1: float = 0.20, u1: float = 3.0, m2: float = 0.30, spe
                      Mistake("subtracted the speeds", relative_speed(u1, speed2),
                              "You subtracted the speeds. They move towards each other, so the gap closes at "
                              "the sum: B's velocity is negative, so u₁ − u₂ adds the speeds."),
-                 )),
+                 ), see="relative-speed"),
             Part("velocity of A after the collision", v1, "m s^-1", "velocity", units=M_S, shown_sig_figs=2,
                  direction="signed", positive=forward,
                  ecf=Ecf((sym_m1 * sym_u1 + sym_m2 * sym_u2 - sym_m2 * sym_a) / (sym_m1 + sym_m2), b_values),
@@ -346,8 +346,8 @@ def elastic_both_moving(m1: float = 0.20, u1: float = 3.0, m2: float = 0.30, spe
                              f"u₂ = −{ub} {_PER_S_PLAIN}."),
                      Mistake("treated as sticking together", stick_together(m1, u1, m2, u2),
                              "That is the common velocity if they stuck together. This collision is "
-                             "elastic: the balls separate as fast as they approached."),
-                 )),
+                             "elastic: the balls separate as fast as they approached.", see="kinetic-energy"),
+                 ), see="relative-speed"),
             Part("velocity of B after the collision", v2, "m s^-1", "velocity", units=M_S, shown_sig_figs=2,
                  direction="signed", positive=forward,
                  ecf=Ecf(sym_b + sym_a, {}),
@@ -362,7 +362,7 @@ def elastic_both_moving(m1: float = 0.20, u1: float = 3.0, m2: float = 0.30, spe
                      Mistake("forgot B's direction", elastic_collision(m1, u1, m2, speed2)[1],
                              "You gave B's velocity before the same sign as A's. B moves towards A, so "
                              f"u₂ = −{ub} {_PER_S_PLAIN}."),
-                 )),
+                 ), see="relative-speed"),
         ),
         mark_scheme=(
             Mark(f"Relative speed of approach = {ua} + {ub} = {n(approach, 2)} {PER_S}", "B1", "a"),
@@ -399,8 +399,8 @@ def sticking_energy_lost(m1: float = 0.80, u1: float = 3.0, m2: float = 1.2) -> 
                  mistakes=(
                      Mistake("divided by B's mass only", velocity_from_momentum(momentum(m1, u1), m2),
                              "After sticking, both trolleys move together: divide the momentum by the "
-                             "total mass."),
-                 )),
+                             "total mass.", see="momentum"),
+                 ), see="conservation"),
             Part("total kinetic energy just after", after, "J", "energy", shown_sig_figs=2,
                  ecf=Ecf(sympy.Rational(1, 2) * (sym_m1 + sym_m2) * sym_a**2, {"m_a": m1, "m_b": m2}),
                  revisit="Eₖ = ½mv², with the mass of both trolleys.",
@@ -408,15 +408,15 @@ def sticking_energy_lost(m1: float = 0.80, u1: float = 3.0, m2: float = 1.2) -> 
                      Mistake("used A's mass only", kinetic_energy(m1, v),
                              "Both trolleys move after the collision: use their total mass."),
                      Mistake("forgot the ½", 2 * after,
-                             "Kinetic energy is ½mv²: you left out the ½."),
-                 )),
+                             "Kinetic energy is ½mv²: you left out the ½.", see="kinetic-energy"),
+                 ), see="kinetic-energy"),
             Part("kinetic energy transferred to other forms", lost, "J", "energy", shown_sig_figs=2,
                  ecf=Ecf(sympy.Rational(1, 2) * sym_m1 * sym_u1**2 - sym_b, {"m_a": m1, "u_a": u1}),
                  revisit="Energy transferred = total kinetic energy before − total kinetic energy after.",
                  mistakes=(
                      Mistake("gave the kinetic energy before", before,
                              "That is the kinetic energy before. Subtract the kinetic energy after."),
-                 )),
+                 ), see="kinetic-energy"),
         ),
         mark_scheme=(
             Mark(f"{ma} × {ua} = {total}v", "C1", "a"),

@@ -65,8 +65,8 @@ def trolley_pushed_from_rest(force: float = 5.0, mass: float = 2.0, duration: fl
                              "That is the acceleration, F/m. Momentum is found from Δp = F Δt."),
                      Mistake("kinetic energy instead of momentum", kinetic_energy(mass, v),
                              "That is the kinetic energy, ½mv², in J. Momentum is mass × velocity "
-                             "(here force × time), in N s.", unit="J"),
-                 )),
+                             "(here force × time), in N s.", unit="J", see="kinetic-energy"),
+                 ), see="second-law"),
             Part("speed", v, "m s^-1", "speed", units=_M_S, shown_sig_figs=2,
                  revisit="Momentum = mass × velocity, so v = p / m.",
                  ecf=Ecf(a_answer / mass_symbol, {"mass": mass}),
@@ -78,7 +78,7 @@ def trolley_pushed_from_rest(force: float = 5.0, mass: float = 2.0, duration: fl
                      Mistake("acceleration given as speed", acceleration(force, mass),
                              f"That is the acceleration, F/m, in m s⁻². The speed after {n(duration, 2)} s "
                              "is p / m (or u + at)."),
-                 )),
+                 ), see="momentum"),
         ),
         mark_scheme=(
             Mark(f"Δp = FΔt = {n(force, 2)} × {n(duration, 2)}", "C1", "a"),
@@ -123,8 +123,8 @@ def ball_bounces_off_wall(mass: float = 0.16, speed_in: float = 15.0, speed_out:
                              "signs: Δp = m(u + v)."),
                      Mistake("initial momentum only", momentum(mass, speed_in),
                              "That is only the momentum before. Δp = final momentum − initial "
-                             "momentum, with signs."),
-                 )),
+                             "momentum, with signs.", see="conservation"),
+                 ), see="second-law"),
             Part("average force exerted on the ball by the wall", force, "N", "force", shown_sig_figs=2,
                  direction="choice", choices=choices, answer_direction="away from the wall",
                  working=(Step("change in momentum", dp, "N s", 2),),
@@ -141,8 +141,8 @@ def ball_bounces_off_wall(mass: float = 0.16, speed_in: float = 15.0, speed_out:
                      Mistake("force on the wall", force,
                              "That is the force of the ball on the wall (its Newton's third law "
                              "pair). The wall pushes the ball away from the wall.",
-                             direction="towards the wall"),
-                 )),
+                             direction="towards the wall", see="third-law"),
+                 ), see="second-law"),
         ),
         mark_scheme=(
             Mark(f"Away from the wall positive: Δp = mv − mu = {m} × {v} − {m} × (−{u})", "C1", "a"),
@@ -174,11 +174,11 @@ def fire_hose(per_second: float = 4.0, speed: float = 15.0) -> Question:
                              "given (ρAv² is for a jet described by its area)."),
                      Mistake("weight of water", weight(per_second),
                              f"That is the weight of {q} kg of water. The force comes from the "
-                             "momentum given to the water each second."),
+                             "momentum given to the water each second.", see="weight"),
                      Mistake("kinetic energy per second", kinetic_energy(per_second, speed),
                              "That is the kinetic energy given to the water each second, a power "
-                             "in W. Force = momentum per second.", unit="W"),
-                 )),
+                             "in W. Force = momentum per second.", unit="W", see="kinetic-energy"),
+                 ), see="second-law"),
         ),
         mark_scheme=(
             Mark(f"F = (Δm / Δt) v = {q} × {v}", "C1"),
@@ -206,7 +206,7 @@ def car_stopping_time(mass: float = 900.0, speed: float = 12.0, force: float = 3
                              "That is F / Δp, upside down: Δt = Δp / F."),
                      Mistake("mass over force", mass / force,
                              f"You left out the speed. The change in momentum is mv = {m} × {v}."),
-                 )),
+                 ), see="second-law"),
         ),
         mark_scheme=(
             Mark(f"Δp = mv = {m} × {v} = {w(dp)} N s", "C1"),
@@ -256,17 +256,17 @@ def kick_force_time(peak: float = 200.0, rise: float = 0.01, hold: float = 0.03,
                      Mistake("largest force × time ÷ 2", peak * contact / 2,
                              "You treated the area as a triangle. The top is flat for a while: use the "
                              "trapezium, ½ × (sum of the parallel sides) × height."),
-                 )),
+                 ), see="momentum-time-graph"),
             Part("speed of the ball as it leaves the boot", speed, "m s^-1", "speed", units=_M_S,
                  shown_sig_figs=2, ecf=Ecf(b_answer / mass_symbol, {"mass": mass}),
                  revisit="The ball starts at rest, so its momentum afterwards is the impulse: v = Δp / m.",
                  mistakes=(
                      Mistake("impulse × mass", area * mass,
-                             "You multiplied the impulse by the mass. Δp = mv, so v = Δp / m."),
+                             "You multiplied the impulse by the mass. Δp = mv, so v = Δp / m.", see="momentum-time-graph"),
                      Mistake("force ÷ mass", acceleration(peak, mass),
                              "That is the largest acceleration, F / m, in m s⁻². The speed comes from "
-                             "the change in momentum: v = Δp / m."),
-                 )),
+                             "the change in momentum: v = Δp / m.", see="second-law"),
+                 ), see="conservation"),
         ),
         mark_scheme=(
             Mark(f"{f} N (the top of the graph)", "B1", "a"),
@@ -296,10 +296,10 @@ def cyclist_momentum_time(start: float = 240.0, end: float = 640.0, begins: floa
         parts=(
             GraphPart("momentum before she speeds up", start, "N s", "momentum", units=_N_S,
                       tolerance=10.0,
-                      revisit="Read the flat part of the line at the start against the momentum axis."),
+                      revisit="Read the flat part of the line at the start against the momentum axis.", see="momentum"),
             GraphPart("momentum after she speeds up", end, "N s", "momentum", units=_N_S,
                       tolerance=10.0,
-                      revisit="Read the flat part of the line at the end against the momentum axis."),
+                      revisit="Read the flat part of the line at the end against the momentum axis.", see="momentum"),
             Part(f"resultant force on her between {t0} s and {t1} s", force, "N", "force",
                  shown_sig_figs=2,
                  ecf=Ecf((b_answer - a_answer) / interval_symbol, {"interval": lasts}),
@@ -307,11 +307,11 @@ def cyclist_momentum_time(start: float = 240.0, end: float = 640.0, begins: floa
                  mistakes=(
                      Mistake("final momentum ÷ time", average_force(end, lasts),
                              "You divided the final momentum by the time. The force is the change in "
-                             "momentum ÷ time: subtract the momentum before."),
+                             "momentum ÷ time: subtract the momentum before.", see="conservation"),
                      Mistake("time from zero", average_force(end - start, begins + lasts),
                              f"You measured the time from 0. The momentum changes only from {t0} s to "
-                             f"{t1} s: use that time."),
-                 )),
+                             f"{t1} s: use that time.", see="momentum"),
+                 ), see="momentum-time-graph"),
         ),
         mark_scheme=(
             Mark(f"{reading(start, 10.0)} N s", "B1", "a"),
@@ -342,11 +342,11 @@ def ball_bounce_momentum_time(before: float = 2.4, after: float = 1.6, arrives: 
         parts=(
             GraphPart("momentum of the ball before it hits the wall", before, "N s", "momentum",
                       units=_N_S, tolerance=0.05,
-                      revisit="Read the line before the bounce against the momentum axis."),
+                      revisit="Read the line before the bounce against the momentum axis.", see="momentum"),
             GraphPart("momentum of the ball after it bounces", -after, "N s", "momentum", units=_N_S,
                       tolerance=0.05, direction="signed", positive=towards,
                       revisit="After the bounce the ball moves away from the wall: its momentum is "
-                              "negative. Read the line below the time axis."),
+                              "negative. Read the line below the time axis.", see="momentum"),
             Part("average force on the ball from the wall", abs(force), "N", "force", shown_sig_figs=2,
                  direction="choice", choices=(towards, away), answer_direction=away,
                  ecf=Ecf((b_answer - a_answer) / interval_symbol, {"interval": contact}),
@@ -358,8 +358,8 @@ def ball_bounce_momentum_time(before: float = 2.4, after: float = 1.6, arrives: 
                              "You subtracted the sizes. The momentum changes sign: Δp = (−"
                              f"{reading(after, 0.05)}) − {reading(before, 0.05)}, so the sizes add."),
                      Mistake("only the momentum before", average_force(before, contact),
-                             "You used only the momentum before. Δp = final − initial momentum."),
-                 )),
+                             "You used only the momentum before. Δp = final − initial momentum.", see="conservation"),
+                 ), see="second-law"),
         ),
         mark_scheme=(
             Mark(f"{reading(before, 0.05)} N s", "B1", "a"),
@@ -389,10 +389,10 @@ def bounce_force_choice(mass_g: float = 60.0, speed_in: float = 12.0, speed_out:
              "u + v: Δp = m(u + v).")),
         "final momentum only": (
             average_force(momentum(mass, speed_out), contact),
-            "You used only the momentum after the bounce. Δp = final − initial momentum, with signs."),
+            "You used only the momentum after the bounce. Δp = final − initial momentum, with signs.", "conservation"),
         "grams not converted": (
             average_force(change_in_momentum(mass_g, -speed_in, speed_out), contact),
-            f"You used the mass in g. Convert to kg: {n(mass, 2)} kg."),
+            f"You used the mass in g. Convert to kg: {n(mass, 2)} kg.", "first-law"),
     }, sig_figs=2, unit="N")
     return Question(
         key="bounce-force-choice",
@@ -403,7 +403,7 @@ def bounce_force_choice(mass_g: float = 60.0, speed_in: float = 12.0, speed_out:
                 Given("speed out", speed_out, "m s^-1", 2), Given("contact time", contact_ms, "ms", 2)),
         parts=(ChoicePart("What is the magnitude of the average force exerted on the ball by the wall?",
                           options, answer,
-                          revisit="F = Δp / Δt, with Δp = m(u + v) for a ball that reverses, in kg and s."),),
+                          revisit="F = Δp / Δt, with Δp = m(u + v) for a ball that reverses, in kg and s.", see="second-law"),),
         mark_scheme=(Mark(f"{answer}: F = {n(mass, 2)} × ({n(speed_in, 2)} + {n(speed_out, 2)}) / "
                           f"{n(contact, 2)} = {n(key, 2)} N", "B1"),),
     )

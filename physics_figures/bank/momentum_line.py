@@ -56,17 +56,17 @@ def rifle_recoil(rifle: float = 4.0, bullet: float = 0.010, bullet_speed: float 
                  mistakes=(
                      Mistake("mass ratio upside down", rifle * bullet_speed / bullet,
                              "The masses are the wrong way up. The rifle's momentum equals the "
-                             f"bullet's: {r} v = {b} × {s}, so v = {b} × {s} / {r}."),
+                             f"bullet's: {r} v = {b} × {s}, so v = {b} × {s} / {r}.", see="momentum"),
                      Mistake("bullet's momentum given as speed", bullet_momentum,
                              f"{b} × {s} = {w(bullet_momentum)} is the bullet's momentum (in N s). Divide "
-                             "it by the rifle's mass to get the rifle's speed."),
+                             "it by the rifle's mass to get the rifle's speed.", see="momentum"),
                      Mistake("mass in grams", bullet * 1000 * bullet_speed / rifle,
                              f"You used the bullet's mass in g. Convert to kg: {b} kg.", kind="slip"),
                      Mistake("kinetic energy conserved", bullet_speed * math.sqrt(bullet / rifle),
                              "You set the kinetic energies equal. In an explosion kinetic energy "
                              "increases (from the chemical energy of the charge); only momentum is "
-                             "conserved."),
-                 )),
+                             "conserved.", see="kinetic-energy"),
+                 ), see="conservation"),
         ),
         mark_scheme=(
             Mark(f"Total momentum is zero before, so 0 = {b} × {s} + {r}v", "C1"),
@@ -109,10 +109,10 @@ def trolleys_stick(m1: float = 2.0, u1: float = 3.0, m2: float = 1.0, speed2: fl
                  mistakes=(
                      Mistake("sign of the second trolley left out", no_sign,
                              f"The {second} kg trolley moves the other way, so its momentum is negative: "
-                             f"{first} × {n(u1, 2)} + {second} × (−{n(speed2, 2)})."),
+                             f"{first} × {n(u1, 2)} + {second} × (−{n(speed2, 2)}).", see="momentum"),
                      Mistake("second trolley ignored", momentum(m1, u1) / (m1 + m2),
-                             f"You left out the {second} kg trolley's momentum. It is moving, the other way."),
-                 )),
+                             f"You left out the {second} kg trolley's momentum. It is moving, the other way.", see="momentum"),
+                 ), see="conservation"),
             Part("kinetic energy transferred to other forms", lost, "J", "energy", shown_sig_figs=3,
                  working=(Step("common velocity", v, "m s^-1", 2),),
                  answer_from=lambda common: before - kinetic_energy(m1 + m2, common),
@@ -128,8 +128,8 @@ def trolleys_stick(m1: float = 2.0, u1: float = 3.0, m2: float = 1.0, speed2: fl
                              "That is the kinetic energy after. Subtract it from the kinetic energy "
                              "before."),
                      Mistake("wrong velocity carried on", before - kinetic_energy(m1 + m2, no_sign),
-                             f"Your velocity after is wrong: the {second} kg trolley's momentum is negative."),
-                 )),
+                             f"Your velocity after is wrong: the {second} kg trolley's momentum is negative.", see="momentum"),
+                 ), see="kinetic-energy"),
         ),
         mark_scheme=(
             Mark(f"{first} × {n(u1, 2)} + {second} × ({n(u2, 2)}) = {total}v", "C1", "a"),
@@ -177,11 +177,11 @@ def trolley_collision_momentum_time(before: float = 1.2, after: float = 0.4, mas
                  mistakes=(
                      Mistake("gave B the momentum A has after", velocity_from_momentum(after, mass_b),
                              "You gave B the momentum A has afterwards. B gains the momentum A loses: "
-                             "before − after."),
+                             "before − after.", see="momentum"),
                      Mistake("assumed A stops", velocity_from_momentum(before, mass_b),
                              "You gave B all of A's momentum, as if A stopped. The graph shows A still "
-                             "moving: B gains only what A loses."),
-                 )),
+                             "moving: B gains only what A loses.", see="momentum"),
+                 ), see="conservation"),
         ),
         mark_scheme=(
             Mark(f"{reading(before, 0.025)} N s", "B1", "a"),
@@ -206,14 +206,14 @@ def stick_choice(m1: float = 3.0, u1: float = 4.0, m2: float = 2.0, speed2: floa
         "sign of the oncoming body left out": (
             stick_together(m1, u1, m2, speed2),
             ("The second body moves the other way, so its momentum is negative. Momentum is a vector: "
-             "give each velocity a sign.")),
+             "give each velocity a sign."), "momentum"),
         "divided by one mass": (
             (momentum(m1, u1) - momentum(m2, speed2)) / m1,
             ("The bodies move off together, so divide the total momentum by the total mass, "
-             "m₁ + m₂.")),
+             "m₁ + m₂."), "conservation"),
         "second body ignored": (
             stick_together(m1, u1, m2, 0.0),
-            "You left out the second body's momentum. It is moving, the other way."),
+            "You left out the second body's momentum. It is moving, the other way.", "momentum"),
     }, sig_figs=2, unit=PER_S)
     return Question(
         key="stick-choice",
@@ -262,8 +262,8 @@ def trolleys_spring_apart(mass_a: float = 1.5, mass_b: float = 0.50, speed_b: fl
                      Mistake("masses the wrong way up", speed_b * mass_a / mass_b,
                              f"The masses are the wrong way up: {a_} v = {b_} × {u}, so v = {b_} × {u} / {a_}."),
                      Mistake("B's momentum given as a speed", momentum(mass_b, speed_b),
-                             f"{b_} × {u} is B's momentum in N s. Divide it by A's mass for A's speed."),
-                 )),
+                             f"{b_} × {u} is B's momentum in N s. Divide it by A's mass for A's speed.", see="momentum"),
+                 ), see="conservation"),
             Part("kinetic energy the spring gave", energy, "J", "energy", shown_sig_figs=2,
                  ecf=Ecf(mass_a_symbol * a_answer**2 / 2 + mass_b_symbol_spring * speed_b_symbol**2 / 2,
                          {"mass_a": mass_a, "mass_b": mass_b, "speed_b": speed_b}),
@@ -277,7 +277,7 @@ def trolleys_spring_apart(mass_a: float = 1.5, mass_b: float = 0.50, speed_b: fl
                      Mistake("kinetic energy from the total momentum", 0.0,
                              "The total momentum is zero, but kinetic energy is never negative: each "
                              "trolley has ½mv², and the energies add."),
-                 )),
+                 ), see="kinetic-energy"),
         ),
         mark_scheme=(
             Mark(f"Total momentum zero: {a_} v<sub>A</sub> + {b_} × {u} = 0", "C1", "a"),

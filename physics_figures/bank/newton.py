@@ -63,7 +63,7 @@ def car_slowing(mass: float = 800.0, driving: float = 1500.0, resistive: float =
                              f"resultant = {d} − {r} N."),
                      Mistake("driving force only", acceleration(driving, mass),
                              "You used only the driving force. F = ma needs the resultant force."),
-                 )),
+                 ), see="second-law"),
         ),
         mark_scheme=(
             Mark(f"Resultant force = {d} − {r} = {w(resultant)} N", "C1"),
@@ -92,9 +92,9 @@ def lift_accelerating_down(mass: float = 58.0, a_down: float = 1.5) -> Question:
                              "down, the floor pushes less: R = m(g − a)."),
                      Mistake("weight only", weight(mass),
                              "That is the weight, the contact force at steady speed. The lift "
-                             "accelerates, so R − mg = ma."),
+                             "accelerates, so R − mg = ma.", see="lift"),
                      Mistake("resultant force given", mass * a_down,
-                             "That is the resultant force, ma. The contact force is R = m(g − a)."),
+                             "That is the resultant force, ma. The contact force is R = m(g − a).", see="lift"),
                  )),
         ),
         mark_scheme=(
@@ -140,7 +140,7 @@ def car_towing_trailer(car_mass: float = 1000.0, trailer_mass: float = 500.0, dr
                      Mistake("car's mass only", acceleration(driving - sum(resistive), car_mass),
                              "You used only the car's mass. The driving force accelerates the car "
                              f"and the trailer: use the total mass, {w(total)} kg."),
-                 )),
+                 ), see="second-law"),
             Part("tension in the tow bar", tension, "N", "force", shown_sig_figs=2,
                  working=(Step("acceleration", a, "m s^-2", 2),),
                  answer_from=lambda acc: trailer_resistance + trailer_mass * acc,
@@ -155,7 +155,7 @@ def car_towing_trailer(car_mass: float = 1000.0, trailer_mass: float = 500.0, dr
                      Mistake("resistance subtracted", trailer_mass * a - trailer_resistance,
                              "The resistance acts backwards on the trailer, so the tension is "
                              f"bigger than ma: T = {trailer}a + {r_trailer}."),
-                 )),
+                 ), see="second-law"),
         ),
         mark_scheme=(
             Mark(f"Whole: resultant = {d} − {r_car} − {r_trailer} = {w(towed.resultant_force)} N", "C1", "a"),
@@ -234,7 +234,7 @@ def third_law_pair_choice(situation: float = 0) -> Question:
         parts=(ChoicePart("Which pair of forces is a Newton's third law pair?", options, answer,
                           revisit="The two forces of a third-law pair: X on Y and Y "
                                   "on X, the same type of force, equal and opposite, on "
-                                  "different bodies."),),
+                                  "different bodies.", see="third-law"),),
         mark_scheme=(Mark(f"{answer}: {key} (the same type of force, each body on the other)", "B1"),),
     )
 
@@ -253,11 +253,11 @@ def friction_acceleration_choice(crate_weight: float = 490.0, pull: float = 180.
         "friction left out": (
             acceleration(pull, mass),
             ("You used the pull as the resultant force. Friction acts backwards: the resultant "
-             f"force is {p} − {f} N.")),
+             f"force is {p} − {f} N."), "friction"),
         "forces added": (
             acceleration(pull + friction, mass),
             ("You added the friction to the pull. Friction opposes the motion, so subtract it: "
-             f"{p} − {f} N.")),
+             f"{p} − {f} N."), "friction"),
         "weight used as the mass": (
             acceleration(pull - friction, crate_weight),
             f"You divided by the weight, {wt} N. F = ma needs the mass: m = W / g = {wt} / {n(G_EARTH, 3)} kg."),
@@ -271,7 +271,7 @@ def friction_acceleration_choice(crate_weight: float = 490.0, pull: float = 180.
                 Given("friction", friction, "N", 2)),
         parts=(ChoicePart("What is the acceleration of the crate?", options, answer,
                           revisit="Resultant force = forces forwards − forces backwards; mass = "
-                                  "weight / g; a = resultant force / mass."),),
+                                  "weight / g; a = resultant force / mass.", see="weight"),),
         mark_scheme=(Mark(f"{answer}: m = {wt} / {n(G_EARTH, 3)} = {w(mass)} kg; a = ({p} − {f}) / {w(mass)} "
                           f"= {n(key, 2)} {PER_S2}", "B1"),),
     )
@@ -301,15 +301,15 @@ def lift_cable_choice(mass: float = 1200.0, a_size: float = 1.5, motion: float =
             thrust_for_acceleration(lift_weight, -sign * a_size),
             (f"The lift is {how}, so its acceleration is {which_way}: "
              f"T = m(g {'+' if up else '−'} a). Speeding up, a is along the motion; slowing down, "
-            "against it.")),
+            "against it."), "lift"),
         "weight only": (
             lift_weight,
             ("That is the weight, the tension at constant velocity. The lift accelerates, so "
-             "T − mg = ma.")),
+             "T − mg = ma."), "lift"),
         "resultant force given": (
             abs(thrust_for_acceleration(lift_weight, sign * a_size) - lift_weight),
             ("That is the resultant force, ma. The tension also supports the weight: T = mg + ma, "
-             "with a positive upwards.")),
+             "with a positive upwards."), "weight"),
     }, sig_figs=3, unit="N")
     return Question(
         key="lift-cable-choice",
@@ -402,15 +402,15 @@ def block_and_hanging_mass(block_mass: float = 1.2, hanging_mass: float = 0.60,
                              f"You left out the friction. Resultant force = {m2} × {n(G_EARTH, 3)} − {f} N."),
                      Mistake("block's mass only", acceleration(hanging_weight - friction, block_mass),
                              "You divided by the block's mass only. The resultant force accelerates "
-                             f"both masses: use the total mass, {w(total)} kg."),
+                             f"both masses: use the total mass, {w(total)} kg.", see="second-law"),
                      Mistake("hanging mass only", acceleration(hanging_weight - friction, hanging_mass),
                              "You divided by the hanging mass only. The resultant force accelerates "
-                             f"both masses: use the total mass, {w(total)} kg."),
+                             f"both masses: use the total mass, {w(total)} kg.", see="second-law"),
                      Mistake("acceleration of free fall", G_EARTH,
                              "The hanging mass falls at g only when nothing else pulls on it. Here "
                              "the string pulls it back: work out the resultant force on the whole "
-                             "system and divide by the total mass."),
-                 )),
+                             "system and divide by the total mass.", see="second-law"),
+                 ), see="friction"),
             Part("tension in the string", tension, "N", "force", shown_sig_figs=2,
                  working=(Step("acceleration", a, "m s^-2", 2),),
                  answer_from=lambda acc: friction + block_mass * acc,
@@ -425,11 +425,11 @@ def block_and_hanging_mass(block_mass: float = 1.2, hanging_mass: float = 0.60,
                  mistakes=(
                      Mistake("tension equals the hanging weight", hanging_weight,
                              "That is the hanging mass's weight. The hanging mass accelerates "
-                             f"downwards, so the tension is less than its weight: {m2} × {n(G_EARTH, 3)} − T = {m2}a."),
+                             f"downwards, so the tension is less than its weight: {m2} × {n(G_EARTH, 3)} − T = {m2}a.", see="weight"),
                      Mistake("friction left out", block_mass * a,
                              "That is the block's resultant force, ma. The tension must also "
                              f"overcome the friction: T − {f} = {m1}a."),
-                 )),
+                 ), see="friction"),
         ),
         mark_scheme=(
             Mark(f"Whole system: resultant force = {m2} × {n(G_EARTH, 3)} − {f} = {w(hanging_weight - friction)} N", "C1", "a"),
@@ -463,7 +463,7 @@ def rocket_lift_off(mass: float = 0.60, thrust: float = 9.0) -> Question:
                  mistakes=(
                      Mistake("divided by g", mass_from_weight(mass),
                              f"You divided by g. Weight = mass × g = {m} × {n(G_EARTH, 3)}."),
-                 )),
+                 ), see="weight"),
             Part("acceleration at lift-off", a, "m s^-2", "acceleration", units=M_S2, shown_sig_figs=2,
                  direction="choice", choices=("upwards", "downwards"), answer_direction="upwards",
                  working=(Step("weight", rocket_weight, "N"),),
@@ -481,7 +481,7 @@ def rocket_lift_off(mass: float = 0.60, thrust: float = 9.0) -> Question:
                      Mistake("weight added", acceleration(thrust + rocket_weight, mass),
                              "You added the weight to the thrust. They act in opposite directions: "
                              "resultant = thrust − weight."),
-                 )),
+                 ), see="weight"),
         ),
         mark_scheme=(
             Mark(f"W = mg = {m} × {n(G_EARTH, 3)} = {wt} N", "B1", "a"),
@@ -526,7 +526,7 @@ def first_law_choice(situation: float = 0) -> Question:
         Option(f"The forces on the {body} cannot be balanced, because the {body} is moving.",
                "balanced forces only at rest",
                "Balanced forces give a zero acceleration: the body is at rest or moves at a "
-               "constant velocity. You cannot tell which from the forces alone."),
+               "constant velocity. You cannot tell which from the forces alone.", see="first-law"),
     ]
     shift = (index + 1) % len(OPTION_LETTERS)
     options = tuple(rows[-shift:] + rows[:-shift]) if shift else tuple(rows)
@@ -538,7 +538,7 @@ def first_law_choice(situation: float = 0) -> Question:
         parts=(ChoicePart(f"Which statement about the forces on the {body} is correct?", options, answer,
                           revisit="Newton's first law: a constant velocity (or rest) means the "
                                   "resultant force is zero, and a zero resultant force means a "
-                                  "constant velocity (or rest)."),),
+                                  "constant velocity (or rest).", see="second-law"),),
         mark_scheme=(Mark(f"{answer}: constant velocity, so zero acceleration and zero resultant force "
                           "(Newton's first law)", "B1"),),
     )

@@ -67,11 +67,11 @@ def pucks_glancing(mass: float = 0.40, speed_before: float = 2.5, speed_after: f
                  mistakes=(
                      Mistake("sizes subtracted", p_before - p_after,
                              "You subtracted the sizes. Momentum is a vector: resolve along and "
-                             "across the line and conserve each."),
+                             "across the line and conserve each.", see="conservation"),
                      Mistake("across component only", b.across,
                              "That is only the component across the line. Combine it with the "
                              "component along the line: p = √(along² + across²)."),
-                 )),
+                 ), see="two-d"),
             Part("angle between B's motion and A's original line", b.angle_deg, "°", "angle",
                  units="° (degrees)", shown_sig_figs=3, working=components,
                  answer_from=lambda along_, across_: math.degrees(math.atan2(across_, along_)),
@@ -83,7 +83,7 @@ def pucks_glancing(mass: float = 0.40, speed_before: float = 2.5, speed_after: f
                      Mistake("angle from the perpendicular", 90.0 - b.angle_deg,
                              "You measured the angle from the line at right angles. Give it from "
                              "A's original line: tan θ = across / along."),
-                 )),
+                 ), see="two-d"),
         ),
         mark_scheme=(
             Mark(f"Along: {w(p_before)} = {w(p_after)} cos {theta}° + {along}, so {along} = "
@@ -123,7 +123,7 @@ def glancing_speed_choice(m1: float = 0.20, speed_before: float = 3.0, m2: float
         "across component forgotten": (
             velocity_from_momentum(hit.missing.along, m2),
             ("That uses only B's component along A's first direction. B also has a component across the "
-            "line (equal and opposite to A's): combine them with Pythagoras.")),
+            "line (equal and opposite to A's): combine them with Pythagoras."), "third-law"),
     }, sig_figs=2, unit=PER_S)
     ma, mb, u, v, theta = n(m1, 2), n(m2, 2), n(speed_before, 2), n(speed_after, 2), n(angle, 2)
     return Question(
@@ -136,7 +136,7 @@ def glancing_speed_choice(m1: float = 0.20, speed_before: float = 3.0, m2: float
                 Given("angle", angle, "°", 2)),
         parts=(ChoicePart("What is the speed of B after the collision?", options, answer,
                           revisit="Conserve momentum along and across A's first direction separately, "
-                                  "combine B's components with Pythagoras, then divide by B's mass."),),
+                                  "combine B's components with Pythagoras, then divide by B's mass.", see="two-d"),),
         mark_scheme=(Mark(f"{answer}: along {w(p_before)} − {w(p_after)} cos {theta}° = {n(hit.missing.along, 3)} "
                           f"N s; across {w(p_after)} sin {theta}° = {n(hit.missing.across, 3)} N s; "
                           f"p<sub>B</sub> = {n(hit.missing.magnitude, 3)} N s, v = {n(key, 2)} {PER_S}", "B1"),),
@@ -178,15 +178,15 @@ def explosion_three_pieces(m1: float = 0.20, v1: float = 30.0, m2: float = 0.30,
                      Mistake("momenta subtracted", abs(p1 - p2),
                              "You subtracted the sizes. The momenta are at right angles: their resultant "
                              "is √(p₁² + p₂²)."),
-                 )),
+                 ), see="third-law"),
             Part("speed of the third piece", speed, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
                  ecf=Ecf(sym_a / sym_m3, {"m_c": m3}),
                  revisit="Speed = momentum ÷ mass, with the third piece's own mass.",
                  mistakes=(
                      Mistake("Pythagoras on the speeds", speeds_size,
                              "You combined the speeds. Momentum is conserved, not velocity: combine the "
-                             "momenta, then divide by the third piece's mass."),
-                 )),
+                             "momenta, then divide by the third piece's mass.", see="conservation"),
+                 ), see="momentum"),
             Part("angle of the third piece's direction", angle, "°", "angle", units="° (degrees)",
                  shown_sig_figs=3, direction="choice", choices=_COMPASS, answer_direction="south of west",
                  direction_hint="The third piece's momentum cancels the other two: it points opposite to "
@@ -203,7 +203,7 @@ def explosion_three_pieces(m1: float = 0.20, v1: float = 30.0, m2: float = 0.30,
                      Mistake("same direction as the other two", angle,
                              "That is the direction of the other two pieces' resultant. The total is "
                              "zero, so the third piece moves the opposite way.", direction="north of east"),
-                 )),
+                 ), see="two-d"),
         ),
         mark_scheme=(
             Mark(f"Momentum before is zero, so p = √({w(p1)}<sup>2</sup> + {w(p2)}<sup>2</sup>)", "C1", "a"),
@@ -247,7 +247,7 @@ def skaters_stick_right_angles(m1: float = 70.0, u1: float = 4.0, m2: float = 50
                      Mistake("Pythagoras on the speeds", from_components(u1, u2)[0],
                              "You combined the speeds. Combine the momenta (which include the masses), "
                              "then divide by the total mass."),
-                 )),
+                 ), see="two-d"),
             Part("angle north of east", angle, "°", "angle", units="° (degrees)", shown_sig_figs=3,
                  revisit="The pair moves along the resultant momentum: tan θ = (northward momentum) / "
                          "(eastward momentum).",
@@ -257,8 +257,8 @@ def skaters_stick_right_angles(m1: float = 70.0, u1: float = 4.0, m2: float = 50
                              "momentum) gives the angle north of east."),
                      Mistake("used the speeds", from_components(u1, u2)[1],
                              "You used the speeds. The direction is that of the resultant momentum, so "
-                             "include the masses."),
-                 )),
+                             "include the masses.", see="momentum"),
+                 ), see="two-d"),
             Part("kinetic energy transferred to other forms", before - after, "J", "energy", shown_sig_figs=2,
                  ecf=Ecf(sympy.Rational(1, 2) * (sym_m1 * sym_u1**2 + sym_m2 * sym_u2**2)
                          - sympy.Rational(1, 2) * (sym_m1 + sym_m2) * sym_a**2,
@@ -270,7 +270,7 @@ def skaters_stick_right_angles(m1: float = 70.0, u1: float = 4.0, m2: float = 50
                              "Both skaters move before the collision: add both kinetic energies."),
                      Mistake("gave the kinetic energy before", before,
                              "That is the kinetic energy before. Subtract the kinetic energy after."),
-                 )),
+                 ), see="kinetic-energy"),
         ),
         mark_scheme=(
             Mark(f"p = √({w(p1)}<sup>2</sup> + {w(p2)}<sup>2</sup>) = {n(size, 3)} N s", "C1", "a"),
@@ -317,7 +317,7 @@ def oblique_wall_bounce(mass: float = 0.060, speed: float = 20.0, angle: float =
                      Mistake("used cos", along,
                              f"That is the component along the wall. The angle {theta}° is measured from "
                              "the wall, so the component at right angles to it is p sin θ."),
-                 )),
+                 ), see="two-d"),
             Part("change in momentum of the ball", dp, "N s", "change in momentum", units=N_S,
                  shown_sig_figs=2, direction="choice", choices=_WALL, answer_direction=_WALL[0],
                  ecf=Ecf(2 * sym_a, {}),
@@ -332,7 +332,7 @@ def oblique_wall_bounce(mass: float = 0.060, speed: float = 20.0, angle: float =
                      Mistake("used cos", oblique_bounce_momentum_change(p, 90.0 - angle),  # 2p cos θ
                              "You doubled the component along the wall, which does not change. Double the "
                              "component at right angles to it, p sin θ."),
-                 )),
+                 ), see="two-d"),
             Part("average force of the wall on the ball", force, "N", "force", shown_sig_figs=2,
                  direction="choice", choices=_WALL, answer_direction=_WALL[0],
                  ecf=Ecf(sym_b / sym_t, {"contact": contact}),
@@ -343,11 +343,11 @@ def oblique_wall_bounce(mass: float = 0.060, speed: float = 20.0, angle: float =
                              f"You divided by {t_ms} instead of {t}: convert ms to s.", kind="slip"),
                      Mistake("forgot the reversal", average_force(across, contact),
                              "The change in momentum is 2p sin θ, not p sin θ: the component at right "
-                             "angles to the wall reverses."),
+                             "angles to the wall reverses.", see="two-d"),
                      Mistake("force on the wall", force,
                              "That is the force of the ball on the wall (its third-law pair). The wall "
-                             "pushes the ball away from it.", direction=_WALL[1]),
-                 )),
+                             "pushes the ball away from it.", direction=_WALL[1], see="third-law"),
+                 ), see="second-law"),
         ),
         mark_scheme=(
             Mark(f"p = {m} × {u} = {w(p)} N s; at right angles to the wall: {w(p)} sin {theta}°", "C1", "a"),

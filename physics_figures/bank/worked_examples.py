@@ -96,7 +96,7 @@ def car_and_trailer() -> Question:
                      Mistake("resistive forces left out", acceleration(driving, total),
                              f"You left out the resistive forces. The resultant force is "
                              f"{n(driving, 2)} − {n(car_drag, 1)} − {n(trailer_drag, 1)} N; revisit "
-                             "Newton's second law with the resultant force."),
+                             "Newton's second law with the resultant force.", see="second-law"),
                      Mistake("trailer's resistance left out", acceleration(driving - car_drag, total),
                              f"You left out the {n(trailer_drag, 1)} N resistive force on the trailer. "
                              "For the car and trailer as one object every external force counts."),
@@ -105,8 +105,8 @@ def car_and_trailer() -> Question:
                              "car and trailer as one object every external force counts."),
                      Mistake("car's mass only", acceleration(towed.resultant_force, car),
                              f"You divided by the car's mass only. The resultant force accelerates the "
-                             f"car and the trailer: use the total mass, {n(total, 2)} kg."),
-                 )),
+                             f"car and the trailer: use the total mass, {n(total, 2)} kg.", see="second-law"),
+                 ), see="second-law"),
             Part("tension in the tow bar", tension, "N", "force", shown_sig_figs=2,
                  ecf=Ecf(drag_t + mass_t * a_, {"trailer_resistance": trailer_drag, "trailer_mass": trailer}),
                  revisit=f"Newton's second law for the trailer alone: T − {n(trailer_drag, 1)} = "
@@ -123,7 +123,7 @@ def car_and_trailer() -> Question:
                              "That is the resultant force on the car (its mass × a), not one of the "
                              "forces on it. Mixing up the resultant with one force: write F = ma for "
                              "the trailer alone."),
-                 )),
+                 ), see="second-law"),
             Part("force the trailer exerts on the car", tension, "N", "force", shown_sig_figs=2,
                  asks="state", direction="choice", choices=("forwards", "backwards"),
                  answer_direction="backwards",
@@ -139,8 +139,8 @@ def car_and_trailer() -> Question:
                              "the tension."),
                      Mistake("the trailer's resultant force", trailer * a,
                              "That is the resultant force on the trailer, ma. The force between them "
-                             "is the tension, which also overcomes the trailer's resistance."),
-                 )),
+                             "is the tension, which also overcomes the trailer's resistance.", see="second-law"),
+                 ), see="third-law"),
         ),
         mark_scheme=(
             Mark(f"Whole: resultant force = {n(driving, 2)} − {n(car_drag, 1)} − {n(trailer_drag, 1)} = "
@@ -183,15 +183,15 @@ def ball_off_a_wall() -> Question:
                              "common mistakes."),
                      Mistake("final momentum only", momentum(mass, v),
                              "That is the momentum after the bounce. The change is final minus "
-                             "initial momentum, with the initial one negative."),
+                             "initial momentum, with the initial one negative.", see="conservation"),
                      Mistake("initial momentum only", momentum(mass, -u),
                              "That is the momentum before the bounce. The change is final minus "
-                             "initial momentum, with the initial one negative."),
+                             "initial momentum, with the initial one negative.", see="conservation"),
                      Mistake("kinetic energy instead of momentum",
                              kinetic_energy(mass, u) - kinetic_energy(mass, v),
                              "That is the kinetic energy lost, in J. Momentum is mass × velocity, "
-                             "a vector, in N s.", unit="J"),
-                 )),
+                             "a vector, in N s.", unit="J", see="kinetic-energy"),
+                 ), see="second-law"),
             Part("average force exerted on the ball by the wall", force, "N", "force", shown_sig_figs=3,
                  ecf=Ecf(a_ / duration, {"contact_time": contact}),
                  revisit=f"Force = rate of change of momentum: F = Δp / Δt, with Δt = {in_ms} ms = "
@@ -206,7 +206,7 @@ def ball_off_a_wall() -> Question:
                      Mistake("final momentum over time", momentum(mass, v) / contact,
                              "You used the ball's final momentum. The force is the change in "
                              "momentum ÷ time (using the wrong momentum for a force)."),
-                 )),
+                 ), see="second-law"),
             Part("average force exerted on the wall by the ball", force, "N", "force", shown_sig_figs=3,
                  asks="state", direction="choice", choices=("towards the wall", "away from the wall"),
                  answer_direction="towards the wall",
@@ -219,7 +219,7 @@ def ball_off_a_wall() -> Question:
                      Mistake("time left in ms", dp / (contact * 1000),
                              f"That is Δp ÷ {in_ms}. The time must be in seconds, {n(contact, 2)} s; then the force "
                              "on the wall equals the force on the ball, by Newton's third law.", kind="slip"),
-                 )),
+                 ), see="third-law"),
         ),
         mark_scheme=(
             Mark(f"Δp = mv − mu = {n(mass, 2)} × {n(v, 2)} − {n(mass, 2)} × ({n(u, 2)})", "C1", "a"),
@@ -259,7 +259,7 @@ def two_trolleys() -> Question:
                      Mistake("A's mass used", (before - a_after) / m_a,
                              f"You divided by A's mass. B's momentum after is {n(m_b, 2)}v: divide "
                              f"by B's mass, {n(m_b, 2)} kg."),
-                 )),
+                 ), see="conservation"),
             Part("average force on B", force, "N", "force", shown_sig_figs=2,
                  ecf=Ecf(mass_b * a_ / duration, {"mass_b": m_b, "contact_time": contact}),
                  revisit="The force on B is B's own change in momentum ÷ the contact time: "
@@ -271,11 +271,11 @@ def two_trolleys() -> Question:
                              "for a force)."),
                      Mistake("A's momentum before", before / contact,
                              "That is A's momentum before ÷ time. The force on B is B's own change "
-                             "in momentum ÷ time."),
+                             "in momentum ÷ time.", see="conservation"),
                      Mistake("mass left out", v_b / contact,
                              "You divided B's speed by the time: that is its acceleration, in m s⁻². "
                              "Force = change in momentum ÷ time, and momentum = mass × velocity."),
-                 )),
+                 ), see="second-law"),
         ),
         mark_scheme=(
             Mark(f"{n(m_a, 2)} × {n(u_a, 2)} + 0 = {n(m_a, 2)} × {n(v_a, 2)} + {n(m_b, 2)}v", "C1", "a"),
@@ -320,8 +320,8 @@ def pucks_on_an_air_table() -> Question:
                              f"{angle_text} measured from the line."),
                      Mistake("masses left out", u_x - v_x * math.cos(math.radians(angle)),
                              "You conserved velocities, not momenta. Multiply each speed by its "
-                             "puck's mass first."),
-                 )),
+                             "puck's mass first.", see="conservation"),
+                 ), see="two-d"),
             Part("component of Y's momentum at right angles to X's original direction", y.across, "N s",
                  "momentum", units=_N_S, shown_sig_figs=3,
                  revisit="Across the line the momentum before is zero, so Y's component cancels X's: "
@@ -336,7 +336,7 @@ def pucks_on_an_air_table() -> Question:
                      Mistake("masses left out", v_x * math.sin(math.radians(angle)),
                              "That is a component of X's velocity. Multiply by X's mass to get "
                              "momentum."),
-                 )),
+                 ), see="two-d"),
             Part("speed of Y", pucks.speed_missing, "m s^-1", "speed", units=_M_S, shown_sig_figs=3,
                  ecf=Ecf(sympy.sqrt(a_**2 + b_**2) / mass_y, {"mass_y": m_y}),
                  revisit="Combine the components with Pythagoras, p = √(along² + across²), then "
@@ -347,11 +347,11 @@ def pucks_on_an_air_table() -> Question:
                              "with Pythagoras, √(along² + across²)."),
                      Mistake("momentum given as speed", y.magnitude,
                              f"That is Y's momentum in N s. Divide by Y's mass, {n(m_y, 2)} kg, for its "
-                             "speed."),
+                             "speed.", see="momentum"),
                      Mistake("X's mass used", y.magnitude / m_x,
                              f"You divided by X's mass. Y's speed is its momentum ÷ its own mass, "
-                             f"{n(m_y, 2)} kg."),
-                 )),
+                             f"{n(m_y, 2)} kg.", see="momentum"),
+                 ), see="two-d"),
             Part("angle between Y's motion and X's original direction", y.angle_deg, "°", "angle",
                  units="° (degrees)", shown_sig_figs=3,
                  ecf=Ecf(180 * sympy.atan(b_ / a_) / sympy.pi, {}),
@@ -364,7 +364,7 @@ def pucks_on_an_air_table() -> Question:
                      Mistake("X's angle", angle,
                              "Y need not move off at X's angle. Work out Y's components and use "
                              "tan θ = across / along."),
-                 )),
+                 ), see="two-d"),
             Part("total kinetic energy after the collision", pucks.kinetic_energy_after, "J", "energy",
                  shown_sig_figs=2,
                  ecf=Ecf(mass_x * speed_x**2 / 2 + mass_y * c_**2 / 2,
@@ -383,7 +383,7 @@ def pucks_on_an_air_table() -> Question:
                      Mistake("speeds not squared", m_x * v_x / 2 + m_y * pucks.speed_missing / 2,
                              "Kinetic energy is ½mv²: you left the speeds unsquared. Square each speed, then add "
                              "X's and Y's."),
-                 )),
+                 ), see="kinetic-energy"),
         ),
         mark_scheme=(
             Mark(f"Along: {n(m_x, 2)} × {n(u_x, 2)} = {n(m_x, 2)} × {n(v_x, 2)} cos {angle_text} + "
@@ -438,7 +438,7 @@ def sphere_in_oil() -> Question:
                      Mistake("g left out", oil * volume,
                              "That is the mass of oil pushed aside, in kg. The upthrust is its "
                              "weight: ρgV."),
-                 )),
+                 ), see="skydiver"),
             Part("drag force at terminal velocity", drag, "N", "force", shown_sig_figs=3,
                  answer_for_g=lambda g_: drag_at_terminal_velocity(weight(mass, g=g_),
                                                                    upthrust(oil, volume, g=g_)),
@@ -451,7 +451,7 @@ def sphere_in_oil() -> Question:
                      Mistake("upthrust added", sphere_weight + lift,
                              "The upthrust and the drag both act upwards: weight = drag + upthrust, "
                              "so subtract the upthrust."),
-                 )),
+                 ), see="skydiver"),
             Part("acceleration of the sphere just after it is released", first, "m s^-2", "acceleration",
                  units=_M_S2, shown_sig_figs=3,
                  answer_for_g=lambda g_: acceleration(weight(mass, g=g_) - upthrust(oil, volume, g=g_), mass),
@@ -466,8 +466,8 @@ def sphere_in_oil() -> Question:
                              "speed is zero, so there is no drag yet."),
                      Mistake("divided by the weight", (sphere_weight - lift) / sphere_weight,
                              f"You divided by the weight. Newton's second law divides by the mass, "
-                             f"{n(mass, 2)} kg."),
-                 )),
+                             f"{n(mass, 2)} kg.", see="weight"),
+                 ), see="skydiver"),
         ),
         mark_scheme=(
             Mark(f"Upthrust = ρgV = {n(oil, 2)} × {n(G_EARTH, 3)} × {n(volume, 2)}", "C1", "a"),

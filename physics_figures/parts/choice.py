@@ -22,6 +22,8 @@ class Option:
     text: str
     mistake: str = ""
     feedback: str = ""
+    #: The section that teaches the idea, where it is not the part's own (a bank section id).
+    see: str | None = None
 
     def __post_init__(self):
         textformat.parse(self.text)
@@ -38,6 +40,8 @@ class ChoicePart(NoValue):
     options: tuple[Option, ...]
     answer: str
     revisit: str
+    #: The section of the book a wrong choice sends the student to (an id of the bank's sections).
+    see: str | None = None
     kind: ClassVar[str] = "mcq"
     asks: ClassVar[str] = "state"
 
@@ -59,26 +63,27 @@ class ChoicePart(NoValue):
 
     def browser_data(self, part_id: str) -> dict:
         return {"id": part_id, "kind": self.kind, "prompt": self.prompt, "answer": self.answer,
-                "revisit": self.revisit,
+                "revisit": self.revisit, "see": self.see,
                 "options": [{"letter": letter, "html": textformat.to_html(o.text, paragraphs=False),
-                             "mistake": o.mistake, "feedback": o.feedback,
+                             "mistake": o.mistake, "feedback": o.feedback, "see": o.see,
                              **({"loses": list(marking.mistake_losses("physics"))} if o.mistake else {})}
                             for letter, o in zip(OPTION_LETTERS, self.options, strict=True)]}
 
 
-def choices_in_order(key: float, wrong: dict[str, tuple[float, str]], *, sig_figs: int, unit: str
+def choices_in_order(key: float, wrong: dict[str, tuple], *, sig_figs: int, unit: str
                      ) -> tuple[tuple[Option, ...], str]:
     """Options for a numerical multiple-choice part, in increasing order as Paper 1 prints them:
-    the key and three named mistakes {name: (value, feedback)} worked from the same givens.
+    the key and three named mistakes {name: (value, feedback)} worked from the same givens, or
+    (value, feedback, see) for a mistake taught in another section than the part's.
     Returns (options, the key's letter)."""
     _require(len(wrong) == len(OPTION_LETTERS) - 1, "wrong", sorted(wrong),
              f"must hold {len(OPTION_LETTERS) - 1} named mistakes")
     space = "" if unit == "°" else " "
-    rows = sorted([(key, "", "")] + [(value, name, feedback) for name, (value, feedback) in wrong.items()])
-    texts = [f"{format_number(value, sig_figs)}{space}{unit}" for value, _, _ in rows]
+    rows = sorted([(key, "", "", None)] + [(value, name, feedback, *see) for name, (value, feedback, *see)
+                                           in wrong.items()], key=lambda row: row[:3])
+    texts = [f"{format_number(value, sig_figs)}{space}{unit}" for value, *_ in rows]
     _require(len(set(texts)) == len(texts), "wrong", texts,
              f"must print differently from the key and each other at {sig_figs} s.f.")
-    options = tuple(Option(text, name, feedback) for text, (_, name, feedback) in zip(texts, rows, strict=True))
-    answer = OPTION_LETTERS[[name for _, name, _ in rows].index("")]
+    options = tuple(Option(text, name, feedback, *see) for text, (_, name, feedback, *see) in zip(texts, rows, strict=True))
+    answer = OPTION_LETTERS[[name for _, name, *_ in rows].index("")]
     return options, answer
-

@@ -39,7 +39,8 @@ class Mistake:
     value: what the wrong method gives, in SI units (signed for a signed part, else a
     size). unit: only when the mistake gives another quantity (e.g. "J" for kinetic
     energy instead of momentum). direction: only when the mistake is a wrong direction.
-    feedback: names the mistake and the idea to revisit (plain text).
+    feedback: names the mistake and the idea to revisit (plain text). see: the section of the
+    book that teaches that idea, where it is not the part's own (an id of the bank's sections).
     kind: what the mistake is, for the marks it keeps (marking_rules.json): "slip" (g = 10,
     a power-of-ten or prefix slip: keeps the C1 and M1), "direction" (keeps all but the
     direction's mark; the default when ``direction`` is set) or "physics" (a wrong formula or
@@ -55,6 +56,7 @@ class Mistake:
     direction: str | None = None
     kind: str = ""
     keeps: tuple[str, ...] | None = None
+    see: str | None = None
 
     def __post_init__(self):
         _require(math.isfinite(self.value), "value", self.value, "must be a finite number")
@@ -189,6 +191,8 @@ class Part:
     sign_means: str = ""
     mistakes: tuple[Mistake, ...] = ()
     revisit: str = ""
+    #: The section of the book a wrong answer sends the student to (an id of the bank's sections).
+    see: str | None = None
     asks: str = "calculate"
     working: tuple[Step, ...] = ()
     answer_from: Callable[..., float] | None = field(default=None, compare=False, repr=False)
@@ -331,10 +335,10 @@ class Part:
             "direction": self.direction, "positive": self.positive, "choices": list(self.choices),
             "answerDirection": self.answer_direction, "directionHint": self.direction_hint,
             "signMeans": self.sign_means,
-            "revisit": self.revisit,
+            "revisit": self.revisit, "see": self.see,
             "mistakes": [
                 {"name": m.name, "value": m.value, "unit": m.unit, "direction": m.direction,
-                 "feedback": m.feedback, "loses": list(m.loses)}
+                 "feedback": m.feedback, "loses": list(m.loses), "see": m.see}
                 for m in self.mistakes
             ],
             "alternatives": [{"value": a.value, "why": a.why} for a in self.alternatives],

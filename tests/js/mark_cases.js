@@ -2,7 +2,7 @@
 // JSON [{code, mistake, message}] on stdout. Used by tests/test_questions_engine.py.
 "use strict";
 const path = require("node:path");
-const { mark } = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "questions.js"));
+const { mark } = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "marking.js"));
 
 let input = "";
 process.stdin.setEncoding("utf8");

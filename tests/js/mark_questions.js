@@ -3,7 +3,7 @@
 // lost" text. Used by tests/test_marks_rules.py.
 "use strict";
 const path = require("node:path");
-const engine = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "questions.js"));
+const engine = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "marking.js"));
 
 let input = "";
 process.stdin.setEncoding("utf8");

@@ -1,11 +1,11 @@
-// The marking engine of book/_ext/questions/static/questions.js, run with `node --test tests/js`.
+// The marking engine of book/_ext/questions/static/marking.js, run with `node --test tests/js`.
 // Parts mirror the notes' Quick check (Notes, "Quick check" and "Answers").
 "use strict";
 const test = require("node:test");
 const assert = require("node:assert/strict");
 const path = require("node:path");
 const { parseNumber, parseUnit, mark, splitValueAndUnit } = require(
-  path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "questions.js"));
+  path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "marking.js"));
 
 // Quick check 1(a): 15 N s, with named mistakes (values as physics_figures computes them).
 const momentum = {
@@ -307,7 +307,7 @@ test("a unit in the wrong case loses only the A1", () => {
   const data = { parts: [Object.assign({ id: "a" }, mass)],
     marks: [{ part: "a", code: "C1", roles: ["method"] }, { part: "a", code: "A1", roles: ["answer"] }] };
   const { results, marks } = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static",
-    "questions.js")).markQuestion(data, { a: { value: "12", unit: "Kg" } });
+    "marking.js")).markQuestion(data, { a: { value: "12", unit: "Kg" } });
   assert.equal(results.a.code, "unit-case");
   assert.equal(marks.earned, 1);
   assert.equal(marks.available, 2);

@@ -1,10 +1,10 @@
 // Marks as an exam awards them, and error carried forward, in the browser's engine
-// (book/_ext/questions/static/questions.js). Run: node --test tests/js
+// (book/_ext/questions/static/marking.js). Run: node --test tests/js
 "use strict";
 const test = require("node:test");
 const assert = require("node:assert/strict");
 const path = require("node:path");
-const { markQuestion } = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "questions.js"));
+const { markQuestion } = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "marking.js"));
 
 // Quick check 1's shape: (a) momentum = F t; (b) a velocity with a direction, (a) / mass.
 const data = {
@@ -88,4 +88,14 @@ test("a later part worked from a wrong reading earns its marks as ecf", () => {
   assert.equal(r.results.a.code, "wrong");
   assert.equal(r.results.b.code, "ecf");
   assert.deepEqual(r.marks.byPart, { a: [0, 1], b: [2, 2] });
+});
+
+test("feedback links the section the data names: a mistake's own, else its part's; a rule's row", () => {
+  const { sectionFor } = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "marking.js"));
+  const part = { see: "momentum" };
+  assert.equal(sectionFor(part, { code: "mistake", see: "third-law" }), "third-law");
+  assert.equal(sectionFor(part, { code: "mistake" }), "momentum");
+  assert.equal(sectionFor(part, { code: "wrong" }), "momentum");
+  assert.equal(sectionFor({}, { code: "wrong" }), null);
+  assert.equal(sectionFor(part, { code: "too-few-sf" }), "rule:too-few-sf");
 });

@@ -8,7 +8,7 @@
     if (!option) return { code: "no-choice", message: "Choose one of the options A to D." };
     if (letter === part.answer) return { code: "correct", correct: true, message: "Correct." };
     // the option's feedback names the idea already
-    return { code: "mistake", message: option.feedback, mistake: option.mistake, loses: option.loses };
+    return { code: "mistake", message: option.feedback, mistake: option.mistake, loses: option.loses, see: option.see };
   }
 
   var kind = { kinds: ["mcq"], mark: function (part, answer) { return markChoice(part, answer.choice || ""); } };

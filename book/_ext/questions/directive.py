@@ -1,0 +1,227 @@
+"""The ``question`` directive and the data it writes.
+
+A page places a template of the question bank (physics_figures.bank) by its key; the
+template writes its own text, with the printed numbers (variant 0)::
+
+    ```{question} quick-check-1
+    ```
+
+The directive makes the question's nodes: title, text, graph, the printed answer lines
+(with their prompt and marks as data, which the question sheet reads), the answer form
+(written by form.py) and the worked answer with its mark scheme. After the build, each
+template's other variants go to a small script of data, loaded by New numbers.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+
+from docutils import nodes
+from fresh_figures import uses_modules  # book/_ext: re-read a page when its modules change
+from sphinx.util import logging
+from sphinx.util.docutils import SphinxDirective
+
+from . import store
+
+logger = logging.getLogger(__name__)
+
+
+class question(nodes.General, nodes.Element):
+    """A question: title, text, answer lines, answer boxes (HTML) and worked answer."""
+
+
+class question_form(nodes.General, nodes.Element):
+    """The answer boxes, marked in the browser (HTML only)."""
+
+
+class worked_answer(nodes.General, nodes.Element):
+    """The worked answer and mark scheme, shown after an attempt (HTML only)."""
+
+
+class QuestionDirective(SphinxDirective):
+    """A template of the bank, named by its key; its text comes with its numbers."""
+
+    optional_arguments = 1
+    final_argument_whitespace = True
+    has_content = True
+
+    def run(self):
+        template = self._template()
+        data, title = template.variant(0), template.title
+        if self.content:
+            raise self.error(f"question {template.key}: a template writes its own text; "
+                             "leave the directive empty")
+        # An edit to these (or to what they import) re-reads this page.
+        uses_modules(self.env, *store.BANK_MODULES)
+        if data.graph is not None:
+            uses_modules(self.env, store.GRAPH_MODULE)
+        store.templates_used(self.env).setdefault(self.env.docname, []).append(template.key)
+
+        node = question(qid=data.key, data=data.browser_data(), ids=[f"question-{data.key}"],
+                        template=_template_data(template))
+        self.set_source_info(node)
+        node += nodes.paragraph("", "", nodes.strong(text=title), classes=["q-title"])
+        node += nodes.container("", *text_nodes(data.text), classes=["q-text"])
+        if data.graph is not None:
+            node += self._graph(template.key, data.graph)
+        lines = nodes.container(classes=["q-answer-lines"])
+        marks = data.part_marks()  # the one count the browser, sheets and Moodle use
+        for index, part in enumerate(data.parts):
+            lines += answer_lines(data.label(index), part, marks[index])
+        lines += nodes.paragraph(text=f"Total: {store.count(sum(marks), 'mark', 'marks')}", classes=["q-total"],
+                                 marks=sum(marks))
+        node += lines
+        node += question_form(data=node["data"], template=node["template"],
+                              labels=[data.label(i) for i in range(len(data.parts))],
+                              legends=[data.label(i) + p.prompt[:1].upper() + p.prompt[1:]
+                                       for i, p in enumerate(data.parts)])
+        worked = worked_answer()
+        worked += mark_scheme_nodes(data)
+        node += worked
+
+        self._record(node, data, title, worked)
+        return [node]
+
+    def _template(self):
+        if not self.arguments:
+            raise self.error("question: name a template of physics_figures.bank")
+        from physics_figures import bank  # imported here: the bank is slow to build
+
+        key = self.arguments[0]
+        if key not in bank.TEMPLATES:
+            raise self.error(f"question: no template {key!r} in physics_figures.bank")
+        return bank.TEMPLATES[key]
+
+    def _graph(self, key: str, graph) -> nodes.image:
+        """The printed variant's graph, drawn now as SVG (the site) and PDF (the book): an
+        image Sphinx copies like any other, so every builder picks its own format."""
+        folder = Path(self.env.doctreedir).parent / GRAPHS_DIR
+        drawn = write_graph(folder, f"{key}-0", graph, formats=("svg", "pdf"))
+        here = Path(self.env.srcdir) / Path(self.env.docname).parent
+        uri = Path(os.path.relpath(folder / f"{key}-0", here)).as_posix() + ".*"
+        return nodes.image(uri=uri, alt=drawn.alt, classes=["q-graph"])
+
+    def _record(self, node: question, data, title: str, worked: worked_answer) -> None:
+        for docname, asked in store.questions(self.env).items():
+            if any(q["key"] == data.key for q in asked):
+                logger.warning(f"question {data.key} is asked twice (also in {docname})",
+                               location=self.get_location())
+        store.questions(self.env).setdefault(self.env.docname, []).append({
+            "key": data.key, "title": title, "marks": data.marks, "try_first": node["template"]["tryFirst"],
+            "answers": [data.label(i) + f"{p.prompt}: {p.answer_text}" for i, p in enumerate(data.parts)],
+            "scheme": [child.deepcopy() for child in worked.children],
+        })
+
+
+def answer_lines(label: str, part, marks: int) -> list[nodes.Node]:
+    """What a part prints on paper: its options and a box for the letter, lines for an
+    explanation, or a line for a value (and its direction); each ends with the part's
+    marks, [2], as on a Cambridge paper."""
+    tail = f" [{marks}]"
+    if part.kind == "mcq":
+        options = nodes.enumerated_list(enumtype="upperalpha", classes=["q-options-print"])
+        for option in part.options:
+            options += nodes.list_item("", *text_nodes(option.text))
+        return [nodes.paragraph(text=f"{label}{part.prompt}"), options,
+                nodes.paragraph(text="Answer (A, B, C or D): " + "." * 8 + tail)]
+    if part.kind == "explain":
+        return [nodes.paragraph(text=f"{label}{part.prompt}")] + [
+            nodes.paragraph(text="." * 70 + (tail if last else "")) for last in (False, False, False, True)]
+    line = f"{label}{part.prompt} = " + "." * 28
+    if part.direction == "choice":
+        line += " direction: " + "." * 16
+    # the question sheet draws its own line from this data (book/_latex/latex_question_sheets.py)
+    return [nodes.paragraph(text=line + tail, classes=["q-answer-line"], prompt=f"{label}{part.prompt}",
+                            marks=marks, direction=part.direction == "choice")]
+
+
+def _template_data(template) -> dict:
+    return {"key": template.key, "type": template.type, "kinds": list(template.kinds),
+            "variants": len(template.values), "tryFirst": bool(template.try_first)}
+
+
+_TAG_NODES = {"sup": nodes.superscript, "sub": nodes.subscript, "em": nodes.emphasis,
+              "strong": nodes.strong}
+
+
+def _inline_nodes(spans) -> list[nodes.Node]:
+    out = []
+    for span in spans:
+        node = nodes.Text(span.text)
+        for tag in reversed(span.tags):
+            node = _TAG_NODES[tag]("", "", node)
+        out.append(node)
+    return out
+
+
+def text_nodes(source: str) -> list[nodes.Node]:
+    """Paragraphs of docutils nodes from physics_figures.textformat (HTML, LaTeX, text alike)."""
+    from physics_figures import textformat
+
+    return [nodes.paragraph("", "", *_inline_nodes(spans)) for spans in textformat.parse(source)]
+
+
+def mark_scheme_nodes(data) -> list[nodes.Node]:
+    from physics_figures import textformat
+
+    items = nodes.bullet_list(classes=["q-scheme"])
+    for label, text, code in data.mark_lines():
+        line = nodes.paragraph()
+        if label:
+            line += [nodes.strong(text=label), nodes.Text(" ")]
+        for spans in textformat.parse(text):
+            line += _inline_nodes(spans)
+        if code:
+            line += [nodes.Text(" "), nodes.strong(text=code)]
+        items += nodes.list_item("", line)
+    return [items]
+
+
+VARIANTS_DIR = "questions"  # under the site's _static/: one file of variants per template
+GRAPHS_DIR = "question-graphs"  # beside the doctrees: the printed variants' graphs, as sources
+
+
+def write_graph(folder: Path, name: str, graph, *, formats: tuple[str, ...]):
+    """Draw a question's graph into folder/name.<format>, rewriting a file only when its
+    bytes change (so an unchanged graph is not copied again). Returns the BookFigure."""
+    from physics_figures.figures.question_graph import question_graph
+
+    drawn = question_graph(graph)
+    folder.mkdir(parents=True, exist_ok=True)
+    for extension in formats:
+        content = drawn.svg().encode() if extension == "svg" else drawn.pdf()
+        path = folder / f"{name}.{extension}"
+        if not path.exists() or path.read_bytes() != content:
+            path.write_bytes(content)
+    drawn.figure.clear()  # matplotlib keeps figures alive until cleared
+    return drawn
+
+
+def write_variants(app, exception):
+    """Each template's variants as a small script, loaded only when New numbers is pressed (a
+    <script> element, so it works from file:// too, where fetch() does not)."""
+    if exception or app.builder.format != "html":
+        return
+    keys = sorted({key for keys in store.templates_used(app.env).values() for key in keys})
+    if not keys:
+        return
+    from physics_figures import bank
+
+    folder = Path(app.outdir) / "_static" / VARIANTS_DIR
+    folder.mkdir(parents=True, exist_ok=True)
+    for key in keys:
+        if len(bank.TEMPLATES[key].values) < 2:  # no New numbers: nothing to load
+            continue
+        variants = []
+        for index, variant in enumerate(bank.TEMPLATES[key].variants):
+            data = variant.variant_data()
+            if variant.graph is not None:  # its own graph, beside the variants' script
+                drawn = write_graph(folder, f"{key}-{index}", variant.graph, formats=("svg",))
+                data["graph"] = {"src": f"{key}-{index}.svg", "alt": drawn.alt}
+            variants.append(data)
+        payload = json.dumps(variants, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
+        (folder / f"{key}.js").write_text(
+            f"(window.QuestionVariants = window.QuestionVariants || {{}})[{json.dumps(key)}] = {payload};\n",
+            encoding="utf-8")

@@ -22,11 +22,11 @@ JB_BUILD := $(BIN)/jupyter-book build . -n -W --keep-going
 help:
 	@echo "make book   build the site into $(SITE), with its PDFs (make html: HTML only)"
 	@echo "make test   build the site, then run the whole test suite (what CI runs)"
-	@echo "make check  ruff + the tests that need no build or browser (under a minute)"
+	@echo "make check  ruff, ESLint, Prettier + the tests that need no build or browser (under a minute)"
 	@echo "make pdf    build the PDF book, question sheet and answer key into $(PDF)"
 	@echo "make worksheets  the teachers' worksheets (versions A-C with keys); make moodle: the Moodle XML"
 	@echo "make serve  serve the built site on http://localhost:$(PORT)"
-	@echo "make lint   ruff over the Python code"
+	@echo "make lint   ruff over the Python code, ESLint and Prettier over the JavaScript"
 	@echo "make lock   rewrite requirements.txt (the lock, with hashes) from pyproject.toml"
 	@echo "make bench  time cold/no-op/one-edit builds, weigh every page, Lighthouse: BENCHMARKS.md"
 	@echo "make clean  remove the build (keeps .venv)"
@@ -100,14 +100,28 @@ test: venv
 	@$(MAKE) --no-print-directory book
 	@echo ">>> linting, then running the test suite"
 	$(BIN)/ruff check $(LINTED)
+	@$(MAKE) --no-print-directory jslint
 	$(BIN)/python -m pytest
 
 # The fast loop: ruff and every test that needs no build and no browser (models, marking
 # rules, questions, notation), with the question variants sampled. Under a minute.
+# ESLint and Prettier run on the second core while pytest runs on the first.
+# .pre-commit-config.yaml runs these same commands.
 .PHONY: check
 check: venv node_modules/.package-lock.json
 	$(BIN)/ruff check $(LINTED)
-	$(BIN)/python -m pytest -m "not site and not browser and not build and not network" -q
+	$(MAKE) --no-print-directory jslint & jslint=$$!; \
+	  $(BIN)/python -m pytest -m "not site and not browser and not build and not network" -q \
+	    || { wait $$jslint; exit 1; }; \
+	  wait $$jslint
+
+# The site's JavaScript: ESLint (eslint.config.mjs) and Prettier's layout (.prettierrc.json;
+# .prettierignore). To reformat: node_modules/.bin/prettier --write "**/*.{js,mjs}"
+NODE_BIN := node_modules/.bin
+.PHONY: jslint
+jslint: node_modules/.package-lock.json
+	$(NODE_BIN)/eslint --max-warnings=0 .
+	$(NODE_BIN)/prettier --check --log-level=warn "**/*.{js,mjs}"
 
 # The teachers' PDFs: the book, a question sheet and an answer key. One LaTeX build
 # writes all three .tex files (book/_latex/); xelatex typesets them. Needs TeX Live
@@ -131,7 +145,7 @@ serve:
 	$(PYTHON) -m http.server $(PORT) --bind 127.0.0.1 --directory $(SITE)
 
 LINTED := physics_figures tests book/_ext book/_latex scripts
-lint: venv
+lint: venv jslint
 	$(BIN)/ruff check $(LINTED)
 
 clean:

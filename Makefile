@@ -22,24 +22,41 @@ JB_BUILD := $(BIN)/jupyter-book build . -n -W --keep-going
 help:
 	@echo "make book   build the site into $(SITE), with its PDFs (make html: HTML only)"
 	@echo "make test   build the site, then run the whole test suite (what CI runs)"
-	@echo "make check  ruff + the tests that need no build or browser (under a minute)"
+	@echo "make check  ruff, ESLint, Prettier + the tests that need no build or browser (under a minute)"
 	@echo "make pdf    build the PDF book, question sheet and answer key into $(PDF)"
 	@echo "make worksheets  the teachers' worksheets (versions A-C with keys); make moodle: the Moodle XML"
 	@echo "make serve  serve the built site on http://localhost:$(PORT)"
-	@echo "make lint   ruff over the Python code"
+	@echo "make lint   ruff over the Python code, ESLint and Prettier over the JavaScript"
+	@echo "make lock   rewrite requirements.txt (the lock, with hashes) from pyproject.toml"
 	@echo "make bench  time cold/no-op/one-edit builds, weigh every page, Lighthouse: BENCHMARKS.md"
 	@echo "make clean  remove the build (keeps .venv)"
 
 venv: $(VENV)/.installed
 
-# Re-install whenever the pinned requirements or the package metadata change.
+# Re-install whenever the lock or the package metadata change. requirements.txt is the lock
+# (every package pinned, with hashes; make lock writes it from pyproject.toml); pip checks each
+# download against its hash. The book's own package goes in last, editable, without its
+# dependencies (they are in the lock) and built by the locked setuptools, not a fresh download.
 $(VENV)/.installed: requirements.txt pyproject.toml
 	@test -x $(BIN)/python || { echo ">>> creating $(VENV)"; $(PYTHON) -m venv $(VENV); }
 	@echo ">>> installing requirements into $(VENV)"
-	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -r requirements.txt
+	$(BIN)/python -m pip install --quiet --require-hashes -r requirements.txt
+	$(BIN)/python -m pip install --quiet --no-deps --no-build-isolation -e .
 	$(BIN)/python -m ipykernel install --sys-prefix --name python3 --display-name "Python 3" >/dev/null
 	@touch $@
+
+# The lock: pyproject.toml declares the dependencies (direct ones pinned), pip-compile (pip-tools,
+# itself in the lock) resolves every transitive package and pins it with its hashes. Pins already
+# in requirements.txt are kept; to move one: make lock LOCK_ARGS="--upgrade-package NAME".
+# tests/test_lock.py checks that the two agree (make check: offline; make test: runs this target
+# into a temporary file and compares).
+LOCK_OUT ?= requirements.txt
+LOCK_ARGS ?=
+.PHONY: lock
+lock: venv
+	@echo ">>> locking pyproject.toml's dependencies into $(LOCK_OUT)"
+	$(BIN)/pip-compile --quiet --generate-hashes --allow-unsafe --strip-extras --all-extras \
+	  --no-emit-index-url --no-emit-find-links $(LOCK_ARGS) --output-file=$(LOCK_OUT) pyproject.toml
 
 # Node tools: MathJax renders the maths at build time; axe-core and Lighthouse test the site.
 # Debian's nodejs package carries no npm, hence the second package.
@@ -83,14 +100,28 @@ test: venv
 	@$(MAKE) --no-print-directory book
 	@echo ">>> linting, then running the test suite"
 	$(BIN)/ruff check $(LINTED)
+	@$(MAKE) --no-print-directory jslint
 	$(BIN)/python -m pytest
 
 # The fast loop: ruff and every test that needs no build and no browser (models, marking
 # rules, questions, notation), with the question variants sampled. Under a minute.
+# ESLint and Prettier run on the second core while pytest runs on the first.
+# .pre-commit-config.yaml runs these same commands.
 .PHONY: check
 check: venv node_modules/.package-lock.json
 	$(BIN)/ruff check $(LINTED)
-	$(BIN)/python -m pytest -m "not site and not browser and not build" -q
+	$(MAKE) --no-print-directory jslint & jslint=$$!; \
+	  $(BIN)/python -m pytest -m "not site and not browser and not build and not network" -q \
+	    || { wait $$jslint; exit 1; }; \
+	  wait $$jslint
+
+# The site's JavaScript: ESLint (eslint.config.mjs) and Prettier's layout (.prettierrc.json;
+# .prettierignore). To reformat: node_modules/.bin/prettier --write "**/*.{js,mjs}"
+NODE_BIN := node_modules/.bin
+.PHONY: jslint
+jslint: node_modules/.package-lock.json
+	$(NODE_BIN)/eslint --max-warnings=0 .
+	$(NODE_BIN)/prettier --check --log-level=warn "**/*.{js,mjs}"
 
 # The teachers' PDFs: the book, a question sheet and an answer key. One LaTeX build
 # writes all three .tex files (book/_latex/); xelatex typesets them. Needs TeX Live
@@ -114,7 +145,7 @@ serve:
 	$(PYTHON) -m http.server $(PORT) --bind 127.0.0.1 --directory $(SITE)
 
 LINTED := physics_figures tests book/_ext book/_latex scripts
-lint: venv
+lint: venv jslint
 	$(BIN)/ruff check $(LINTED)
 
 clean:

@@ -25,6 +25,7 @@ NEEDS = {
     "site": "the built site or PDFs (make book)",
     "browser": "Chromium (scripts/ensure-debian-packages test)",
     "build": "its own Sphinx builds (slow)",
+    "network": "PyPI (pip-compile resolves the lock again)",
 }
 _current_test = None
 

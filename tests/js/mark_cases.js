@@ -6,7 +6,9 @@ const { mark } = require(path.join(__dirname, "..", "..", "book", "_ext", "quest
 
 let input = "";
 process.stdin.setEncoding("utf8");
-process.stdin.on("data", (chunk) => { input += chunk; });
+process.stdin.on("data", (chunk) => {
+  input += chunk;
+});
 process.stdin.on("end", () => {
   const results = JSON.parse(input).map(({ part, answer }) => mark(part, answer));
   process.stdout.write(JSON.stringify(results));

@@ -7,12 +7,16 @@ const engine = require(path.join(__dirname, "..", "..", "book", "_ext", "questio
 
 let input = "";
 process.stdin.setEncoding("utf8");
-process.stdin.on("data", (chunk) => { input += chunk; });
+process.stdin.on("data", (chunk) => {
+  input += chunk;
+});
 process.stdin.on("end", () => {
   const out = JSON.parse(input).map(({ data, answers }) => {
     const marked = engine.markQuestion(data, answers);
     const lost = {};
-    data.parts.forEach((part) => { lost[part.id] = engine.lostText(data, marked.marks, part.id); });
+    data.parts.forEach((part) => {
+      lost[part.id] = engine.lostText(data, marked.marks, part.id);
+    });
     return { results: marked.results, marks: marked.marks, lost: lost };
   });
   process.stdout.write(JSON.stringify(out));

@@ -5,32 +5,54 @@ const test = require("node:test");
 const assert = require("node:assert/strict");
 const path = require("node:path");
 const { parseNumber, parseUnit, mark, splitValueAndUnit } = require(
-  path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "marking.js"));
+  path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "marking.js"),
+);
 
 // Quick check 1(a): 15 N s, with named mistakes (values as physics_figures computes them).
 const momentum = {
-  value: 15, unit: "N s", units: "N s or kg m s^-1", quantity: "momentum", minSf: 2, checkSf: 3,
-  direction: "none", revisit: "Force × time = change in momentum.",
+  value: 15,
+  unit: "N s",
+  units: "N s or kg m s^-1",
+  quantity: "momentum",
+  minSf: 2,
+  checkSf: 3,
+  direction: "none",
+  revisit: "Force × time = change in momentum.",
   mistakes: [
     { name: "force divided by time", value: 5 / 3, feedback: "You divided the force by the time." },
     { name: "force times mass", value: 10, feedback: "You multiplied the force by the mass." },
-    { name: "kinetic energy instead of momentum", value: 56.25, unit: "J", feedback: "That is the kinetic energy." }
-  ]
+    { name: "kinetic energy instead of momentum", value: 56.25, unit: "J", feedback: "That is the kinetic energy." },
+  ],
 };
 // Quick check 3: 686.7 N and 11.619 m s^-2 upwards.
 const drag = { value: 686.7, unit: "N", quantity: "force", direction: "none", revisit: "drag = weight", mistakes: [] };
 const acceleration = {
-  value: (1500 - 686.7) / 70, unit: "m s^-2", quantity: "acceleration", direction: "choice",
-  choices: ["upwards", "downwards"], answerDirection: "upwards", revisit: "resultant = drag − weight",
+  value: (1500 - 686.7) / 70,
+  unit: "m s^-2",
+  quantity: "acceleration",
+  direction: "choice",
+  choices: ["upwards", "downwards"],
+  answerDirection: "upwards",
+  revisit: "resultant = drag − weight",
   mistakes: [
-    { name: "still falling", value: (1500 - 686.7) / 70, direction: "downwards", feedback: "She is still falling, but slowing down." },
-    { name: "drag as resultant", value: 1500 / 70, feedback: "You used the drag as the resultant force." }
-  ]
+    {
+      name: "still falling",
+      value: (1500 - 686.7) / 70,
+      direction: "downwards",
+      feedback: "She is still falling, but slowing down.",
+    },
+    { name: "drag as resultant", value: 1500 / 70, feedback: "You used the drag as the resultant force." },
+  ],
 };
 // Quick check 4(a): -2.0 m s^-1, forwards positive.
 const velocity = {
-  value: -2.0, unit: "m s^-1", quantity: "velocity", direction: "signed", positive: "forwards",
-  revisit: "momentum and relative speeds", mistakes: [{ name: "stops", value: 0, feedback: "It only stops for equal masses." }]
+  value: -2.0,
+  unit: "m s^-1",
+  quantity: "velocity",
+  direction: "signed",
+  positive: "forwards",
+  revisit: "momentum and relative speeds",
+  mistakes: [{ name: "stops", value: 0, feedback: "It only stops for equal masses." }],
 };
 // Quick check 1(b) 7.5 m s^-1 and a time, for units and prefixes.
 const speed = { value: 7.5, unit: "m s^-1", quantity: "speed", direction: "none", revisit: "v = p / m", mistakes: [] };
@@ -38,17 +60,31 @@ const time = { value: 3.0, unit: "s", quantity: "time", direction: "none", revis
 const mass = { value: 12, unit: "kg", quantity: "mass", direction: "none", revisit: "mass is the same", mistakes: [] };
 const showThat = Object.assign({}, drag, { minSf: 3 });
 // Notes, Momentum in two dimensions: Q moves off at 36.8° to the line.
-const angle = { value: 36.8, unit: "°", units: "° (degrees)", quantity: "angle", direction: "none", revisit: "tan", mistakes: [] };
+const angle = {
+  value: 36.8,
+  unit: "°",
+  units: "° (degrees)",
+  quantity: "angle",
+  direction: "none",
+  revisit: "tan",
+  mistakes: [],
+};
 // Quick check 2: the recoil speed, 1.0 m s^-1; the notes answer v = -1.0 (backwards).
 const recoil = Object.assign({}, speed, { value: 1.0, signMeans: "it moves backwards" });
 // Quick check 3(a) as physics_figures sends it: g = 10 named, g = 9.8 its own slip.
 const dragG = Object.assign({}, drag, {
-  mistakes: [{ name: "used g = 10 m s⁻²", value: 700, feedback: "You used g = 10 m s⁻²." }], gNineEight: 686.0
+  mistakes: [{ name: "used g = 10 m s⁻²", value: 700, feedback: "You used g = 10 m s⁻²." }],
+  gNineEight: 686.0,
 });
 // Practice 7(b): 14.3 N; the mass rounded to 1.5 kg part-way gives 14.7 N.
 const rockWeight = {
-  value: 14.3173, unit: "N", quantity: "weight", direction: "none", revisit: "W = mg", mistakes: [],
-  roundedPartWay: [{ value: 14.715, rounded: "the mass to 1.5 kg" }]
+  value: 14.3173,
+  unit: "N",
+  quantity: "weight",
+  direction: "none",
+  revisit: "W = mg",
+  mistakes: [],
+  roundedPartWay: [{ value: 14.715, rounded: "the mass to 1.5 kg" }],
 };
 
 function code(part, value, unit, direction) {
@@ -56,9 +92,23 @@ function code(part, value, unit, direction) {
 }
 
 test("numbers in every usual form are read", () => {
-  const forms = [["1.5e3", 1500], ["1.5E3", 1500], ["1.5 x 10^3", 1500], ["1.5x10^3", 1500], ["1.5×10³", 1500],
-    ["1.5 × 10^(3)", 1500], ["1.5*10**3", 1500], ["-0.25", -0.25], ["−0.25", -0.25], [".25", 0.25],
-    ["+4.0", 4], ["2.5e-3", 0.0025], ["2.5 × 10⁻³", 0.0025], ["10^3", 1000], ["7.", 7]];
+  const forms = [
+    ["1.5e3", 1500],
+    ["1.5E3", 1500],
+    ["1.5 x 10^3", 1500],
+    ["1.5x10^3", 1500],
+    ["1.5×10³", 1500],
+    ["1.5 × 10^(3)", 1500],
+    ["1.5*10**3", 1500],
+    ["-0.25", -0.25],
+    ["−0.25", -0.25],
+    [".25", 0.25],
+    ["+4.0", 4],
+    ["2.5e-3", 0.0025],
+    ["2.5 × 10⁻³", 0.0025],
+    ["10^3", 1000],
+    ["7.", 7],
+  ];
   for (const [text, value] of forms) {
     const n = parseNumber(text);
     assert.equal(n.ok, true, text);
@@ -77,7 +127,10 @@ test("refused forms get a message that says how to write them", () => {
 });
 
 test("significant figures are counted as written", () => {
-  const sf = (t) => { const n = parseNumber(t); return [n.sfMin, n.sfMax]; };
+  const sf = (t) => {
+    const n = parseNumber(t);
+    return [n.sfMin, n.sfMax];
+  };
   assert.deepEqual(sf("15"), [2, 2]);
   assert.deepEqual(sf("15.0"), [3, 3]);
   assert.deepEqual(sf("0.0250"), [3, 3]);
@@ -90,14 +143,27 @@ test("significant figures are counted as written", () => {
 });
 
 test("the right answer passes in every usual form of its unit", () => {
-  for (const unit of ["N s", "Ns", "N·s", "N*s", "kg m s^-1", "kg m/s", "kg m s⁻¹", "kg m s-1", "kgms-1",
-    "kg ms^-1", "kg.m.s-1", "kg m s^(-1)"]) {
+  for (const unit of [
+    "N s",
+    "Ns",
+    "N·s",
+    "N*s",
+    "kg m s^-1",
+    "kg m/s",
+    "kg m s⁻¹",
+    "kg m s-1",
+    "kgms-1",
+    "kg ms^-1",
+    "kg.m.s-1",
+    "kg m s^(-1)",
+  ]) {
     assert.equal(code(momentum, "15", unit), "correct", unit);
   }
   for (const unit of ["m s^-2", "m/s^2", "m/s²", "ms-2", "m s⁻²", "m/s/s"]) {
     assert.equal(code(acceleration, "11.6", unit, "upwards"), "correct", unit);
   }
-  for (const unit of ["m s^-1", "m/s", "ms^-1", "ms-1", "m s⁻¹"]) assert.equal(code(speed, "7.5", unit), "correct", unit);
+  for (const unit of ["m s^-1", "m/s", "ms^-1", "ms-1", "m s⁻¹"])
+    assert.equal(code(speed, "7.5", unit), "correct", unit);
   assert.equal(code(momentum, "15000", "g m s^-1"), "correct"); // a correct conversion is still correct
   assert.equal(code(momentum, "1.5e1", "N s"), "correct");
   assert.equal(code(momentum, "1.5 × 10^1", "N s"), "correct");
@@ -110,7 +176,10 @@ test("units are read into SI scale and dimensions", () => {
   assert.deepEqual(only("N s").dims, only("kg m/s").dims);
   assert.equal(only("g").scale, 1e-3);
   assert.equal(only("kN").scale, 1000);
-  assert.deepEqual(parseUnit("ms").readings.map((r) => r.scale), [1e-3, 1]); // millisecond, or metre second
+  assert.deepEqual(
+    parseUnit("ms").readings.map((r) => r.scale),
+    [1e-3, 1],
+  ); // millisecond, or metre second
   assert.equal(parseUnit("kg m//s").ok, false);
   assert.equal(parseUnit("furlongs").ok, false);
   assert.equal(parseUnit("").empty, true);
@@ -138,10 +207,20 @@ test("a unit of another quantity is named as such", () => {
 
 test("units written as words, and rad, are read", () => {
   const only = (t) => parseUnit(t).readings[0];
-  for (const [words, symbols] of [["newtons", "N"], ["newton", "N"], ["newton seconds", "N s"],
-    ["metres per second", "m/s"], ["metre per second", "m/s"], ["meters per second", "m/s"],
-    ["metres per second squared", "m/s^2"], ["degrees", "°"], ["degree", "°"], ["kilograms", "kg"]]) {
-    const a = only(words), b = only(symbols);
+  for (const [words, symbols] of [
+    ["newtons", "N"],
+    ["newton", "N"],
+    ["newton seconds", "N s"],
+    ["metres per second", "m/s"],
+    ["metre per second", "m/s"],
+    ["meters per second", "m/s"],
+    ["metres per second squared", "m/s^2"],
+    ["degrees", "°"],
+    ["degree", "°"],
+    ["kilograms", "kg"],
+  ]) {
+    const a = only(words),
+      b = only(symbols);
     assert.ok(a && Math.abs(a.scale - b.scale) < 1e-12 && a.dims.join() === b.dims.join(), words);
   }
   assert.ok(Math.abs(only("rad").scale - 180 / Math.PI) < 1e-12);
@@ -180,7 +259,8 @@ test("default rule: 2 or more significant figures; fewer is wrong", () => {
 test("a value right only to 1 s.f. is the key at 1 s.f.: too few figures, not wrong physics", () => {
   // 700 and 7e2 are 686.7 to 1 s.f.; 7.0 × 10² (2 s.f.) is not 686.7, it is g = 10's answer.
   for (const typed of ["700", "7e2"]) assert.equal(code(drag, typed, "N"), "too-few-sf", typed);
-  for (const typed of ["60", "6e1"]) assert.equal(code(Object.assign({}, drag, { value: 56.0 }), typed, "N"), "too-few-sf", typed);
+  for (const typed of ["60", "6e1"])
+    assert.equal(code(Object.assign({}, drag, { value: 56.0 }), typed, "N"), "too-few-sf", typed);
   assert.equal(code(Object.assign({}, drag, { value: 225 }), "200", "N"), "too-few-sf");
   assert.equal(code(Object.assign({}, drag, { value: 0.275 }), "0.3", "N"), "too-few-sf");
   assert.equal(code(drag, "7.0 × 10²", "N"), "wrong");
@@ -201,7 +281,12 @@ test("intermediate values rounded to 3 s.f. still pass; only the working's own r
   assert.equal(code(acceleration, "11.614", "m s^-2", "upwards"), "correct"); // 1500 − 687 then ÷ 70
   assert.equal(code(acceleration, "11.63", "m s^-2", "upwards"), "correct"); // g = 9.8, still 11.6
   // A last digit out by one is not, by itself, rounding: nothing in the working gives it.
-  for (const [part, typed] of [[acceleration, "11.7"], [drag, "688"], [drag, "686.0"], [momentum, "16"]]) {
+  for (const [part, typed] of [
+    [acceleration, "11.7"],
+    [drag, "688"],
+    [drag, "686.0"],
+    [momentum, "16"],
+  ]) {
     const r = mark(part, { value: typed, unit: part.unit, direction: "upwards" });
     assert.equal(r.code, "wrong", typed);
     assert.doesNotMatch(r.message, /round/i, typed);
@@ -283,9 +368,15 @@ test("the value box alone can hold the unit, in standard form too", () => {
 });
 
 test("a unit in the wrong case says units are case-sensitive and what was meant", () => {
-  const cases = [[mass, "12", "Kg", "kg"], [mass, "12", "KG", "kg"], [speed, "7.5", "M/S", "m/s"],
-    [speed, "7.5", "M S^-1", "m s⁻¹"], [speed, "7.5", "Ms^-1", "m s⁻¹"], [momentum, "15", "n s", "N s"],
-    [momentum, "15", "KG M/S", "kg m/s"]];
+  const cases = [
+    [mass, "12", "Kg", "kg"],
+    [mass, "12", "KG", "kg"],
+    [speed, "7.5", "M/S", "m/s"],
+    [speed, "7.5", "M S^-1", "m s⁻¹"],
+    [speed, "7.5", "Ms^-1", "m s⁻¹"],
+    [momentum, "15", "n s", "N s"],
+    [momentum, "15", "KG M/S", "kg m/s"],
+  ];
   for (const [part, value, unit, meant] of cases) {
     const result = mark(part, { value: value, unit: unit });
     assert.equal(result.code, "unit-case", unit);
@@ -304,10 +395,16 @@ test("a unit in the wrong case says units are case-sensitive and what was meant"
 });
 
 test("a unit in the wrong case loses only the A1", () => {
-  const data = { parts: [Object.assign({ id: "a" }, mass)],
-    marks: [{ part: "a", code: "C1", roles: ["method"] }, { part: "a", code: "A1", roles: ["answer"] }] };
-  const { results, marks } = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static",
-    "marking.js")).markQuestion(data, { a: { value: "12", unit: "Kg" } });
+  const data = {
+    parts: [Object.assign({ id: "a" }, mass)],
+    marks: [
+      { part: "a", code: "C1", roles: ["method"] },
+      { part: "a", code: "A1", roles: ["answer"] },
+    ],
+  };
+  const { results, marks } = require(
+    path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "marking.js"),
+  ).markQuestion(data, { a: { value: "12", unit: "Kg" } });
   assert.equal(results.a.code, "unit-case");
   assert.equal(marks.earned, 1);
   assert.equal(marks.available, 2);

@@ -8,16 +8,42 @@ const { markQuestion } = require(path.join(__dirname, "..", "..", "book", "_ext"
 
 // Quick check 1's shape: (a) momentum = F t; (b) a velocity with a direction, (a) / mass.
 const data = {
-  id: "q", parts: [
-    { id: "a", value: 15, unit: "N s", units: "N s", quantity: "momentum", direction: "none", mistakes: [], revisit: "r" },
-    { id: "b", value: 7.5, unit: "m s^-1", units: "m s^-1", quantity: "velocity", direction: "choice",
-      choices: ["forwards", "backwards"], answerDirection: "forwards", mistakes: [], revisit: "r",
-      ecf: [{ js: "a/mass", args: ["a", "mass"], uses: ["a"], values: { mass: 2 } }] }],
-  marks: [{ part: "a", code: "C1", roles: ["method"] }, { part: "a", code: "A1", roles: ["answer"] },
-    { part: "b", code: "C1", roles: ["method"] }, { part: "b", code: "A1", roles: ["answer"] },
-    { part: "b", code: "B1", roles: ["direction"] }]
+  id: "q",
+  parts: [
+    {
+      id: "a",
+      value: 15,
+      unit: "N s",
+      units: "N s",
+      quantity: "momentum",
+      direction: "none",
+      mistakes: [],
+      revisit: "r",
+    },
+    {
+      id: "b",
+      value: 7.5,
+      unit: "m s^-1",
+      units: "m s^-1",
+      quantity: "velocity",
+      direction: "choice",
+      choices: ["forwards", "backwards"],
+      answerDirection: "forwards",
+      mistakes: [],
+      revisit: "r",
+      ecf: [{ js: "a/mass", args: ["a", "mass"], uses: ["a"], values: { mass: 2 } }],
+    },
+  ],
+  marks: [
+    { part: "a", code: "C1", roles: ["method"] },
+    { part: "a", code: "A1", roles: ["answer"] },
+    { part: "b", code: "C1", roles: ["method"] },
+    { part: "b", code: "A1", roles: ["answer"] },
+    { part: "b", code: "B1", roles: ["direction"] },
+  ],
 };
-const ask = (a, b, dir) => markQuestion(data, { a: { value: a, unit: "N s" }, b: { value: b, unit: "m/s", direction: dir } });
+const ask = (a, b, dir) =>
+  markQuestion(data, { a: { value: a, unit: "N s" }, b: { value: b, unit: "m/s", direction: dir } });
 
 test("right answers earn every mark", () => {
   assert.equal(ask("15", "7.5", "forwards").marks.earned, 5);
@@ -45,9 +71,15 @@ test("an earlier answer right to 2 s.f. is not an error: nothing is carried from
 });
 
 test("a self-marked explanation: an A1 counts only with the M1 before it", () => {
-  const explain = { id: "e", parts: [{ id: "a", kind: "explain" }],
-    marks: [{ part: "a", code: "B1", roles: ["answer"] }, { part: "a", code: "M1", roles: ["method"] },
-      { part: "a", code: "A1", roles: ["answer"], needs: 1 }] };
+  const explain = {
+    id: "e",
+    parts: [{ id: "a", kind: "explain" }],
+    marks: [
+      { part: "a", code: "B1", roles: ["answer"] },
+      { part: "a", code: "M1", roles: ["method"] },
+      { part: "a", code: "A1", roles: ["answer"], needs: 1 },
+    ],
+  };
   const marks = (ticked) => markQuestion(explain, { a: { text: "drag grows", ticked } }).marks.earned;
   assert.equal(marks([0, 2]), 1);
   assert.equal(marks([0, 1, 2]), 3);
@@ -57,13 +89,38 @@ test("a self-marked explanation: an A1 counts only with the M1 before it", () =>
 // A graph question's shape: (a) a reading, right within half a small square (0.25 m/s);
 // (b) worked from it, v²-style so a small difference in the reading shows at 2 s.f.
 const graph = {
-  id: "g", parts: [
-    { id: "a", kind: "graph", value: 20, tolerance: 0.25, unit: "m s^-1", units: "m s^-1", quantity: "velocity",
-      minSf: 1, direction: "none", mistakes: [], revisit: "r" },
-    { id: "b", value: 0.49, unit: "kg m^-1", units: "kg m^-1", quantity: "drag constant", direction: "none",
-      mistakes: [], revisit: "r", ecf: [{ js: "196/Math.pow(a, 2)", args: ["a"], uses: ["a"], values: {} }] }],
-  marks: [{ part: "a", code: "B1", roles: ["answer"] }, { part: "b", code: "C1", roles: ["method"] },
-    { part: "b", code: "A1", roles: ["answer"] }]
+  id: "g",
+  parts: [
+    {
+      id: "a",
+      kind: "graph",
+      value: 20,
+      tolerance: 0.25,
+      unit: "m s^-1",
+      units: "m s^-1",
+      quantity: "velocity",
+      minSf: 1,
+      direction: "none",
+      mistakes: [],
+      revisit: "r",
+    },
+    {
+      id: "b",
+      value: 0.49,
+      unit: "kg m^-1",
+      units: "kg m^-1",
+      quantity: "drag constant",
+      direction: "none",
+      mistakes: [],
+      revisit: "r",
+      ecf: [{ js: "196/Math.pow(a, 2)", args: ["a"], uses: ["a"], values: {} }],
+    },
+  ],
+  marks: [
+    { part: "a", code: "B1", roles: ["answer"] },
+    { part: "b", code: "C1", roles: ["method"] },
+    { part: "b", code: "A1", roles: ["answer"] },
+  ],
 };
 const read = (a, b) => markQuestion(graph, { a: { value: a, unit: "m/s" }, b: { value: b, unit: "kg/m" } });
 

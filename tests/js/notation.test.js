@@ -20,7 +20,9 @@ test("a bad precision or a value that is not a number is an error, not a wrong t
   assert.throws(() => formatNumber(NaN, 2), /finite number/);
 });
 
-const { formatQuantity } = require(path.join(__dirname, "..", "..", "book", "_ext", "notation", "static", "notation.js"));
+const { formatQuantity } = require(
+  path.join(__dirname, "..", "..", "book", "_ext", "notation", "static", "notation.js"),
+);
 const { quantities } = require(path.join(__dirname, "..", "notation_cases.json"));
 
 for (const c of quantities) {

@@ -4,7 +4,8 @@ const test = require("node:test");
 const assert = require("node:assert/strict");
 const path = require("node:path");
 const { slug, readCards, withMark } = require(
-  path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "selftest.js"));
+  path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "selftest.js"),
+);
 
 test("a term's key is its name in lower case with hyphens", () => {
   assert.equal(slug("Newton’s first law"), "newton-s-first-law");
@@ -12,8 +13,9 @@ test("a term's key is its name in lower case with hyphens", () => {
 });
 
 test("a mark is kept beside the attempts, as a versioned field of the progress store", () => {
-  const attempts = [{ question: "quick-check-1", type: "force-momentum", variant: 0, earned: 4, available: 4,
-    at: 1, mistakes: [] }];
+  const attempts = [
+    { question: "quick-check-1", type: "force-momentum", variant: 0, earned: 4, available: 4, at: 1, mistakes: [] },
+  ];
   const text = withMark(JSON.stringify({ version: 1, attempts: attempts }), "mass", "known", 5);
   const stored = JSON.parse(text);
   assert.deepEqual(stored.attempts, attempts); // the practice is untouched
@@ -27,8 +29,13 @@ test("a mark is kept beside the attempts, as a versioned field of the progress s
 
 test("a store of another format is never written into", () => {
   assert.equal(withMark(JSON.stringify({ version: 2, attempts: [] }), "mass", "known", 1), null);
-  assert.equal(withMark(JSON.stringify({ version: 1, attempts: [], definitions: { version: 2, cards: {} } }),
-    "mass", "known", 1), null);
+  assert.equal(
+    withMark(JSON.stringify({ version: 1, attempts: [], definitions: { version: 2, cards: {} } }), "mass", "known", 1),
+    null,
+  );
   assert.equal(withMark("not json", "mass", "known", 1), null);
-  assert.deepEqual(readCards(JSON.stringify({ version: 1, attempts: [], definitions: { version: 2, cards: { mass: {} } } })), {});
+  assert.deepEqual(
+    readCards(JSON.stringify({ version: 1, attempts: [], definitions: { version: 2, cards: { mass: {} } } })),
+    {},
+  );
 });

@@ -5,7 +5,9 @@
 // compound calls below that evaluate a model object at many points.
 "use strict";
 const path = require("path");
-const models = require(path.join(__dirname, "..", "..", "book", "_ext", "explorables", "static", "explorables", "models.js"));
+const models = require(
+  path.join(__dirname, "..", "..", "book", "_ext", "explorables", "static", "explorables", "models.js"),
+);
 
 function run(c) {
   if (c.call === "skydive") {

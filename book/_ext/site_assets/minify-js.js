@@ -14,10 +14,16 @@ async function main() {
   for (const script of scripts) {
     const file = path.join(site, script);
     const result = await minify(fs.readFileSync(file, "utf8"), {
-      ecma: 2020, compress: { passes: 2 }, mangle: true, format: { comments: false },
+      ecma: 2020,
+      compress: { passes: 2 },
+      mangle: true,
+      format: { comments: false },
     });
     fs.writeFileSync(file, result.code + "\n");
   }
 }
 
-main().catch((error) => { console.error(String(error && error.stack || error)); process.exit(1); });
+main().catch((error) => {
+  console.error(String((error && error.stack) || error));
+  process.exit(1);
+});

@@ -48,7 +48,11 @@ async function main() {
   for (const bundle of bundles) {
     const file = path.join(site, bundle);
     const [result] = await new PurgeCSS().purge({
-      content, css: [file], safelist: SAFELIST, fontFace: false, keyframes: false,
+      content,
+      css: [file],
+      safelist: SAFELIST,
+      fontFace: false,
+      keyframes: false,
       // custom properties no kept rule reads (var()): most of the theme's and Bootstrap's
       variables: true,
     });
@@ -57,4 +61,7 @@ async function main() {
   }
 }
 
-main().catch((error) => { console.error(String(error && error.stack || error)); process.exit(1); });
+main().catch((error) => {
+  console.error(String((error && error.stack) || error));
+  process.exit(1);
+});

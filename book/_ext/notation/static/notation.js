@@ -5,16 +5,32 @@
  * repr and JavaScript's String both give it): 0.125 -> 0.13, 2.85 -> 2.9. */
 (function (root) {
   "use strict";
-  var MINUS = "\u2212", GROUP = "\u202f", TIMES = "\u00d7";
-  var SUPERSCRIPTS = { "-": "\u207b", 0: "\u2070", 1: "\u00b9", 2: "\u00b2", 3: "\u00b3", 4: "\u2074",
-    5: "\u2075", 6: "\u2076", 7: "\u2077", 8: "\u2078", 9: "\u2079" };
+  var MINUS = "\u2212",
+    GROUP = "\u202f",
+    TIMES = "\u00d7";
+  var SUPERSCRIPTS = {
+    "-": "\u207b",
+    0: "\u2070",
+    1: "\u00b9",
+    2: "\u00b2",
+    3: "\u00b3",
+    4: "\u2074",
+    5: "\u2075",
+    6: "\u2076",
+    7: "\u2077",
+    8: "\u2078",
+    9: "\u2079",
+  };
 
-  function zeros(n) { return n > 0 ? new Array(n + 1).join("0") : ""; }
+  function zeros(n) {
+    return n > 0 ? new Array(n + 1).join("0") : "";
+  }
 
   /* |x| as {digits, point}: x = 0.digits × 10^point, first digit not 0 (null for 0). */
   function decimalDigits(size) {
     var m = /^(\d+)(?:\.(\d+))?(?:e([+-]\d+))?$/.exec(String(size));
-    var digits = m[1] + (m[2] || ""), point = m[1].length + (m[3] ? parseInt(m[3], 10) : 0);
+    var digits = m[1] + (m[2] || ""),
+      point = m[1].length + (m[3] ? parseInt(m[3], 10) : 0);
     var lead = /^0*/.exec(digits)[0].length;
     digits = digits.slice(lead).replace(/0+$/, "");
     return digits ? { digits: digits, point: point - lead } : null;
@@ -25,12 +41,20 @@
     if (keep < 0 || (keep === 0 && d.digits[0] < "5")) return null;
     if (keep === 0) return { digits: "1", point: d.point + 1 }; // 0.06 to 1 place -> 0.1
     if (d.digits.length <= keep) return { digits: d.digits + zeros(keep - d.digits.length), point: d.point };
-    var kept = d.digits.slice(0, keep), point = d.point;
+    var kept = d.digits.slice(0, keep),
+      point = d.point;
     if (d.digits[keep] >= "5") {
-      var out = kept.split(""), i = out.length - 1;
-      while (i >= 0 && out[i] === "9") { out[i] = "0"; i -= 1; }
+      var out = kept.split(""),
+        i = out.length - 1;
+      while (i >= 0 && out[i] === "9") {
+        out[i] = "0";
+        i -= 1;
+      }
       if (i >= 0) out[i] = String(Number(out[i]) + 1);
-      else { out.unshift("1"); point += 1; }
+      else {
+        out.unshift("1");
+        point += 1;
+      }
       kept = out.join("");
       if (kept.length > keep) kept = kept.slice(0, keep); // 9.99 -> 10.0: one more place before the point
     }
@@ -53,11 +77,17 @@
     var d = decimalDigits(Math.abs(x));
     var rounded = d && roundDigits(d, decimals === undefined ? sigFigs : d.point + decimals);
     var body;
-    if (!rounded) { // an exact zero is 0 at any s.f.; a value rounded to zero keeps its places
+    if (!rounded) {
+      // an exact zero is 0 at any s.f.; a value rounded to zero keeps its places
       var places = decimals !== undefined ? decimals : d ? sigFigs - 1 : 0;
       body = places > 0 ? "0." + zeros(places) : "0";
     } else if (rounded.point >= 6 || rounded.point <= -3) {
-      var exponent = String(rounded.point - 1).split("").map(function (c) { return SUPERSCRIPTS[c]; }).join("");
+      var exponent = String(rounded.point - 1)
+        .split("")
+        .map(function (c) {
+          return SUPERSCRIPTS[c];
+        })
+        .join("");
       var mantissa = rounded.digits[0] + (rounded.digits.length > 1 ? "." + rounded.digits.slice(1) : "");
       body = mantissa + " " + TIMES + " 10" + exponent;
     } else if (rounded.point <= 0) {
@@ -73,12 +103,18 @@
 
   /* A number is joined to its unit, and a unit's symbols to each other, by a no-break space
    * (U+00A0), so "50 m s⁻¹" never breaks across lines (CLARIFICATIONS, Reading). */
-  var UNIT_SPACE = "\u00a0", UNSPACED = { "\u00b0": true, "%": true, "": true };
+  var UNIT_SPACE = "\u00a0",
+    UNSPACED = { "\u00b0": true, "%": true, "": true };
 
   /** A unit as text, symbols joined and powers raised: unitText("m s^-1") -> "m\u00a0s⁻¹". */
   function unitText(unit) {
     var raised = String(unit).replace(/\^(-?\d+)/g, function (m, power) {
-      return power.split("").map(function (c) { return SUPERSCRIPTS[c]; }).join("");
+      return power
+        .split("")
+        .map(function (c) {
+          return SUPERSCRIPTS[c];
+        })
+        .join("");
     });
     return raised.split(/\s+/).filter(Boolean).join(UNIT_SPACE);
   }
@@ -91,16 +127,43 @@
   }
 
   /* Prose: the twin of join_units in physics_figures/notation.py (the same unit symbols). */
-  var SYMBOLS = ["kg", "g", "m", "km", "cm", "mm", "s", "ms", "h", "min", "N", "kN", "J", "kJ", "W", "kW",
-    "Pa", "kPa", "K", "mol", "rad", "Hz"].sort(function (a, b) { return b.length - a.length; });
+  var SYMBOLS = [
+    "kg",
+    "g",
+    "m",
+    "km",
+    "cm",
+    "mm",
+    "s",
+    "ms",
+    "h",
+    "min",
+    "N",
+    "kN",
+    "J",
+    "kJ",
+    "W",
+    "kW",
+    "Pa",
+    "kPa",
+    "K",
+    "mol",
+    "rad",
+    "Hz",
+  ].sort(function (a, b) {
+    return b.length - a.length;
+  });
   var SYMBOL = "(?:" + SYMBOLS.join("|") + ")(?:\u207b?[\u2070\u00b9\u00b2\u00b3\u2074-\u2079]+)?(?![A-Za-z0-9])";
   var UNITS = SYMBOL + "(?:(?:[ \\t\\n\u00a0\u202f]+|/)" + SYMBOL + ")*";
-  var NUMBER = "(?<![\\w.])\u2212?(?:\\d{1,3}(?:[ \u202f]\\d{3})+(?![\\d.])|\\d+(?:\\.\\d+)?)" +
+  var NUMBER =
+    "(?<![\\w.])\u2212?(?:\\d{1,3}(?:[ \u202f]\\d{3})+(?![\\d.])|\\d+(?:\\.\\d+)?)" +
     "(?:[ \u00a0\u202f]?\u00d7[ \u00a0\u202f]?10\u207b?[\u2070\u00b9\u00b2\u00b3\u2074-\u2079]+)?";
   var VALUE_WITH_UNIT = new RegExp("(" + NUMBER + ")([ \\t\\n\u00a0]+)(" + UNITS + ")", "g");
   var LEADING_UNIT = new RegExp("^([ \\t\\n]*)(" + UNITS + ")");
 
-  function joinRun(units) { return units.replace(/[ \t\n]+/g, UNIT_SPACE); }
+  function joinRun(units) {
+    return units.replace(/[ \t\n]+/g, UNIT_SPACE);
+  }
 
   /** Prose with every number joined to its unit by no-break spaces: "at 50 m s⁻¹" ->
    *  "at 50\u00a0m\u00a0s⁻¹". afterNumber: a unit at the very start follows a number. */
@@ -108,12 +171,22 @@
     text = String(text).replace(VALUE_WITH_UNIT, function (m, number, space, units) {
       return number.replace(/(\d) (?=\d{3})/g, "$1" + GROUP).replace(/ /g, UNIT_SPACE) + UNIT_SPACE + joinRun(units);
     });
-    if (afterNumber) text = text.replace(LEADING_UNIT, function (m, space, units) { return (space ? UNIT_SPACE : "") + joinRun(units); });
+    if (afterNumber)
+      text = text.replace(LEADING_UNIT, function (m, space, units) {
+        return (space ? UNIT_SPACE : "") + joinRun(units);
+      });
     return text;
   }
 
-  var api = { formatNumber: formatNumber, formatQuantity: formatQuantity, unitText: unitText, joinUnits: joinUnits,
-    MINUS: MINUS, GROUP: GROUP, UNIT_SPACE: UNIT_SPACE };
+  var api = {
+    formatNumber: formatNumber,
+    formatQuantity: formatQuantity,
+    unitText: unitText,
+    joinUnits: joinUnits,
+    MINUS: MINUS,
+    GROUP: GROUP,
+    UNIT_SPACE: UNIT_SPACE,
+  };
   if (typeof module === "object" && module.exports) module.exports = api;
   else root.Notation = api;
 })(this);

@@ -9,7 +9,9 @@
   var ready = new Promise(function (resolve) {
     var script = document.createElement("script");
     script.src = root + "_static/search-texts.js";
-    script.onload = script.onerror = function () { resolve(window.SearchTexts || {}); };
+    script.onload = script.onerror = function () {
+      resolve(window.SearchTexts || {});
+    };
     document.head.appendChild(script);
   });
   var fetchFromNetwork = window.fetch;

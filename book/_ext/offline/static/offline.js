@@ -33,8 +33,12 @@
 
   // After the page has loaded: the book's files then download behind it, not before it.
   function register() {
-    navigator.serviceWorker.register(root + "sw.js").then(watch)
-      .catch(function () { /* no service worker: the site works online as before */ });
+    navigator.serviceWorker
+      .register(root + "sw.js")
+      .then(watch)
+      .catch(function () {
+        /* no service worker: the site works online as before */
+      });
   }
   if (document.readyState === "complete") register();
   else window.addEventListener("load", register);
@@ -48,6 +52,8 @@
         if (worker.state === "installed" && navigator.serviceWorker.controller) offer(worker);
       });
     });
-    registration.update().catch(function () { /* offline: the next visit checks again */ });
+    registration.update().catch(function () {
+      /* offline: the next visit checks again */
+    });
   }
 })();

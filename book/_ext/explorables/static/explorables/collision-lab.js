@@ -4,9 +4,12 @@
   "use strict";
   var X = window.Explorables;
   var M = window.ExplorableModels;
-  var el = X.el, svg = X.svg, fmt = X.fmt;
+  var el = X.el,
+    svg = X.svg,
+    fmt = X.fmt;
 
-  var MS = "m s\u207b\u00b9", P = "kg m s\u207b\u00b9";
+  var MS = "m s\u207b\u00b9",
+    P = "kg m s\u207b\u00b9";
   var KINDS = {
     elastic: "Elastic (kinetic energy kept)",
     stick: "Stick together",
@@ -27,7 +30,13 @@
     var radios = el("fieldset", { class: "ex-kinds" }, [el("legend", {}, "Kind of interaction")]);
     data.kinds.forEach(function (name) {
       var id = X.nextId("kind");
-      var input = el("input", { type: "radio", name: id.replace(/-\d+$/, "") + "-" + title.id, id: id, value: name, checked: name === kind });
+      var input = el("input", {
+        type: "radio",
+        name: id.replace(/-\d+$/, "") + "-" + title.id,
+        id: id,
+        value: name,
+        checked: name === kind,
+      });
       input.addEventListener("change", function () {
         if (input.checked) {
           switchMasses(kind === "explosion", name === "explosion");
@@ -39,12 +48,66 @@
     });
 
     var q = {
-      m1: new X.Quantity({ label: "Mass of A", unit: "kg", unitSpoken: "kilograms", min: 0.1, max: 10, step: 0.1, value: data.m1, onChange: update }),
-      u1: new X.Quantity({ label: "Velocity of A before (right +)", unit: MS, unitSpoken: "metres per second", min: -10, max: 10, step: 0.1, value: data.u1, onChange: update }),
-      m2: new X.Quantity({ label: "Mass of B", unit: "kg", unitSpoken: "kilograms", min: 0.1, max: 10, step: 0.1, value: data.m2, onChange: update }),
-      u2: new X.Quantity({ label: "Velocity of B before (right +)", unit: MS, unitSpoken: "metres per second", min: -10, max: 10, step: 0.1, value: data.u2, onChange: update }),
-      lost: new X.Quantity({ label: "Kinetic energy lost", unit: "%", unitSpoken: "per cent", min: -20, max: 100, step: 1, value: 10, onChange: update }),
-      va: new X.Quantity({ label: "Velocity of A after the explosion (right +)", unit: MS, unitSpoken: "metres per second", min: -10, max: 10, step: 0.1, value: data.velocityAAfter, onChange: update }),
+      m1: new X.Quantity({
+        label: "Mass of A",
+        unit: "kg",
+        unitSpoken: "kilograms",
+        min: 0.1,
+        max: 10,
+        step: 0.1,
+        value: data.m1,
+        onChange: update,
+      }),
+      u1: new X.Quantity({
+        label: "Velocity of A before (right +)",
+        unit: MS,
+        unitSpoken: "metres per second",
+        min: -10,
+        max: 10,
+        step: 0.1,
+        value: data.u1,
+        onChange: update,
+      }),
+      m2: new X.Quantity({
+        label: "Mass of B",
+        unit: "kg",
+        unitSpoken: "kilograms",
+        min: 0.1,
+        max: 10,
+        step: 0.1,
+        value: data.m2,
+        onChange: update,
+      }),
+      u2: new X.Quantity({
+        label: "Velocity of B before (right +)",
+        unit: MS,
+        unitSpoken: "metres per second",
+        min: -10,
+        max: 10,
+        step: 0.1,
+        value: data.u2,
+        onChange: update,
+      }),
+      lost: new X.Quantity({
+        label: "Kinetic energy lost",
+        unit: "%",
+        unitSpoken: "per cent",
+        min: -20,
+        max: 100,
+        step: 1,
+        value: 10,
+        onChange: update,
+      }),
+      va: new X.Quantity({
+        label: "Velocity of A after the explosion (right +)",
+        unit: MS,
+        unitSpoken: "metres per second",
+        min: -10,
+        max: 10,
+        step: 0.1,
+        value: data.velocityAAfter,
+        onChange: update,
+      }),
     };
 
     // An explosion starts on the notes' spring trolleys (0.20 kg and 0.30 kg); going back to a
@@ -52,7 +115,8 @@
     var masses = { explosion: [data.explosionM1, data.explosionM2], collision: null };
     function switchMasses(wasExplosion, isExplosion) {
       if (wasExplosion === isExplosion) return;
-      var leaving = [q.m1.value, q.m2.value], coming = isExplosion ? masses.explosion : masses.collision;
+      var leaving = [q.m1.value, q.m2.value],
+        coming = isExplosion ? masses.explosion : masses.collision;
       masses[isExplosion ? "collision" : "explosion"] = leaving;
       if (!coming) return;
       q.m1.value = coming[0];
@@ -62,8 +126,12 @@
     }
 
     var rows = [
-      ["pa", "Momentum of A", P], ["pb", "Momentum of B", P], ["p", "Total momentum", P],
-      ["ea", "Kinetic energy of A", "J"], ["eb", "Kinetic energy of B", "J"], ["e", "Total kinetic energy", "J"],
+      ["pa", "Momentum of A", P],
+      ["pb", "Momentum of B", P],
+      ["p", "Total momentum", P],
+      ["ea", "Kinetic energy of A", "J"],
+      ["eb", "Kinetic energy of B", "J"],
+      ["e", "Total kinetic energy", "J"],
       ["rel", "Relative speed (approach / separation)", MS],
     ];
     var out = {};
@@ -72,11 +140,25 @@
       var before = el("output", { "aria-live": "off", name: row[0] + "-before" });
       var after = el("output", { "aria-live": "off", name: row[0] + "-after" });
       out[row[0]] = [before, after];
-      tbody.appendChild(el("tr", {}, [el("th", { scope: "row" }, [row[1], el("span", { class: "ex-unit" }, " / " + row[2])]), el("td", {}, before), el("td", {}, after)]));
+      tbody.appendChild(
+        el("tr", {}, [
+          el("th", { scope: "row" }, [row[1], el("span", { class: "ex-unit" }, " / " + row[2])]),
+          el("td", {}, before),
+          el("td", {}, after),
+        ]),
+      );
     });
     var table = el("table", { class: "ex-table" }, [
       el("caption", { class: "ex-sr" }, "Momentum, kinetic energy and relative speed before and after"),
-      el("thead", {}, el("tr", {}, [el("th", { scope: "col" }, "Quantity"), el("th", { scope: "col" }, "Before"), el("th", { scope: "col" }, "After")])),
+      el(
+        "thead",
+        {},
+        el("tr", {}, [
+          el("th", { scope: "col" }, "Quantity"),
+          el("th", { scope: "col" }, "Before"),
+          el("th", { scope: "col" }, "After"),
+        ]),
+      ),
       tbody,
     ]);
     var percent = new X.Readout("Kinetic energy lost", "%", { decimals: 1 });
@@ -84,22 +166,40 @@
     X.nameReadouts({ percent: percent, most: most });
     // not a live region: the description below repeats the verdict, and is the one that is read
     var verdict = el("p", { class: "ex-verdict" });
-    var SW = X.widthFor(root), MID = SW / 2, LONGEST = Math.min(110, SW * 0.17);
-    var scene = svg("svg", { viewBox: "0 0 " + SW + " 200", class: "ex-plot ex-scene", role: "img", "aria-label": "The two bodies before and after, with their velocities" });
+    var SW = X.widthFor(root),
+      MID = SW / 2,
+      LONGEST = Math.min(110, SW * 0.17);
+    var scene = svg("svg", {
+      viewBox: "0 0 " + SW + " 200",
+      class: "ex-plot ex-scene",
+      role: "img",
+      "aria-label": "The two bodies before and after, with their velocities",
+    });
     var description = new X.Description();
 
     root.appendChild(
       el("section", { class: "ex-panel", "aria-labelledby": title.id }, [
         title,
-        el("p", { class: "ex-hint" }, "A starts on the left of B. Velocities are positive to the right. Type a value or use the sliders."),
+        el(
+          "p",
+          { class: "ex-hint" },
+          "A starts on the left of B. Velocities are positive to the right. Type a value or use the sliders.",
+        ),
         radios,
-        el("div", { class: "ex-controls" }, [q.m1.element, q.u1.element, q.m2.element, q.u2.element, q.lost.element, q.va.element]),
+        el("div", { class: "ex-controls" }, [
+          q.m1.element,
+          q.u1.element,
+          q.m2.element,
+          q.u2.element,
+          q.lost.element,
+          q.va.element,
+        ]),
         verdict,
         scene,
         table,
         el("div", { class: "ex-readouts" }, [percent.element, most.element]),
         description.element,
-      ])
+      ]),
     );
 
     function setPair(name, before, after, sf) {
@@ -116,9 +216,19 @@
       q.u2.element.hidden = explosion;
       q.va.element.hidden = !explosion;
       q.lost.element.hidden = kind !== "loss";
-      var m1 = q.m1.value, m2 = q.m2.value;
-      var lab = M.collisionLab({ kind: kind, m1: m1, u1: q.u1.value, m2: m2, u2: q.u2.value, velocityAAfter: q.va.value, percentLost: q.lost.value });
-      var a = lab.after || [null, null], b = lab.before;
+      var m1 = q.m1.value,
+        m2 = q.m2.value;
+      var lab = M.collisionLab({
+        kind: kind,
+        m1: m1,
+        u1: q.u1.value,
+        m2: m2,
+        u2: q.u2.value,
+        velocityAAfter: q.va.value,
+        percentLost: q.lost.value,
+      });
+      var a = lab.after || [null, null],
+        b = lab.before;
       setPair("pa", m1 * b[0], a[0] === null ? null : m1 * a[0]);
       setPair("pb", m2 * b[1], a[1] === null ? null : m2 * a[1]);
       setPair("p", lab.momentumBefore, lab.momentumAfter);
@@ -139,21 +249,58 @@
         text = "Refused. " + verdict.textContent;
       } else {
         verdict.className = "ex-verdict";
-        var e0 = lab.kineticEnergyBefore, e1 = lab.kineticEnergyAfter;
+        var e0 = lab.kineticEnergyBefore,
+          e1 = lab.kineticEnergyAfter;
         var energy = explosion
-          ? "Kinetic energy rises from 0 to " + fmt(e1) + " J, supplied by the energy stored in the spring or explosive."
+          ? "Kinetic energy rises from 0 to " +
+            fmt(e1) +
+            " J, supplied by the energy stored in the spring or explosive."
           : Math.abs(lab.percentLost) < 1e-9
-            ? "Kinetic energy is kept (" + fmt(e0) + " J before and after), so the collision is elastic: the relative speed of separation equals that of approach, " + fmt(lab.approachSpeed) + " " + MS + "."
-            : "Kinetic energy falls from " + fmt(e0) + " J to " + fmt(e1) + " J (" + fmt(lab.percentLost, { decimals: 1 }) + "% transferred to other forms), so the collision is inelastic: the bodies separate at " + fmt(lab.separationSpeed) + " " + MS + ", slower than they approached at " + fmt(lab.approachSpeed) + " " + MS + ".";
-        verdict.textContent = X.joinUnits("Momentum is conserved: " + fmt(lab.momentumBefore) + " " + P + " before and after. " + energy);
-        text = "After: A moves at " + fmt(a[0]) + " " + MS + " and B at " + fmt(a[1]) + " " + MS + " (positive to the right). " + verdict.textContent;
+            ? "Kinetic energy is kept (" +
+              fmt(e0) +
+              " J before and after), so the collision is elastic: the relative speed of separation equals that of approach, " +
+              fmt(lab.approachSpeed) +
+              " " +
+              MS +
+              "."
+            : "Kinetic energy falls from " +
+              fmt(e0) +
+              " J to " +
+              fmt(e1) +
+              " J (" +
+              fmt(lab.percentLost, { decimals: 1 }) +
+              "% transferred to other forms), so the collision is inelastic: the bodies separate at " +
+              fmt(lab.separationSpeed) +
+              " " +
+              MS +
+              ", slower than they approached at " +
+              fmt(lab.approachSpeed) +
+              " " +
+              MS +
+              ".";
+        verdict.textContent = X.joinUnits(
+          "Momentum is conserved: " + fmt(lab.momentumBefore) + " " + P + " before and after. " + energy,
+        );
+        text =
+          "After: A moves at " +
+          fmt(a[0]) +
+          " " +
+          MS +
+          " and B at " +
+          fmt(a[1]) +
+          " " +
+          MS +
+          " (positive to the right). " +
+          verdict.textContent;
       }
       description.set(text);
     }
 
     function drawScene(lab, m1, m2) {
       X.clear(scene);
-      var widths = [m1, m2].map(function (m) { return 26 + 34 * Math.sqrt(m / 10); });
+      var widths = [m1, m2].map(function (m) {
+        return 26 + 34 * Math.sqrt(m / 10);
+      });
       scene.appendChild(svg("text", { class: "ex-scene-label", x: 6, y: 22 }, "Before"));
       scene.appendChild(svg("text", { class: "ex-scene-label", x: 6, y: 122 }, "After"));
       [0, 100].forEach(function (y0) {
@@ -161,30 +308,62 @@
       });
       var gap = lab.kind === "explosion" ? 0 : Math.min(120, SW * 0.2);
       drawRow(20, lab.before, widths, gap, lab.kind === "explosion" ? "at rest, pushed apart by a spring" : null);
-      if (lab.after) drawRow(120, lab.after, widths, lab.kind === "stick" ? 0 : Math.min(120, SW * 0.2) + (lab.kind === "explosion" ? 40 : 0));
-      else scene.appendChild(svg("text", { class: "ex-scene-label ex-refused-text", x: MID, y: 160, "text-anchor": "middle" }, "Not possible (see the message above)"));
+      if (lab.after)
+        drawRow(
+          120,
+          lab.after,
+          widths,
+          lab.kind === "stick" ? 0 : Math.min(120, SW * 0.2) + (lab.kind === "explosion" ? 40 : 0),
+        );
+      else
+        scene.appendChild(
+          svg(
+            "text",
+            { class: "ex-scene-label ex-refused-text", x: MID, y: 160, "text-anchor": "middle" },
+            "Not possible (see the message above)",
+          ),
+        );
     }
 
     // one row of the scene: the blocks, with an arrow and a label for each velocity
     function drawRow(y0, velocities, widths, gap, note) {
-      var left = MID - gap / 2 - widths[0], right = MID + gap / 2;
+      var left = MID - gap / 2 - widths[0],
+        right = MID + gap / 2;
       var together = gap === 0;
-      [[left, widths[0], "A", "ex-a"], [right, widths[1], "B", "ex-b"]].forEach(function (blk, i) {
+      [
+        [left, widths[0], "A", "ex-a"],
+        [right, widths[1], "B", "ex-b"],
+      ].forEach(function (blk, i) {
         var h = 22 + widths[i] * 0.35;
-        scene.appendChild(svg("rect", { class: "ex-block " + blk[3], x: blk[0], y: y0 + 58 - h, width: blk[1], height: h, rx: 3 }));
-        scene.appendChild(svg("text", { class: "ex-block-label", x: blk[0] + blk[1] / 2, y: y0 + 63 - h / 2, "text-anchor": "middle" }, blk[2]));
+        scene.appendChild(
+          svg("rect", { class: "ex-block " + blk[3], x: blk[0], y: y0 + 58 - h, width: blk[1], height: h, rx: 3 }),
+        );
+        scene.appendChild(
+          svg(
+            "text",
+            { class: "ex-block-label", x: blk[0] + blk[1] / 2, y: y0 + 63 - h / 2, "text-anchor": "middle" },
+            blk[2],
+          ),
+        );
         if (!together) velocityArrow(blk[0] + blk[1] / 2, y0 + 10, velocities[i], blk[3]);
       });
       if (together) {
-        if (note) scene.appendChild(svg("text", { class: "ex-arrow-label", x: MID, y: y0 + 4, "text-anchor": "middle" }, note));
+        if (note)
+          scene.appendChild(svg("text", { class: "ex-arrow-label", x: MID, y: y0 + 4, "text-anchor": "middle" }, note));
         else velocityArrow(MID, y0 + 10, velocities[0], "ex-ink", " together");
       }
     }
 
     function velocityArrow(x, y, v, className, extra) {
-      var len = Math.min(LONGEST, Math.abs(v) * LONGEST / 10);
+      var len = Math.min(LONGEST, (Math.abs(v) * LONGEST) / 10);
       if (Math.abs(v) > 1e-9) scene.appendChild(X.arrow(x, y, x + (v > 0 ? len : -len), y, className, 9));
-      scene.appendChild(svg("text", { class: "ex-arrow-label", x: x, y: y - 6, "text-anchor": "middle" }, Math.abs(v) > 1e-9 ? fmt(v) + " " + MS + (extra || "") : "at rest"));
+      scene.appendChild(
+        svg(
+          "text",
+          { class: "ex-arrow-label", x: x, y: y - 6, "text-anchor": "middle" },
+          Math.abs(v) > 1e-9 ? fmt(v) + " " + MS + (extra || "") : "at rest",
+        ),
+      );
     }
 
     update();

@@ -83,8 +83,12 @@
       var k = k1 + (k2 - k1) * f * f;
       return g - (k * v * v) / m;
     }
-    var v = v0, x = 0;
-    var velocity = [v], distance = [x], time = [0], acceleration = [];
+    var v = v0,
+      x = 0;
+    var velocity = [v],
+      distance = [x],
+      time = [0],
+      acceleration = [];
     for (var i = 0; i < steps; i++) {
       var s = i * h;
       var a1 = rate(s, v);
@@ -140,9 +144,16 @@
       if (s >= tau) return vt2 / Math.tanh((g * (s - tau)) / vt2 + c);
       // Hermite interpolation between the steps, from v and dv/dt at both ends
       var i = Math.min(OPENING_STEPS - 1, Math.max(0, Math.floor(Math.max(s, 0) / h)));
-      var th = (s - i * h) / h, om = 1 - th;
-      var v = opening.velocity, a = opening.acceleration;
-      return (1 + 2 * th) * om * om * v[i] + th * om * om * h * a[i] + th * th * (3 - 2 * th) * v[i + 1] + th * th * (th - 1) * h * a[i + 1];
+      var th = (s - i * h) / h,
+        om = 1 - th;
+      var v = opening.velocity,
+        a = opening.acceleration;
+      return (
+        (1 + 2 * th) * om * om * v[i] +
+        th * om * om * h * a[i] +
+        th * th * (3 - 2 * th) * v[i + 1] +
+        th * th * (th - 1) * h * a[i + 1]
+      );
     }
     function dragAt(t) {
       var v = velocityAt(t);
@@ -163,7 +174,8 @@
     var tE = null;
     for (var e = 0; e <= OPENING_STEPS; e++) {
       if (opening.velocity[e] <= vE) {
-        var va = opening.velocity[e - 1], vb = opening.velocity[e];
+        var va = opening.velocity[e - 1],
+          vb = opening.velocity[e];
         tE = tOpen + opening.timeSinceOpening[e - 1] + ((va - vE) / (va - vb)) * h;
         break;
       }
@@ -171,13 +183,15 @@
     if (tE === null) tE = tOpen + tau + timeToSlowToTerminal(vFull, vt2, g);
 
     var vC = vt1 * (1 - WITHIN_TERMINAL);
-    var tB = (vt1 / g) * Math.atanh(0.5), tC = timeToTerminalVelocity(vt1, g);
+    var tB = (vt1 / g) * Math.atanh(0.5),
+      tC = timeToTerminalVelocity(vt1, g);
     var points = { A: [0, 0] };
     if (tB < tOpen) points.B = [tB, vt1 / 2];
     if (tC <= tOpen) points.C = [tC, vC];
     points.D = [tOpen + opening.timeSinceOpening[peak], opening.velocity[peak]];
     points.E = [tE, vE];
-    var pointDrag = {}, pointAcceleration = {};
+    var pointDrag = {},
+      pointAcceleration = {};
     Object.keys(points).forEach(function (label) {
       var pt = points[label];
       pointDrag[label] = canopyDragConstant(pt[0] - tOpen, k1, k2, tau) * pt[1] * pt[1];
@@ -275,7 +289,8 @@
    * impossible set-up comes back with after = null and refusal naming the broken rule.
    */
   function collisionLab(s) {
-    var m1 = s.m1, m2 = s.m2;
+    var m1 = s.m1,
+      m2 = s.m2;
     var explosion = s.kind === "explosion";
     var u1 = explosion ? 0 : s.u1;
     var u2 = explosion ? 0 : s.u2;
@@ -314,7 +329,8 @@
         var most = result.mostPercentLost;
         if (s.percentLost < 0) return refused("energy-created");
         // a hair of tolerance so that typing the sticking-together figure is allowed
-        if (s.percentLost > most * (1 + 1e-9)) return refused("more-than-sticking", { momentum: result.momentumBefore, most: most });
+        if (s.percentLost > most * (1 + 1e-9))
+          return refused("more-than-sticking", { momentum: result.momentumBefore, most: most });
         // the loss as a fraction of what can be lost (the centre-of-mass kinetic energy)
         var kept = most > 0 ? Math.max(0, 1 - s.percentLost / most) : 1;
         after = collisionWithEnergyKept(m1, u1, m2, u2, kept);

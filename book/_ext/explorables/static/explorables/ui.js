@@ -50,8 +50,10 @@
 
   /* ---- numbers as the notes print them: book/_ext/notation/static/notation.js ---- */
 
-  var formatNumber = window.Notation.formatNumber, MINUS = window.Notation.MINUS;
-  var UNIT_SPACE = window.Notation.UNIT_SPACE, unitText = window.Notation.unitText;
+  var formatNumber = window.Notation.formatNumber,
+    MINUS = window.Notation.MINUS;
+  var UNIT_SPACE = window.Notation.UNIT_SPACE,
+    unitText = window.Notation.unitText;
 
   /** A read-out: x to opts.sf significant figures (3 unless given) or opts.decimals places;
    *  a dash when there is no value. */
@@ -59,7 +61,8 @@
     opts = opts || {};
     if (x === null || x === undefined || !isFinite(x)) return "\u2014";
     if (Math.abs(x) < 1e-9) x = 0; // rounding noise, e.g. 1e-16 for an exact zero
-    return opts.decimals !== undefined ? formatNumber(x, null, { decimals: opts.decimals })
+    return opts.decimals !== undefined
+      ? formatNumber(x, null, { decimals: opts.decimals })
       : formatNumber(x, opts.sf || 3);
   }
 
@@ -77,12 +80,20 @@
     this.unit = opts.unit;
     this.unitSpoken = opts.unitSpoken || opts.unit;
     this.range = el("input", {
-      type: "range", id: id + "-range", min: opts.min, max: opts.max, step: opts.step,
+      type: "range",
+      id: id + "-range",
+      min: opts.min,
+      max: opts.max,
+      step: opts.step,
       "aria-labelledby": id + "-label",
     });
     this.number = el("input", {
-      type: "number", id: id, min: opts.numberMin !== undefined ? opts.numberMin : opts.min,
-      max: opts.numberMax !== undefined ? opts.numberMax : opts.max, step: "any", inputmode: "decimal",
+      type: "number",
+      id: id,
+      min: opts.numberMin !== undefined ? opts.numberMin : opts.min,
+      max: opts.numberMax !== undefined ? opts.numberMax : opts.max,
+      step: "any",
+      inputmode: "decimal",
     });
     var unitLabel = opts.unit ? el("span", { class: "ex-unit", "aria-hidden": "true" }, unitText(opts.unit)) : null;
     // a typed value out of range is not dropped in silence: this says what the box takes
@@ -90,8 +101,14 @@
     this.message.hidden = true;
     this.number.setAttribute("aria-describedby", id + "-message");
     this.element = el("div", { class: "ex-quantity" }, [
-      el("label", { for: id, id: id + "-label" }, [opts.label, opts.unit ? el("span", { class: "ex-sr" }, " in " + this.unitSpoken) : null]),
-      el("div", { class: "ex-quantity-inputs" }, [this.range, el("span", { class: "ex-number" }, [this.number, unitLabel])]),
+      el("label", { for: id, id: id + "-label" }, [
+        opts.label,
+        opts.unit ? el("span", { class: "ex-sr" }, " in " + this.unitSpoken) : null,
+      ]),
+      el("div", { class: "ex-quantity-inputs" }, [
+        this.range,
+        el("span", { class: "ex-number" }, [this.number, unitLabel]),
+      ]),
       this.message,
     ]);
     this.range.addEventListener("input", function () {
@@ -115,7 +132,8 @@
 
   /** Say (or stop saying) that `typed` is outside what this quantity takes. */
   Quantity.prototype.warn = function (typed) {
-    var lo = Number(this.number.min), hi = Number(this.number.max);
+    var lo = Number(this.number.min),
+      hi = Number(this.number.max);
     var unit = this.unit ? (this.unit === "%" || this.unit === "\u00b0" ? "" : UNIT_SPACE) + unitText(this.unit) : "";
     if (typed === null) {
       this.message.hidden = true;
@@ -124,16 +142,24 @@
       return;
     }
     var shown = fmt(this.value);
-    this.message.textContent = (isFinite(Number(typed)) && typed !== ""
-      ? typed + " is out of range: "
-      : "That is not a number: ") + "type a value from " + fmt(lo) + " to " + fmt(hi) + unit +
-      " (still using " + shown + unit + ").";
+    this.message.textContent =
+      (isFinite(Number(typed)) && typed !== "" ? typed + " is out of range: " : "That is not a number: ") +
+      "type a value from " +
+      fmt(lo) +
+      " to " +
+      fmt(hi) +
+      unit +
+      " (still using " +
+      shown +
+      unit +
+      ").";
     this.message.hidden = false;
     this.number.setAttribute("aria-invalid", "true");
   };
 
   Quantity.prototype.set = function (value, from) {
-    var lo = Number(this.number.min), hi = Number(this.number.max);
+    var lo = Number(this.number.min),
+      hi = Number(this.number.max);
     this.value = Math.min(hi, Math.max(lo, value));
     if (from !== this.number) this.warn(null);
     this.show(from);
@@ -171,7 +197,8 @@
     this.output.setAttribute("data-value", value === null ? "" : String(value));
     // the number, its unit and the unit's symbols are joined by no-break spaces (notation.js)
     var text = fmt(value, this.opts).replace(/ /g, UNIT_SPACE);
-    if (value !== null && this.unit) text += (this.unit === "%" || this.unit === "\u00b0" ? "" : UNIT_SPACE) + unitText(this.unit);
+    if (value !== null && this.unit)
+      text += (this.unit === "%" || this.unit === "\u00b0" ? "" : UNIT_SPACE) + unitText(this.unit);
     this.output.textContent = text + (direction ? " " + direction : "");
   };
 
@@ -208,9 +235,16 @@
     if (!(span > 0)) return [lo];
     var raw = span / (count || 5);
     var power = Math.pow(10, Math.floor(Math.log10(raw)));
-    var step = [1, 2, 5, 10].map(function (f) { return f * power; }).filter(function (s) { return s >= raw; })[0];
+    var step = [1, 2, 5, 10]
+      .map(function (f) {
+        return f * power;
+      })
+      .filter(function (s) {
+        return s >= raw;
+      })[0];
     var out = [];
-    for (var v = Math.ceil(lo / step - 1e-9) * step; v <= hi + step * 1e-9; v += step) out.push(Math.abs(v) < step * 1e-9 ? 0 : v);
+    for (var v = Math.ceil(lo / step - 1e-9) * step; v <= hi + step * 1e-9; v += step)
+      out.push(Math.abs(v) < step * 1e-9 ? 0 : v);
     return out;
   }
 
@@ -224,49 +258,80 @@
     var m = opts.margin || [12, 14, 44, 64];
     this.box = { top: m[0], right: this.w - m[1], bottom: this.h - m[2], left: m[3] };
     this.clipId = nextId("clip");
-    this.svg = svg("svg", { viewBox: "0 0 " + this.w + " " + this.h, class: "ex-plot", role: "img", "aria-label": opts.label });
+    this.svg = svg("svg", {
+      viewBox: "0 0 " + this.w + " " + this.h,
+      class: "ex-plot",
+      role: "img",
+      "aria-label": opts.label,
+    });
     var b = this.box;
-    this.svg.appendChild(svg("defs", {}, [
-      svg("clipPath", { id: this.clipId }, [svg("rect", { x: b.left, y: b.top - 1, width: b.right - b.left, height: b.bottom - b.top + 2 })]),
-      arrowMarker(this.clipId + "-arrow"),
-    ]));
+    this.svg.appendChild(
+      svg("defs", {}, [
+        svg("clipPath", { id: this.clipId }, [
+          svg("rect", { x: b.left, y: b.top - 1, width: b.right - b.left, height: b.bottom - b.top + 2 }),
+        ]),
+        arrowMarker(this.clipId + "-arrow"),
+      ]),
+    );
     this.arrowId = this.clipId + "-arrow";
     this.grid = this.svg.appendChild(svg("g", { class: "ex-grid" }));
     this.data = this.svg.appendChild(svg("g", { "clip-path": "url(#" + this.clipId + ")" }));
     this.marks = this.svg.appendChild(svg("g"));
-    this.svg.appendChild(svg("text", { class: "ex-axis-label", x: (b.left + b.right) / 2, y: this.h - 6, "text-anchor": "middle" }, opts.xLabel));
-    this.svg.appendChild(svg("text", {
-      class: "ex-axis-label", x: 0, y: 0, "text-anchor": "middle",
-      transform: "translate(14 " + (b.top + b.bottom) / 2 + ") rotate(-90)",
-    }, opts.yLabel));
+    this.svg.appendChild(
+      svg(
+        "text",
+        { class: "ex-axis-label", x: (b.left + b.right) / 2, y: this.h - 6, "text-anchor": "middle" },
+        opts.xLabel,
+      ),
+    );
+    this.svg.appendChild(
+      svg(
+        "text",
+        {
+          class: "ex-axis-label",
+          x: 0,
+          y: 0,
+          "text-anchor": "middle",
+          transform: "translate(14 " + (b.top + b.bottom) / 2 + ") rotate(-90)",
+        },
+        opts.yLabel,
+      ),
+    );
   }
 
   Plot.prototype.setDomain = function (x0, x1, y0, y1, opts) {
     opts = opts || {};
     this.dom = [x0, x1, y0, y1];
-    var b = this.box, g = this.grid;
+    var b = this.box,
+      g = this.grid;
     while (g.firstChild) g.removeChild(g.firstChild);
     var self = this;
     ticks(x0, x1, opts.xTicks || 6).forEach(function (t, i, all) {
       var x = self.x(t);
       g.appendChild(svg("line", { x1: x, x2: x, y1: b.top, y2: b.bottom }));
-      g.appendChild(svg("text", { class: "ex-tick", x: x, y: b.bottom + 16, "text-anchor": "middle" }, tickText(t, all)));
+      g.appendChild(
+        svg("text", { class: "ex-tick", x: x, y: b.bottom + 16, "text-anchor": "middle" }, tickText(t, all)),
+      );
     });
     ticks(y0, y1, opts.yTicks || 5).forEach(function (v, i, all) {
       var y = self.y(v);
       g.appendChild(svg("line", { x1: b.left, x2: b.right, y1: y, y2: y, class: v === 0 ? "ex-zero" : null }));
       g.appendChild(svg("text", { class: "ex-tick", x: b.left - 6, y: y + 4, "text-anchor": "end" }, tickText(v, all)));
     });
-    g.appendChild(svg("rect", { class: "ex-frame", x: b.left, y: b.top, width: b.right - b.left, height: b.bottom - b.top }));
+    g.appendChild(
+      svg("rect", { class: "ex-frame", x: b.left, y: b.top, width: b.right - b.left, height: b.bottom - b.top }),
+    );
   };
 
   Plot.prototype.x = function (t) {
-    var d = this.dom, b = this.box;
+    var d = this.dom,
+      b = this.box;
     return b.left + ((t - d[0]) / (d[1] - d[0])) * (b.right - b.left);
   };
 
   Plot.prototype.y = function (v) {
-    var d = this.dom, b = this.box;
+    var d = this.dom,
+      b = this.box;
     return b.bottom - ((v - d[2]) / (d[3] - d[2])) * (b.bottom - b.top);
   };
 
@@ -274,10 +339,16 @@
    *  `pad` units: never on a tick label (they sit outside the frame) nor on the frame. */
   Plot.prototype.keepInside = function (text, pad) {
     pad = pad === undefined ? 4 : pad;
-    var b = this.box, box;
-    try { box = text.getBBox(); } catch (error) { return text; } // not rendered (hidden): left as it is
+    var b = this.box,
+      box;
+    try {
+      box = text.getBBox();
+    } catch {
+      return text; // not rendered (hidden): left as it is
+    }
     if (!box.width && !box.height) return text;
-    var dx = 0, dy = 0;
+    var dx = 0,
+      dy = 0;
     if (box.x < b.left + pad) dx = b.left + pad - box.x;
     else if (box.x + box.width > b.right - pad) dx = b.right - pad - (box.x + box.width);
     if (box.y < b.top + pad) dy = b.top + pad - box.y;
@@ -290,9 +361,11 @@
   /** SVG path through (xs[i], ys[i]). */
   Plot.prototype.path = function (xs, ys) {
     var self = this;
-    return xs.map(function (t, i) {
-      return (i ? "L" : "M") + self.x(t).toFixed(2) + " " + self.y(ys[i]).toFixed(2);
-    }).join("");
+    return xs
+      .map(function (t, i) {
+        return (i ? "L" : "M") + self.x(t).toFixed(2) + " " + self.y(ys[i]).toFixed(2);
+      })
+      .join("");
   };
 
   /** Call onScrub(x in data units) while a pointer moves over (or drags on) the plot. */
@@ -302,7 +375,8 @@
       if (event.pointerType !== "mouse" && event.type === "pointermove" && !event.buttons) return;
       var rect = self.svg.getBoundingClientRect();
       var px = ((event.clientX - rect.left) / rect.width) * self.w;
-      var d = self.dom, b = self.box;
+      var d = self.dom,
+        b = self.box;
       var t = d[0] + ((px - b.left) / (b.right - b.left)) * (d[1] - d[0]);
       onScrub(Math.min(d[1], Math.max(d[0], t)));
     }
@@ -311,24 +385,54 @@
   };
 
   function arrowMarker(id) {
-    return svg("marker", { id: id, viewBox: "0 0 10 10", refX: 8, refY: 5, markerWidth: 7, markerHeight: 7, orient: "auto-start-reverse", markerUnits: "userSpaceOnUse" }, [
-      svg("path", { d: "M0 0L10 5L0 10z", class: "ex-arrowhead" }),
-    ]);
+    return svg(
+      "marker",
+      {
+        id: id,
+        viewBox: "0 0 10 10",
+        refX: 8,
+        refY: 5,
+        markerWidth: 7,
+        markerHeight: 7,
+        orient: "auto-start-reverse",
+        markerUnits: "userSpaceOnUse",
+      },
+      [svg("path", { d: "M0 0L10 5L0 10z", class: "ex-arrowhead" })],
+    );
   }
 
   /** An arrow from (x1, y1) to (x2, y2) as an SVG path with a filled head. */
   function arrow(x1, y1, x2, y2, className, head) {
-    var dx = x2 - x1, dy = y2 - y1, len = Math.hypot(dx, dy);
+    var dx = x2 - x1,
+      dy = y2 - y1,
+      len = Math.hypot(dx, dy);
     var g = svg("g", { class: "ex-arrow " + (className || "") });
     if (len < 0.5) return g;
     var size = Math.min(head || 12, len);
-    var ux = dx / len, uy = dy / len;
-    var bx = x2 - ux * size, by = y2 - uy * size;
+    var ux = dx / len,
+      uy = dy / len;
+    var bx = x2 - ux * size,
+      by = y2 - uy * size;
     g.appendChild(svg("line", { x1: x1, y1: y1, x2: bx, y2: by }));
-    g.appendChild(svg("path", {
-      class: "ex-arrowhead",
-      d: "M" + x2 + " " + y2 + "L" + (bx - uy * size * 0.45) + " " + (by + ux * size * 0.45) + "L" + (bx + uy * size * 0.45) + " " + (by - ux * size * 0.45) + "z",
-    }));
+    g.appendChild(
+      svg("path", {
+        class: "ex-arrowhead",
+        d:
+          "M" +
+          x2 +
+          " " +
+          y2 +
+          "L" +
+          (bx - uy * size * 0.45) +
+          " " +
+          (by + ux * size * 0.45) +
+          "L" +
+          (bx + uy * size * 0.45) +
+          " " +
+          (by - ux * size * 0.45) +
+          "z",
+      }),
+    );
     return g;
   }
 

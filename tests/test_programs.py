@@ -96,7 +96,7 @@ def test_the_scan_sees_the_programs_the_code_is_known_to_run():
     # Guards the scanner itself: these calls exist today, in these shapes.
     runs = all_programs()
     assert "tests/test_pdf.py" in runs["pdftotext"]  # a wrapper: _poppler("pdftotext", ...)
-    assert "book/_ext/site_assets/__init__.py" in runs["node"]  # shutil.which("node")
+    assert "book/_ext/site_assets/stylesheets.py" in runs["node"]  # shutil.which("node")
     assert "chromium" in runs  # CHROMIUM = "/usr/bin/chromium"
 
 

@@ -5,18 +5,35 @@
 (function (root) {
   "use strict";
 
-  // How numbers are written (book/_ext/notation): loaded before this script in a page.
-  var Notation = root.Notation || require("../../notation/static/notation.js");
-
-  var SUPERSCRIPTS = { "⁰": "0", "¹": "1", "²": "2", "³": "3", "⁴": "4", "⁵": "5",
-    "⁶": "6", "⁷": "7", "⁸": "8", "⁹": "9", "⁻": "-", "⁺": "+" };
+  var SUPERSCRIPTS = {
+    "⁰": "0",
+    "¹": "1",
+    "²": "2",
+    "³": "3",
+    "⁴": "4",
+    "⁵": "5",
+    "⁶": "6",
+    "⁷": "7",
+    "⁸": "8",
+    "⁹": "9",
+    "⁻": "-",
+    "⁺": "+",
+  };
 
   // Unicode minus and dashes become "-", a run of superscripts becomes "^n".
   function normalise(text) {
     return String(text)
       .replace(/[\u2212\u2012\u2013\u2014]/g, "-")
       .replace(/[⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺]+/g, function (run) {
-        return "^" + run.split("").map(function (c) { return SUPERSCRIPTS[c]; }).join("");
+        return (
+          "^" +
+          run
+            .split("")
+            .map(function (c) {
+              return SUPERSCRIPTS[c];
+            })
+            .join("")
+        );
       })
       .replace(/\*\*/g, "^")
       .trim();
@@ -24,10 +41,13 @@
 
   // ---------------------------------------------------------------- numbers
 
-  var NUMBER = /^([+-]?)(\d+\.?\d*|\.\d+)(?:[eE]([+-]?\d+)|\s*[x×X*·]\s*10(?:\s*\^\s*(?:\(\s*([+-]?\d+)\s*\)|([+-]?\d+)))?)?$/;
+  var NUMBER =
+    /^([+-]?)(\d+\.?\d*|\.\d+)(?:[eE]([+-]?\d+)|\s*[x×X*·]\s*10(?:\s*\^\s*(?:\(\s*([+-]?\d+)\s*\)|([+-]?\d+)))?)?$/;
   var POWER_ONLY = /^([+-]?)10\s*\^\s*\(?\s*([+-]?\d+)\s*\)?$/;
 
-  function refuse(message) { return { ok: false, message: message }; }
+  function refuse(message) {
+    return { ok: false, message: message };
+  }
 
   /* Read a number as a student writes it. Significant figures are counted as
    * written: a whole number's trailing zeros are ambiguous (1500 has 2 to 4). */
@@ -36,26 +56,40 @@
     if (t === "") return refuse("Type a number, for example 7.5, -0.25 or 1.5e3.");
     if (t.indexOf(",") >= 0) {
       if (/^[+-]?\d{1,3}(,\d{3})+(\.\d*)?$/.test(t)) {
-        return refuse("Write " + t + " without the comma: " + t.replace(/,/g, "") +
-          " (or in standard form, e.g. 1.5 × 10^3).");
+        return refuse(
+          "Write " + t + " without the comma: " + t.replace(/,/g, "") + " (or in standard form, e.g. 1.5 × 10^3).",
+        );
       }
       return refuse("Use a decimal point, not a comma (write 1.5, not 1,5), and no commas between thousands.");
     }
     if (/(^|[x×X*·\s])10\s*-\s*\d+$/.test(t)) {
-      return refuse("\"" + t + "\" reads as ten minus a number. Write a power of ten as 10^-3, or use e: 1.5e-3.");
+      return refuse('"' + t + '" reads as ten minus a number. Write a power of ten as 10^-3, or use e: 1.5e-3.');
     }
-    var mantissa, sign, exponent, m = NUMBER.exec(t);
+    var mantissa,
+      sign,
+      exponent,
+      m = NUMBER.exec(t);
     if (m) {
       sign = m[1];
       mantissa = m[2];
-      exponent = m[3] !== undefined ? +m[3] : m[4] !== undefined ? +m[4] : m[5] !== undefined ? +m[5] :
-        /[x×X*·]/.test(t.slice(m[1].length + m[2].length)) ? 1 : 0;
+      exponent =
+        m[3] !== undefined
+          ? +m[3]
+          : m[4] !== undefined
+            ? +m[4]
+            : m[5] !== undefined
+              ? +m[5]
+              : /[x×X*·]/.test(t.slice(m[1].length + m[2].length))
+                ? 1
+                : 0;
     } else if ((m = POWER_ONLY.exec(t))) {
       sign = m[1];
       mantissa = "1";
       exponent = +m[2];
     } else {
-      return refuse("I can't read \"" + String(text).trim() + "\" as a number. Write it like 7.5, -0.25, 1.5e3 or 1.5 × 10^3.");
+      return refuse(
+        "I can't read \"" + String(text).trim() + '" as a number. Write it like 7.5, -0.25, 1.5e3 or 1.5 × 10^3.',
+      );
     }
     var point = mantissa.indexOf(".");
     var whole = point < 0 ? mantissa : mantissa.slice(0, point);
@@ -63,7 +97,8 @@
     var digits = (whole + fraction).replace(/^0+/, "");
     var value = parseFloat(sign + mantissa + "e" + exponent);
     var sfMax, sfMin, lead;
-    if (digits === "") { // zero: only the decimal places written say anything
+    if (digits === "") {
+      // zero: only the decimal places written say anything
       sfMax = sfMin = Math.max(1, fraction.length);
       lead = -fraction.length + sfMax - 1 + exponent;
     } else {
@@ -80,39 +115,83 @@
 
   // Dimensions: [mass, length, time, angle].
   var BASE_UNITS = {
-    g: [1e-3, [1, 0, 0, 0]], m: [1, [0, 1, 0, 0]], s: [1, [0, 0, 1, 0]],
-    N: [1, [1, 1, -2, 0]], J: [1, [1, 2, -2, 0]], W: [1, [1, 2, -3, 0]],
-    Pa: [1, [1, -1, -2, 0]], Hz: [1, [0, 0, -1, 0]]
+    g: [1e-3, [1, 0, 0, 0]],
+    m: [1, [0, 1, 0, 0]],
+    s: [1, [0, 0, 1, 0]],
+    N: [1, [1, 1, -2, 0]],
+    J: [1, [1, 2, -2, 0]],
+    W: [1, [1, 2, -3, 0]],
+    Pa: [1, [1, -1, -2, 0]],
+    Hz: [1, [0, 0, -1, 0]],
   };
-  var UNPREFIXED = { // symbols that take no prefix
-    h: [3600, [0, 0, 1, 0]], min: [60, [0, 0, 1, 0]], sec: [1, [0, 0, 1, 0]], t: [1000, [1, 0, 0, 0]],
-    "°": [1, [0, 0, 0, 1]], deg: [1, [0, 0, 0, 1]], rad: [180 / Math.PI, [0, 0, 0, 1]],
-    "%": [0.01, [0, 0, 0, 0]]
+  var UNPREFIXED = {
+    // symbols that take no prefix
+    h: [3600, [0, 0, 1, 0]],
+    min: [60, [0, 0, 1, 0]],
+    sec: [1, [0, 0, 1, 0]],
+    t: [1000, [1, 0, 0, 0]],
+    "°": [1, [0, 0, 0, 1]],
+    deg: [1, [0, 0, 0, 1]],
+    rad: [180 / Math.PI, [0, 0, 0, 1]],
+    "%": [0.01, [0, 0, 0, 0]],
   };
   // Unit names written as words ("newtons", "metres per second squared", "degrees").
   var UNIT_WORDS = {
-    newton: "N", newtons: "N", joule: "J", joules: "J", watt: "W", watts: "W",
-    kilogram: "kg", kilograms: "kg", gram: "g", grams: "g", metre: "m", metres: "m", meter: "m",
-    meters: "m", kilometre: "km", kilometres: "km", kilometer: "km", kilometers: "km",
-    centimetre: "cm", centimetres: "cm", centimeter: "cm", centimeters: "cm", second: "s",
-    seconds: "s", millisecond: "ms", milliseconds: "ms", hour: "h", hours: "h",
-    degree: "°", degrees: "°", radian: "rad", radians: "rad", per: "/"
+    newton: "N",
+    newtons: "N",
+    joule: "J",
+    joules: "J",
+    watt: "W",
+    watts: "W",
+    kilogram: "kg",
+    kilograms: "kg",
+    gram: "g",
+    grams: "g",
+    metre: "m",
+    metres: "m",
+    meter: "m",
+    meters: "m",
+    kilometre: "km",
+    kilometres: "km",
+    kilometer: "km",
+    kilometers: "km",
+    centimetre: "cm",
+    centimetres: "cm",
+    centimeter: "cm",
+    centimeters: "cm",
+    second: "s",
+    seconds: "s",
+    millisecond: "ms",
+    milliseconds: "ms",
+    hour: "h",
+    hours: "h",
+    degree: "°",
+    degrees: "°",
+    radian: "rad",
+    radians: "rad",
+    per: "/",
   };
 
   function unitWords(text) {
-    return text
-      .replace(/\s*\bsquared\b/gi, "^2")
-      .replace(/[A-Za-z]+/g, function (word) {
-        var symbol = UNIT_WORDS[word.toLowerCase()];
-        return symbol === undefined ? word : symbol;
-      });
+    return text.replace(/\s*\bsquared\b/gi, "^2").replace(/[A-Za-z]+/g, function (word) {
+      var symbol = UNIT_WORDS[word.toLowerCase()];
+      return symbol === undefined ? word : symbol;
+    });
   }
-  var PREFIXES = { G: 1e9, M: 1e6, k: 1e3, c: 1e-2, m: 1e-3, "µ": 1e-6, "μ": 1e-6, u: 1e-6, n: 1e-9 };
+  var PREFIXES = { G: 1e9, M: 1e6, k: 1e3, c: 1e-2, m: 1e-3, µ: 1e-6, μ: 1e-6, u: 1e-6, n: 1e-9 };
   var QUANTITIES = [
-    ["momentum", [1, 1, -1, 0]], ["force", [1, 1, -2, 0]], ["energy", [1, 2, -2, 0]],
-    ["power", [1, 2, -3, 0]], ["velocity", [0, 1, -1, 0]], ["acceleration", [0, 1, -2, 0]],
-    ["mass", [1, 0, 0, 0]], ["length", [0, 1, 0, 0]], ["time", [0, 0, 1, 0]],
-    ["pressure", [1, -1, -2, 0]], ["frequency", [0, 0, -1, 0]], ["angle", [0, 0, 0, 1]]
+    ["momentum", [1, 1, -1, 0]],
+    ["force", [1, 1, -2, 0]],
+    ["energy", [1, 2, -2, 0]],
+    ["power", [1, 2, -3, 0]],
+    ["velocity", [0, 1, -1, 0]],
+    ["acceleration", [0, 1, -2, 0]],
+    ["mass", [1, 0, 0, 0]],
+    ["length", [0, 1, 0, 0]],
+    ["time", [0, 0, 1, 0]],
+    ["pressure", [1, -1, -2, 0]],
+    ["frequency", [0, 0, -1, 0]],
+    ["angle", [0, 0, 0, 1]],
   ];
 
   function sameDims(a, b) {
@@ -130,7 +209,9 @@
     if (run === "") return [[]];
     var found = [];
     function extend(symbol, unit) {
-      segmentations(run.slice(symbol.length)).forEach(function (rest) { found.push([unit].concat(rest)); });
+      segmentations(run.slice(symbol.length)).forEach(function (rest) {
+        found.push([unit].concat(rest));
+      });
     }
     Object.keys(UNPREFIXED).forEach(function (symbol) {
       if (run.indexOf(symbol) === 0) extend(symbol, UNPREFIXED[symbol]);
@@ -147,11 +228,21 @@
   }
 
   function power(unit, exponent) {
-    return [Math.pow(unit[0], exponent), unit[1].map(function (d) { return d * exponent; })];
+    return [
+      Math.pow(unit[0], exponent),
+      unit[1].map(function (d) {
+        return d * exponent;
+      }),
+    ];
   }
 
   function times(a, b) {
-    return [a[0] * b[0], a[1].map(function (d, i) { return d + b[1][i]; })];
+    return [
+      a[0] * b[0],
+      a[1].map(function (d, i) {
+        return d + b[1][i];
+      }),
+    ];
   }
 
   var FACTOR = /^([A-Za-zµμ°%]+)(?:\^\(?\s*([+-]?\d+)\s*\)?|([+-]?\d+))?/;
@@ -162,13 +253,19 @@
     var t = unitWords(normalise(text)).replace(/([A-Za-z°%)])\s*[.·⋅*]\s*(?=[A-Za-zµμ(])/g, "$1 ");
     if (t === "") return { ok: true, empty: true, readings: [] };
     var readings = [{ unit: [1, [0, 0, 0, 0]], symbols: 0 }];
-    var rest = t, divide = false;
+    var rest = t,
+      divide = false;
     while (rest.length) {
       var space = /^\s+/.exec(rest);
-      if (space) { rest = rest.slice(space[0].length); continue; }
+      if (space) {
+        rest = rest.slice(space[0].length);
+        continue;
+      }
       if (rest[0] === "/") {
         if (divide) return unreadableUnit(text);
-        divide = true; rest = rest.slice(1); continue;
+        divide = true;
+        rest = rest.slice(1);
+        continue;
       }
       var options;
       if (rest[0] === "(" && divide) {
@@ -176,7 +273,9 @@
         if (close < 0) return unreadableUnit(text);
         var inner = parseUnit(rest.slice(1, close));
         if (!inner.ok || inner.empty) return unreadableUnit(text);
-        options = inner.readings.map(function (r) { return { unit: [r.scale, r.dims], symbols: r.symbols }; });
+        options = inner.readings.map(function (r) {
+          return { unit: [r.scale, r.dims], symbols: r.symbols };
+        });
         rest = rest.slice(close + 1);
       } else {
         var m = FACTOR.exec(rest);
@@ -185,65 +284,95 @@
         options = segmentations(m[1]).map(function (symbols) {
           var last = symbols.length - 1;
           return {
-            unit: symbols.reduce(function (acc, u, i) { return times(acc, i === last ? power(u, exponent) : u); },
-              [1, [0, 0, 0, 0]]),
-            symbols: symbols.length
+            unit: symbols.reduce(
+              function (acc, u, i) {
+                return times(acc, i === last ? power(u, exponent) : u);
+              },
+              [1, [0, 0, 0, 0]],
+            ),
+            symbols: symbols.length,
           };
         });
         if (!options.length) return unreadableUnit(text);
         rest = rest.slice(m[0].length);
       }
       if (divide) {
-        options = options.map(function (o) { return { unit: power(o.unit, -1), symbols: o.symbols }; });
+        options = options.map(function (o) {
+          return { unit: power(o.unit, -1), symbols: o.symbols };
+        });
         divide = false;
       }
       var next = [];
       readings.forEach(function (r) {
-        options.forEach(function (o) { next.push({ unit: times(r.unit, o.unit), symbols: r.symbols + o.symbols }); });
+        options.forEach(function (o) {
+          next.push({ unit: times(r.unit, o.unit), symbols: r.symbols + o.symbols });
+        });
       });
       readings = next;
     }
     if (divide) return unreadableUnit(text);
-    readings.sort(function (a, b) { return a.symbols - b.symbols; });
+    readings.sort(function (a, b) {
+      return a.symbols - b.symbols;
+    });
     return {
-      ok: true, empty: false,
-      readings: readings.map(function (r) { return { scale: r.unit[0], dims: r.unit[1], symbols: r.symbols }; })
+      ok: true,
+      empty: false,
+      readings: readings.map(function (r) {
+        return { scale: r.unit[0], dims: r.unit[1], symbols: r.symbols };
+      }),
     };
   }
 
   function unreadableUnit(text) {
-    return refuse("I can't read the unit \"" + String(text).trim() +
-      "\". Use symbols such as kg, m, s, N, J, with powers written s^-1 or s-1: for example N s, kg m s^-1 or m/s.");
+    return refuse(
+      "I can't read the unit \"" +
+        String(text).trim() +
+        '". Use symbols such as kg, m, s, N, J, with powers written s^-1 or s-1: for example N s, kg m s^-1 or m/s.',
+    );
   }
 
   /* Units are case-sensitive: "Kg", "M/S", "KG M S^-1" are not units, or not this one. The
    * same text with its letters re-cased into symbols that give the expected dimensions
    * (fewest letters changed, then the expected unit's own scale), or null. */
   function recasedUnit(text, expectedDims, expectedScale) {
-    var t = normalise(text), runs = t.match(/[A-Za-z]+/g) || [];
-    if (!runs.length || runs.some(function (r) { return r.length > 6; })) return null;
-    function casings(run) { // every casing of the run that reads as unit symbols
+    var t = normalise(text),
+      runs = t.match(/[A-Za-z]+/g) || [];
+    if (
+      !runs.length ||
+      runs.some(function (r) {
+        return r.length > 6;
+      })
+    )
+      return null;
+    function casings(run) {
+      // every casing of the run that reads as unit symbols
       var out = [];
-      for (var bits = 0; bits < (1 << run.length); bits++) {
-        var c = "", changed = 0;
+      for (var bits = 0; bits < 1 << run.length; bits++) {
+        var c = "",
+          changed = 0;
         for (var i = 0; i < run.length; i++) {
           var ch = bits & (1 << i) ? run[i].toUpperCase() : run[i].toLowerCase();
           if (ch !== run[i]) changed += 1;
           c += ch;
         }
-        if (UNIT_WORDS[c.toLowerCase()] !== undefined || segmentations(c).length) out.push({ text: c, changed: changed });
+        if (UNIT_WORDS[c.toLowerCase()] !== undefined || segmentations(c).length)
+          out.push({ text: c, changed: changed });
       }
       return out;
     }
     var candidates = [{ text: "", rest: t, changed: 0 }];
     for (var r = 0; r < runs.length; r++) {
-      var options = casings(runs[r]), next = [];
+      var options = casings(runs[r]),
+        next = [];
       if (!options.length) return null;
       candidates.forEach(function (c) {
         var at = c.rest.indexOf(runs[r]);
         options.forEach(function (o) {
-          next.push({ text: c.text + c.rest.slice(0, at) + o.text, rest: c.rest.slice(at + runs[r].length),
-            changed: c.changed + o.changed });
+          next.push({
+            text: c.text + c.rest.slice(0, at) + o.text,
+            rest: c.rest.slice(at + runs[r].length),
+            changed: c.changed + o.changed,
+          });
         });
       });
       if (next.length > 256) return null;
@@ -252,11 +381,16 @@
     var best = null;
     candidates.forEach(function (c) {
       if (!c.changed) return;
-      var full = c.text + c.rest, parsed = parseUnit(full);
+      var full = c.text + c.rest,
+        parsed = parseUnit(full);
       if (!parsed.ok || parsed.empty) return;
-      var fits = parsed.readings.filter(function (reading) { return sameDims(reading.dims, expectedDims); });
+      var fits = parsed.readings.filter(function (reading) {
+        return sameDims(reading.dims, expectedDims);
+      });
       if (!fits.length) return;
-      var exact = fits.some(function (reading) { return Math.abs(reading.scale / expectedScale - 1) < 1e-9; });
+      var exact = fits.some(function (reading) {
+        return Math.abs(reading.scale / expectedScale - 1) < 1e-9;
+      });
       var rank = c.changed * 2 + (exact ? 0 : 1);
       if (!best || rank < best.rank) best = { text: full, rank: rank };
     });
@@ -278,12 +412,22 @@
 
   function superscript(unitText) {
     return String(unitText).replace(/\^(-?\d+)/g, function (_, n) {
-      return n.replace(/-/g, "⁻").replace(/\d/g, function (d) { return "⁰¹²³⁴⁵⁶⁷⁸⁹"[d]; });
+      return n.replace(/-/g, "⁻").replace(/\d/g, function (d) {
+        return "⁰¹²³⁴⁵⁶⁷⁸⁹"[d];
+      });
     });
   }
 
-  var reading = { normalise: normalise, parseNumber: parseNumber, parseUnit: parseUnit, quantityOf: quantityOf,
-    sameDims: sameDims, recasedUnit: recasedUnit, splitValueAndUnit: splitValueAndUnit, superscript: superscript };
+  var reading = {
+    normalise: normalise,
+    parseNumber: parseNumber,
+    parseUnit: parseUnit,
+    quantityOf: quantityOf,
+    sameDims: sameDims,
+    recasedUnit: recasedUnit,
+    splitValueAndUnit: splitValueAndUnit,
+    superscript: superscript,
+  };
   if (typeof module === "object" && module.exports) module.exports = reading;
   else root.AnswerReading = reading;
 })(this);

@@ -5,9 +5,6 @@
 (function (root) {
   "use strict";
 
-  // How numbers are written (book/_ext/notation): loaded before this script in a page.
-  var Notation = root.Notation || require("../../notation/static/notation.js");
-
   /* The rule table (physics_figures/marking_rules.json): what each outcome loses of a part's
    * mark lines, by their roles. A page carries it once (script.q-rules, from the build);
    * under Node the engine reads the file itself. This engine has no marking rule of its own. */
@@ -18,7 +15,8 @@
       var script = document.querySelector("script.q-rules");
       rulesCache = script ? JSON.parse(script.textContent) : null;
     } else {
-      var table = require("../../../../physics_figures/marking_rules.json"), losses = {};
+      var table = require("../../../../physics_figures/marking_rules.json"),
+        losses = {};
       Object.keys(table.outcomes).forEach(function (code) {
         if (Array.isArray(table.outcomes[code].loses)) losses[code] = table.outcomes[code].loses;
       });
@@ -30,18 +28,25 @@
   /* The part kinds, each its own script (static/question-kinds/): under Node the engine loads
    * them; in a page each registers itself in QuestionKinds before this script runs. A new kind
    * is one script here and one class in physics_figures/questions.py. */
-  var KINDS = root.QuestionKinds || (function () {
-    var found = {};
-    ["numeric", "choice", "explain"].forEach(function (file) {
-      var kind = require("./question-kinds/" + file + ".js");
-      kind.kinds.forEach(function (name) { found[name] = kind; });
-    });
-    return found;
-  })();
+  var KINDS =
+    root.QuestionKinds ||
+    (function () {
+      var found = {};
+      ["numeric", "choice", "explain"].forEach(function (file) {
+        var kind = require("./question-kinds/" + file + ".js");
+        kind.kinds.forEach(function (name) {
+          found[name] = kind;
+        });
+      });
+      return found;
+    })();
 
   function outcome(code, message, extra) {
     var result = { code: code, correct: code === "correct", message: message };
-    if (extra) Object.keys(extra).forEach(function (k) { result[k] = extra[k]; });
+    if (extra)
+      Object.keys(extra).forEach(function (k) {
+        result[k] = extra[k];
+      });
     return result;
   }
 
@@ -70,15 +75,28 @@
    * is earned unless that part's outcome loses a role it plays (a self-marked line: when
    * ticked). Returns {earned, available, byPart: {id: [earned, available]}, lines: [bool]}. */
   function award(data, results) {
-    var byPart = {}, earned = 0, lines = [];
-    data.parts.forEach(function (part) { byPart[part.id] = [0, 0]; });
+    var byPart = {},
+      earned = 0,
+      lines = [];
+    data.parts.forEach(function (part) {
+      byPart[part.id] = [0, 0];
+    });
     data.marks.forEach(function (line, index) {
-      var part = data.parts.filter(function (p) { return p.id === line.part; })[0];
+      var part = data.parts.filter(function (p) {
+        return p.id === line.part;
+      })[0];
       var result = results[line.part] || { code: "wrong" };
-      var ok = part.kind === "explain" ? ticked(data, result, index) :
-        !line.roles.some(function (role) { return lostRoles(result).indexOf(role) >= 0; });
+      var ok =
+        part.kind === "explain"
+          ? ticked(data, result, index)
+          : !line.roles.some(function (role) {
+              return lostRoles(result).indexOf(role) >= 0;
+            });
       byPart[line.part][1] += 1;
-      if (ok) { byPart[line.part][0] += 1; earned += 1; }
+      if (ok) {
+        byPart[line.part][0] += 1;
+        earned += 1;
+      }
       lines.push(ok);
     });
     return { earned: earned, available: data.marks.length, byPart: byPart, lines: lines };
@@ -94,7 +112,8 @@
 
   /* What a part lost, in words: "2/3 marks: the A1 is lost; the C1 and B1 stand." */
   function lostText(data, awarded, partId) {
-    var lost = [], kept = [];
+    var lost = [],
+      kept = [];
     data.marks.forEach(function (line, i) {
       if (line.part === partId) (awarded.lines[i] ? kept : lost).push(line.code);
     });
@@ -102,8 +121,15 @@
     function list(codes) {
       return codes.length === 1 ? codes[0] : codes.slice(0, -1).join(", ") + " and " + codes[codes.length - 1];
     }
-    return marksText(kept.length, kept.length + lost.length) + ": the " + list(lost) +
-      (lost.length === 1 ? " is" : " are") + " lost; the " + list(kept) + (kept.length === 1 ? " stands." : " stand.");
+    return (
+      marksText(kept.length, kept.length + lost.length) +
+      ": the " +
+      list(lost) +
+      (lost.length === 1 ? " is" : " are") +
+      " lost; the " +
+      list(kept) +
+      (kept.length === 1 ? " stands." : " stand.")
+    );
   }
 
   function marksText(earned, available) {
@@ -124,7 +150,8 @@
       }
       // a direction asked for and chosen wrong (or not chosen) never earns the direction's
       // mark, and a right one earns it whatever the size (a B mark stands on its own)
-      result.directionWrong = part.direction === "choice" && (answers[part.id] || {}).direction !== part.answerDirection;
+      result.directionWrong =
+        part.direction === "choice" && (answers[part.id] || {}).direction !== part.answerDirection;
       results[part.id] = result;
     });
     return { results: results, marks: award(data, results) };
@@ -141,7 +168,8 @@
   }
 
   function carriedBy(part, ecf, answer, earlier, data) {
-    var uses = ecf.uses, known = {};
+    var uses = ecf.uses,
+      known = {};
     for (var i = 0; i < uses.length; i++) {
       var before = earlier[uses[i]];
       if (!before || before.si === null || before.si === undefined) return null;
@@ -150,24 +178,44 @@
     // A reading of a graph may be right yet not exact (half a small square either way): a
     // later part is then worked from the student's own reading, and is simply right.
     var fromReadings = uses.some(function (id) {
-      return data.parts.some(function (p) { return p.id === id && p.kind === "graph"; });
+      return data.parts.some(function (p) {
+        return p.id === id && p.kind === "graph";
+      });
     });
-    var allRight = uses.every(function (id) { return earlier[id].valueRight; });
+    var allRight = uses.every(function (id) {
+      return earlier[id].valueRight;
+    });
     if (allRight && !fromReadings) return null;
-    var args = ecf.args.map(function (name) { return name in known ? known[name] : ecf.values[name]; });
+    var args = ecf.args.map(function (name) {
+      return name in known ? known[name] : ecf.values[name];
+    });
     var value = formula(ecf).apply(null, args);
     if (!isFinite(value)) return null;
-    var own = {}; Object.keys(part).forEach(function (k) { own[k] = part[k]; });
+    var own = {};
+    Object.keys(part).forEach(function (k) {
+      own[k] = part[k];
+    });
     own.value = part.direction === "signed" ? value : Math.abs(value);
-    own.mistakes = []; own.gNineEight = null; own.roundedPartWay = []; own.alternatives = [];
+    own.mistakes = [];
+    own.gNineEight = null;
+    own.roundedPartWay = [];
+    own.alternatives = [];
     var result = mark(own, answer);
     if (result.code === "correct" && allRight) {
-      return outcome("correct", "Correct: it follows from your readings of the graph.", { si: result.si, valueRight: true });
+      return outcome("correct", "Correct: it follows from your readings of the graph.", {
+        si: result.si,
+        valueRight: true,
+      });
     }
     if (allRight) return null;
     if (result.code === "correct") {
-      return outcome("ecf", "Follows correctly from your answer to (" + uses.join("), (") +
-        "): error carried forward (ecf), so this part earns its marks.", { si: result.si, valueRight: false });
+      return outcome(
+        "ecf",
+        "Follows correctly from your answer to (" +
+          uses.join("), (") +
+          "): error carried forward (ecf), so this part earns its marks.",
+        { si: result.si, valueRight: false },
+      );
     }
     // follows from the earlier answer, but with a slip of its own (direction, unit, s.f.)
     if (result.code === "wrong" || /^unreadable/.test(result.code)) return null;
@@ -195,10 +243,17 @@
   // What reads a typed answer, for the tests and scripts that drive the engine under Node.
   var Reading = root.AnswerReading || require("./answer-reading.js");
   var engine = {
-    parseNumber: Reading.parseNumber, parseUnit: Reading.parseUnit, splitValueAndUnit: Reading.splitValueAndUnit,
-    recasedUnit: Reading.recasedUnit, superscript: Reading.superscript,
-    mark: mark, markQuestion: markQuestion, award: award, lostText: lostText, marksText: marksText,
-    sectionFor: sectionFor
+    parseNumber: Reading.parseNumber,
+    parseUnit: Reading.parseUnit,
+    splitValueAndUnit: Reading.splitValueAndUnit,
+    recasedUnit: Reading.recasedUnit,
+    superscript: Reading.superscript,
+    mark: mark,
+    markQuestion: markQuestion,
+    award: award,
+    lostText: lostText,
+    marksText: marksText,
+    sectionFor: sectionFor,
   };
 
   if (typeof module === "object" && module.exports) module.exports = engine;

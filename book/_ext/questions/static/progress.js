@@ -17,11 +17,15 @@
   var STORE = "dynamics-progress-v1";
   var VERSION = 1;
 
-  function count(n) { return Notation.formatNumber(n, null, { decimals: 0 }); }
+  function count(n) {
+    return Notation.formatNumber(n, null, { decimals: 0 });
+  }
   function marksText(earned, available) {
     return count(earned) + "/" + count(available) + " mark" + (available === 1 ? "" : "s");
   }
-  function times(n) { return n === 1 ? "once" : n === 2 ? "twice" : count(n) + " times"; }
+  function times(n) {
+    return n === 1 ? "once" : n === 2 ? "twice" : count(n) + " times";
+  }
 
   // What is wrong with one attempt, or null.
   function attemptProblem(a) {
@@ -34,7 +38,12 @@
       return "has marks earned that are not between 0 and the marks available";
     }
     if (typeof a.at !== "number" || !isFinite(a.at)) return "has no time";
-    if (!Array.isArray(a.mistakes) || a.mistakes.some(function (m) { return typeof m !== "string"; })) {
+    if (
+      !Array.isArray(a.mistakes) ||
+      a.mistakes.some(function (m) {
+        return typeof m !== "string";
+      })
+    ) {
       return "has no list of mistakes";
     }
     return null;
@@ -47,7 +56,9 @@
       return { ok: true, progress: { version: VERSION, attempts: [] } };
     }
     var data;
-    try { data = JSON.parse(text); } catch (e) {
+    try {
+      data = JSON.parse(text);
+    } catch {
       return { ok: false, message: "it is not a progress file from this book (it is not JSON)." };
     }
     if (!data || typeof data !== "object" || Array.isArray(data) || !("version" in data)) {
@@ -56,10 +67,14 @@
     if (data.version !== VERSION) {
       return {
         ok: false,
-        message: typeof data.version === "number" && data.version > VERSION ?
-          "it was saved by a newer version of the book (format " + count(data.version) +
-            "); this page reads format " + count(VERSION) + ". Open it in the newer book." :
-          "its format version (" + String(data.version).slice(0, 20) + ") is not one this book wrote."
+        message:
+          typeof data.version === "number" && data.version > VERSION
+            ? "it was saved by a newer version of the book (format " +
+              count(data.version) +
+              "); this page reads format " +
+              count(VERSION) +
+              ". Open it in the newer book."
+            : "its format version (" + String(data.version).slice(0, 20) + ") is not one this book wrote.",
       };
     }
     if (!Array.isArray(data.attempts)) {
@@ -68,8 +83,10 @@
     for (var i = 0; i < data.attempts.length; i++) {
       var problem = attemptProblem(data.attempts[i]);
       if (problem) {
-        return { ok: false, message: "attempt " + count(i + 1) + " of " + count(data.attempts.length) +
-          " " + problem + "." };
+        return {
+          ok: false,
+          message: "attempt " + count(i + 1) + " of " + count(data.attempts.length) + " " + problem + ".",
+        };
       }
     }
     return { ok: true, progress: data };
@@ -82,8 +99,12 @@
   /* Attempts of both, each once, oldest first: importing the same file twice adds nothing.
    * Returns {attempts, added, already}. */
   function mergeAttempts(kept, incoming) {
-    var seen = {}, out = kept.slice(), added = 0;
-    kept.forEach(function (a) { seen[identity(a)] = true; });
+    var seen = {},
+      out = kept.slice(),
+      added = 0;
+    kept.forEach(function (a) {
+      seen[identity(a)] = true;
+    });
     incoming.forEach(function (a) {
       var id = identity(a);
       if (seen[id]) return;
@@ -91,7 +112,9 @@
       out.push(a);
       added += 1;
     });
-    out.sort(function (a, b) { return a.at - b.at; });
+    out.sort(function (a, b) {
+      return a.at - b.at;
+    });
     return { attempts: out, added: added, already: incoming.length - added };
   }
 
@@ -99,42 +122,79 @@
    * build's list). Attempts count by their question's key, so a template the bank no longer
    * has is kept in the store but not shown. Marks: the best attempt at each template tried. */
   function summarise(kind, attempts) {
-    var byKey = {}, mistakes = {}, order = [];
-    kind.templates.forEach(function (t) { byKey[t.key] = { template: t, attempts: [] }; });
+    var byKey = {},
+      mistakes = {},
+      order = [];
+    kind.templates.forEach(function (t) {
+      byKey[t.key] = { template: t, attempts: [] };
+    });
     attempts.forEach(function (a) {
       var entry = byKey[a.question];
       if (!entry) return;
       entry.attempts.push(a);
       a.mistakes.forEach(function (name) {
-        if (!mistakes[name]) { mistakes[name] = 0; order.push(name); }
+        if (!mistakes[name]) {
+          mistakes[name] = 0;
+          order.push(name);
+        }
         mistakes[name] += 1;
       });
     });
-    var tried = 0, earned = 0, available = 0, templates = {};
+    var tried = 0,
+      earned = 0,
+      available = 0,
+      templates = {};
     kind.templates.forEach(function (t) {
-      var entry = byKey[t.key], best = null, last = null;
+      var entry = byKey[t.key],
+        best = null,
+        last = null;
       entry.attempts.forEach(function (a) {
         if (!best || a.earned / a.available > best.earned / best.available) best = a;
         if (!last || a.at >= last.at) last = a;
       });
       templates[t.key] = { attempts: entry.attempts.length, best: best, last: last };
-      if (best) { tried += 1; earned += best.earned; available += best.available; }
+      if (best) {
+        tried += 1;
+        earned += best.earned;
+        available += best.available;
+      }
     });
-    var often = order.map(function (name) { return { name: name, count: mistakes[name] }; })
-      .sort(function (a, b) { return b.count - a.count; }); // stable: first made first on a tie
-    return { tried: tried, inBank: kind.templates.length, earned: earned, available: available,
-      mistakes: often, templates: templates };
+    var often = order
+      .map(function (name) {
+        return { name: name, count: mistakes[name] };
+      })
+      .sort(function (a, b) {
+        return b.count - a.count;
+      }); // stable: first made first on a tie
+    return {
+      tried: tried,
+      inBank: kind.templates.length,
+      earned: earned,
+      available: available,
+      mistakes: often,
+      templates: templates,
+    };
   }
 
   /* The template "Practise this type" serves: the first untried one (bank order); else one
    * whose last attempt lost marks, the longest ago first; else the longest ago. Only
    * templates a page places can be served; null if none is. */
   function nextTemplate(kind, summary) {
-    var placed = kind.templates.filter(function (t) { return t.page; });
-    var untried = placed.filter(function (t) { return !summary.templates[t.key].last; });
+    var placed = kind.templates.filter(function (t) {
+      return t.page;
+    });
+    var untried = placed.filter(function (t) {
+      return !summary.templates[t.key].last;
+    });
     if (untried.length) return untried[0];
-    function lastAt(t) { return summary.templates[t.key].last.at; }
-    function oldestFirst(list) { return list.slice().sort(function (a, b) { return lastAt(a) - lastAt(b); })[0]; }
+    function lastAt(t) {
+      return summary.templates[t.key].last.at;
+    }
+    function oldestFirst(list) {
+      return list.slice().sort(function (a, b) {
+        return lastAt(a) - lastAt(b);
+      })[0];
+    }
     var wrong = placed.filter(function (t) {
       var last = summary.templates[t.key].last;
       return last.earned < last.available;
@@ -148,9 +208,15 @@
   }
 
   var api = {
-    STORE: STORE, VERSION: VERSION, readProgress: readProgress, mergeAttempts: mergeAttempts,
-    summarise: summarise, nextTemplate: nextTemplate, practiseUrl: practiseUrl, marksText: marksText,
-    times: times
+    STORE: STORE,
+    VERSION: VERSION,
+    readProgress: readProgress,
+    mergeAttempts: mergeAttempts,
+    summarise: summarise,
+    nextTemplate: nextTemplate,
+    practiseUrl: practiseUrl,
+    marksText: marksText,
+    times: times,
   };
   if (typeof module === "object" && module.exports) module.exports = api;
   else root.PracticeProgress = api;
@@ -160,7 +226,11 @@
   if (typeof document === "undefined") return;
 
   function getStored() {
-    try { return localStorage.getItem(STORE); } catch (e) { return null; }
+    try {
+      return localStorage.getItem(STORE);
+    } catch {
+      return null;
+    }
   }
 
   function setStored(text) {
@@ -168,7 +238,9 @@
       if (text === null) localStorage.removeItem(STORE);
       else localStorage.setItem(STORE, text);
       return true;
-    } catch (e) { return false; }
+    } catch {
+      return false;
+    }
   }
 
   function start() {
@@ -184,9 +256,13 @@
     document.documentElement.classList.add("pp-js");
     file.hidden = false;
 
-    function say(message) { status.textContent = message; }
+    function say(message) {
+      status.textContent = message;
+    }
 
-    function current() { return readProgress(getStored()); }
+    function current() {
+      return readProgress(getStored());
+    }
 
     function render() {
       var read = current();
@@ -196,36 +272,50 @@
         if (!kind.templates.length) return; // the static "not in the bank yet" stands
         var s = summarise(kind, attempts);
         var bank = count(s.inBank) + " question" + (s.inBank === 1 ? "" : "s") + " in the bank";
-        section.querySelector(".pp-summary").textContent = s.tried ?
-          "Tried " + count(s.tried) + " of " + bank + ". Marks: " + marksText(s.earned, s.available) +
-            " (your best attempt at each question tried)." :
-          bank.charAt(0).toUpperCase() + bank.slice(1) + "; none tried yet.";
+        section.querySelector(".pp-summary").textContent = s.tried
+          ? "Tried " +
+            count(s.tried) +
+            " of " +
+            bank +
+            ". Marks: " +
+            marksText(s.earned, s.available) +
+            " (your best attempt at each question tried)."
+          : bank.charAt(0).toUpperCase() + bank.slice(1) + "; none tried yet.";
         var mistakes = section.querySelector(".pp-mistakes");
         mistakes.hidden = !s.tried;
-        mistakes.textContent = s.mistakes.length ?
-          "Mistakes made most often: " + s.mistakes.slice(0, 3).map(function (m) {
-            return m.name + " (" + times(m.count) + ")";
-          }).join("; ") + "." : "No named mistakes so far.";
+        mistakes.textContent = s.mistakes.length
+          ? "Mistakes made most often: " +
+            s.mistakes
+              .slice(0, 3)
+              .map(function (m) {
+                return m.name + " (" + times(m.count) + ")";
+              })
+              .join("; ") +
+            "."
+          : "No named mistakes so far.";
         kind.templates.forEach(function (t) {
           var entry = s.templates[t.key];
           var marks = section.querySelector('li[data-key="' + t.key + '"] .pp-marks');
-          marks.textContent = entry.best ?
-            "(best " + marksText(entry.best.earned, entry.best.available) + ", tried " + times(entry.attempts) + ")" :
-            "(" + count(t.marks) + " mark" + (t.marks === 1 ? "" : "s") + ", not tried)";
+          marks.textContent = entry.best
+            ? "(best " + marksText(entry.best.earned, entry.best.available) + ", tried " + times(entry.attempts) + ")"
+            : "(" + count(t.marks) + " mark" + (t.marks === 1 ? "" : "s") + ", not tried)";
         });
         var link = section.querySelector(".pp-practise");
         var next = nextTemplate(kind, s);
         if (link && next) {
           link.href = practiseUrl(next);
           link.setAttribute("data-next", next.key);
-          link.title = "Next: " + next.title + (s.templates[next.key].last ? "" : " (not tried yet)") +
-            ", with new numbers";
+          link.title =
+            "Next: " + next.title + (s.templates[next.key].last ? "" : " (not tried yet)") + ", with new numbers";
         }
       });
       clearButton.disabled = !read.ok ? false : attempts.length === 0;
       if (!read.ok) {
-        say("The progress kept in this browser cannot be read here: " + read.message +
-          " It is kept as it is; Export copies it out.");
+        say(
+          "The progress kept in this browser cannot be read here: " +
+            read.message +
+            " It is kept as it is; Export copies it out.",
+        );
       }
     }
 
@@ -240,10 +330,17 @@
       document.body.appendChild(a);
       a.click();
       a.remove();
-      setTimeout(function () { URL.revokeObjectURL(a.href); }, 1000);
+      setTimeout(function () {
+        URL.revokeObjectURL(a.href);
+      }, 1000);
       var n = read.ok ? read.progress.attempts.length : 0;
-      say("Exported " + (read.ok ? count(n) + " attempt" + (n === 1 ? "" : "s") : "your progress") +
-        " to " + a.download + ". Import that file on another device to carry on there.");
+      say(
+        "Exported " +
+          (read.ok ? count(n) + " attempt" + (n === 1 ? "" : "s") : "your progress") +
+          " to " +
+          a.download +
+          ". Import that file on another device to carry on there.",
+      );
     });
 
     importInput.addEventListener("change", function () {
@@ -255,14 +352,15 @@
         var incoming = readProgress(String(reader.result));
         var name = chosen.name;
         if (!incoming.ok) {
-          say("Nothing was imported from " + name + ": " + incoming.message +
-            " Your progress here is unchanged.");
+          say("Nothing was imported from " + name + ": " + incoming.message + " Your progress here is unchanged.");
           return;
         }
         var here = current();
         if (!here.ok) {
-          say("Nothing was imported: the progress kept in this browser is in a format this page " +
-            "cannot read, and importing would replace it. It is unchanged.");
+          say(
+            "Nothing was imported: the progress kept in this browser is in a format this page " +
+              "cannot read, and importing would replace it. It is unchanged.",
+          );
           return;
         }
         var merged = mergeAttempts(here.progress.attempts, incoming.progress.attempts);
@@ -273,8 +371,16 @@
           return;
         }
         render();
-        say("Imported " + count(merged.added) + " attempt" + (merged.added === 1 ? "" : "s") + " from " +
-          name + (merged.already ? " (" + count(merged.already) + " were here already)" : "") + ".");
+        say(
+          "Imported " +
+            count(merged.added) +
+            " attempt" +
+            (merged.added === 1 ? "" : "s") +
+            " from " +
+            name +
+            (merged.already ? " (" + count(merged.already) + " were here already)" : "") +
+            ".",
+        );
       };
       reader.onerror = function () {
         importInput.value = "";
@@ -295,7 +401,8 @@
     undoButton.addEventListener("click", function () {
       var now = current();
       var before = readProgress(cleared);
-      if (now.ok && now.progress.attempts.length && before.ok) { // attempts made since: keep both
+      if (now.ok && now.progress.attempts.length && before.ok) {
+        // attempts made since: keep both
         now.progress.attempts = mergeAttempts(before.progress.attempts, now.progress.attempts).attempts;
         setStored(JSON.stringify(now.progress));
       } else {
@@ -309,7 +416,9 @@
     });
 
     // Another tab checking an answer updates this page.
-    window.addEventListener("storage", function (event) { if (event.key === STORE || event.key === null) render(); });
+    window.addEventListener("storage", function (event) {
+      if (event.key === STORE || event.key === null) render();
+    });
     render();
   }
 

@@ -4,21 +4,35 @@
 (function (root) {
   "use strict";
 
-  var engine = root.QuestionMarking, markQuestion = engine.markQuestion, marksText = engine.marksText;
+  var engine = root.QuestionMarking,
+    markQuestion = engine.markQuestion,
+    marksText = engine.marksText;
   var Notation = root.Notation;
 
   var STORE = "dynamics-questions:";
 
   function load(id) {
-    try { return JSON.parse(localStorage.getItem(STORE + id)) || null; } catch (e) { return null; }
+    try {
+      return JSON.parse(localStorage.getItem(STORE + id)) || null;
+    } catch {
+      return null;
+    }
   }
 
   function save(id, state) {
-    try { localStorage.setItem(STORE + id, JSON.stringify(state)); } catch (e) { /* private mode: no memory */ }
+    try {
+      localStorage.setItem(STORE + id, JSON.stringify(state));
+    } catch {
+      /* private mode: no memory */
+    }
   }
 
   function forget(id) {
-    try { localStorage.removeItem(STORE + id); } catch (e) { /* nothing stored */ }
+    try {
+      localStorage.removeItem(STORE + id);
+    } catch {
+      /* nothing stored */
+    }
   }
 
   // Every checked attempt, for the "Your practice" page (versioned: a later build reads it).
@@ -31,9 +45,13 @@
       var progress = JSON.parse(localStorage.getItem(PROGRESS)) || { version: 1, attempts: [] };
       // Another format under this key (a later build's): leave it whole, never append to it.
       if (progress.version !== 1 || !Array.isArray(progress.attempts)) return;
-      var list = progress.attempts, last = -1;
+      var list = progress.attempts,
+        last = -1;
       for (var i = list.length - 1; i >= 0 && retick; i--) {
-        if (list[i].question === attempt.question) { last = i; break; }
+        if (list[i].question === attempt.question) {
+          last = i;
+          break;
+        }
       }
       if (last >= 0 && list[last].variant === attempt.variant) {
         attempt.at = list[last].at;
@@ -44,7 +62,9 @@
         return; // ticks on a question never checked in this browser: nothing to update
       }
       localStorage.setItem(PROGRESS, JSON.stringify(progress));
-    } catch (e) { /* private mode: progress is not kept */ }
+    } catch {
+      /* private mode: progress is not kept */
+    }
   }
 
   /* New numbers: each template's variants come in one small script (loaded on the first
@@ -59,8 +79,12 @@
     if (all[key]) return done(all[key]);
     var script = document.createElement("script");
     script.src = contentRoot() + "_static/questions/" + key + ".js";
-    script.onload = function () { done((root.QuestionVariants || {})[key] || null); };
-    script.onerror = function () { done(null); };
+    script.onload = function () {
+      done((root.QuestionVariants || {})[key] || null);
+    };
+    script.onerror = function () {
+      done(null);
+    };
     document.head.appendChild(script);
   }
 
@@ -70,8 +94,12 @@
     if (!order.length) {
       order = [];
       for (var i = 0; i < count; i++) if (i !== current) order.push(i);
-      for (var j = order.length - 1; j > 0; j--) { // Fisher-Yates
-        var k = Math.floor(Math.random() * (j + 1)), t = order[j]; order[j] = order[k]; order[k] = t;
+      for (var j = order.length - 1; j > 0; j--) {
+        // Fisher-Yates
+        var k = Math.floor(Math.random() * (j + 1)),
+          t = order[j];
+        order[j] = order[k];
+        order[k] = t;
       }
       order.push(current); // the one on screen comes last in the round
     }
@@ -86,7 +114,11 @@
   function sectionLink(part, result) {
     if (sections === null) {
       var script = document.querySelector("script.q-sections");
-      try { sections = script ? JSON.parse(script.textContent) : {}; } catch (e) { sections = {}; }
+      try {
+        sections = script ? JSON.parse(script.textContent) : {};
+      } catch {
+        sections = {};
+      }
     }
     var id = engine.sectionFor(part, result);
     return (id && sections[id]) || null;
@@ -102,45 +134,68 @@
     var undone = null; // what Clear my answers cleared, until Undo clear or another change
     var key = form.getAttribute("data-question");
 
-    function storeId() { return data.id + (key ? "@" + form.getAttribute("data-variant") : ""); }
+    function storeId() {
+      return data.id + (key ? "@" + form.getAttribute("data-variant") : "");
+    }
 
     function fields(part) {
-      var box = form.querySelector("[data-part=\"" + part.id + "\"]");
+      var box = form.querySelector('[data-part="' + part.id + '"]');
       return {
-        box: box, value: box.querySelector(".q-value"), unit: box.querySelector(".q-unit"),
-        direction: box.querySelector(".q-direction"), feedback: box.querySelector(".q-feedback"),
-        marks: box.querySelector(".q-part-marks"), choices: box.querySelectorAll(".q-choice"),
-        text: box.querySelector(".q-explain"), ticks: box.querySelectorAll(".q-tick"),
-        points: box.querySelector(".q-points")
+        box: box,
+        value: box.querySelector(".q-value"),
+        unit: box.querySelector(".q-unit"),
+        direction: box.querySelector(".q-direction"),
+        feedback: box.querySelector(".q-feedback"),
+        marks: box.querySelector(".q-part-marks"),
+        choices: box.querySelectorAll(".q-choice"),
+        text: box.querySelector(".q-explain"),
+        ticks: box.querySelectorAll(".q-tick"),
+        points: box.querySelector(".q-points"),
       };
     }
 
     function answerOf(part) {
       var f = fields(part);
       if (part.kind === "mcq") {
-        var chosen = Array.prototype.filter.call(f.choices, function (c) { return c.checked; })[0];
+        var chosen = Array.prototype.filter.call(f.choices, function (c) {
+          return c.checked;
+        })[0];
         return { choice: chosen ? chosen.value : "" };
       }
       if (part.kind === "explain") {
-        return { text: f.text.value, ticked: Array.prototype.filter.call(f.ticks, function (t) { return t.checked; })
-          .map(function (t) { return Number(t.value); }) };
+        return {
+          text: f.text.value,
+          ticked: Array.prototype.filter
+            .call(f.ticks, function (t) {
+              return t.checked;
+            })
+            .map(function (t) {
+              return Number(t.value);
+            }),
+        };
       }
       return { value: f.value.value, unit: f.unit.value, direction: f.direction ? f.direction.value : "" };
     }
 
     function answers() {
       var out = {};
-      data.parts.forEach(function (part) { out[part.id] = answerOf(part); });
+      data.parts.forEach(function (part) {
+        out[part.id] = answerOf(part);
+      });
       return out;
     }
 
     function fill(part, a) {
       var f = fields(part);
       if (part.kind === "mcq") {
-        Array.prototype.forEach.call(f.choices, function (c) { c.checked = c.value === a.choice; });
+        Array.prototype.forEach.call(f.choices, function (c) {
+          c.checked = c.value === a.choice;
+        });
       } else if (part.kind === "explain") {
         f.text.value = a.text || "";
-        Array.prototype.forEach.call(f.ticks, function (t) { t.checked = (a.ticked || []).indexOf(Number(t.value)) >= 0; });
+        Array.prototype.forEach.call(f.ticks, function (t) {
+          t.checked = (a.ticked || []).indexOf(Number(t.value)) >= 0;
+        });
       } else {
         f.value.value = a.value || "";
         f.unit.value = a.unit || "";
@@ -152,15 +207,17 @@
     function check(record) {
       var marked = markQuestion(data, answers());
       data.parts.forEach(function (part) {
-        var f = fields(part), result = marked.results[part.id], got = marked.marks.byPart[part.id];
+        var f = fields(part),
+          result = marked.results[part.id],
+          got = marked.marks.byPart[part.id];
         // ✓ only for a part that earned every one of its marks; a part that lost some says which
         var right = got[0] === got[1] && result.code !== "wrong";
         var selfMarked = result.code === "self-marked";
         if (f.points && selfMarked) f.points.hidden = false;
         var lost = engine.lostText(data, marked.marks, part.id);
         // a value in the message stays on one line with its unit, as everywhere in the book
-        f.feedback.textContent = (selfMarked ? "" : right ? "✓ " : "✗ ") + Notation.joinUnits(result.message) +
-          (lost ? " " + lost : "");
+        f.feedback.textContent =
+          (selfMarked ? "" : right ? "✓ " : "✗ ") + Notation.joinUnits(result.message) + (lost ? " " + lost : "");
         var idea = !right && !selfMarked && sectionLink(part, result);
         if (idea) {
           var link = document.createElement("a");
@@ -180,21 +237,39 @@
       if (score) score.textContent = marksText(marked.marks.earned, marked.marks.available);
       if (worked) worked.hidden = false;
       // Others listen for an attempt (a worked example's solution opens on it, below).
-      section.dispatchEvent(new CustomEvent("q-checked", { bubbles: true,
-        detail: { question: data.id, earned: marked.marks.earned, available: marked.marks.available } }));
+      section.dispatchEvent(
+        new CustomEvent("q-checked", {
+          bubbles: true,
+          detail: { question: data.id, earned: marked.marks.earned, available: marked.marks.available },
+        }),
+      );
       save(storeId(), { answers: answers(), checked: true });
       // A Check with nothing written is no attempt: it is not kept.
       var tried = data.parts.some(function (part) {
         var a = answerOf(part);
-        return part.kind === "mcq" ? !!a.choice : part.kind === "explain" ? !!a.text.trim() :
-          !!(a.value.trim() || a.unit.trim());
+        return part.kind === "mcq"
+          ? !!a.choice
+          : part.kind === "explain"
+            ? !!a.text.trim()
+            : !!(a.value.trim() || a.unit.trim());
       });
       if (record && key && tried) {
-        recordAttempt({
-          question: key, type: form.getAttribute("data-type"), variant: Number(form.getAttribute("data-variant")),
-          earned: marked.marks.earned, available: marked.marks.available, at: Date.now(),
-          mistakes: data.parts.map(function (p) { return marked.results[p.id].mistake; }).filter(Boolean)
-        }, record === "ticks");
+        recordAttempt(
+          {
+            question: key,
+            type: form.getAttribute("data-type"),
+            variant: Number(form.getAttribute("data-variant")),
+            earned: marked.marks.earned,
+            available: marked.marks.available,
+            at: Date.now(),
+            mistakes: data.parts
+              .map(function (p) {
+                return marked.results[p.id].mistake;
+              })
+              .filter(Boolean),
+          },
+          record === "ticks",
+        );
       }
     }
 
@@ -208,7 +283,10 @@
         if (f.marks) f.marks.textContent = "";
       });
       if (score) score.textContent = "";
-      if (worked) { worked.open = false; worked.hidden = true; }
+      if (worked) {
+        worked.open = false;
+        worked.hidden = true;
+      }
       dropUndo();
     }
 
@@ -220,7 +298,9 @@
     function restore() {
       var saved = load(storeId());
       if (!saved || !saved.answers) return;
-      data.parts.forEach(function (part) { fill(part, saved.answers[part.id] || {}); });
+      data.parts.forEach(function (part) {
+        fill(part, saved.answers[part.id] || {});
+      });
       if (saved.checked) check(false);
     }
 
@@ -237,7 +317,9 @@
             f.choices[i].parentNode.querySelector(".q-option-text").innerHTML = option.html;
           });
         } else if (part.kind === "explain") {
-          var lines = data.marks.filter(function (m) { return m.part === part.id; });
+          var lines = data.marks.filter(function (m) {
+            return m.part === part.id;
+          });
           Array.prototype.forEach.call(f.ticks, function (tick, i) {
             tick.value = String(data.marks.indexOf(lines[i]));
             tick.parentNode.querySelector(".q-point-text").innerHTML = lines[i].html;
@@ -251,7 +333,8 @@
       data = { id: data.id, parts: variant.parts, marks: variant.marks };
       section.querySelector(".q-text").innerHTML = variant.text;
       var graph = section.querySelector("img.q-graph");
-      if (graph && variant.graph) { // its own graph, drawn from its numbers
+      if (graph && variant.graph) {
+        // its own graph, drawn from its numbers
         graph.src = contentRoot() + "_static/questions/" + variant.graph.src;
         graph.alt = variant.graph.alt;
       }
@@ -264,9 +347,16 @@
       restore();
     }
 
-    form.addEventListener("submit", function (event) { event.preventDefault(); check(true); });
-    form.addEventListener("input", function () { dropUndo(); save(storeId(), { answers: answers(), checked: !!(load(storeId()) || {}).checked }); });
-    form.addEventListener("change", function (event) { // a ticked marking point re-scores at once
+    form.addEventListener("submit", function (event) {
+      event.preventDefault();
+      check(true);
+    });
+    form.addEventListener("input", function () {
+      dropUndo();
+      save(storeId(), { answers: answers(), checked: !!(load(storeId()) || {}).checked });
+    });
+    form.addEventListener("change", function (event) {
+      // a ticked marking point re-scores at once
       if (event.target.classList.contains("q-tick")) check("ticks");
     });
     // Clear my answers can be undone: the cleared answers come back (until the next change).
@@ -298,7 +388,10 @@
         newButton.disabled = true;
         loadVariants(key, function (variants) {
           newButton.disabled = false;
-          if (!variants) { score.textContent = "New numbers could not be loaded."; return; }
+          if (!variants) {
+            score.textContent = "New numbers could not be loaded.";
+            return;
+          }
           var index = nextVariant(key, variants.length, Number(form.getAttribute("data-variant")));
           show(index, variants[index]);
           section.querySelector(".q-text").focus();
@@ -343,7 +436,8 @@
     if (!solution || !solution.classList.contains("try-first") || solution.hasAttribute("data-tried")) return;
     solution.setAttribute("data-tried", "");
     var button = solution.querySelector(".toggle-button");
-    if (button && solution.classList.contains("toggle-hidden")) button.click(); // the toggle's own way
+    if (button && solution.classList.contains("toggle-hidden"))
+      button.click(); // the toggle's own way
     else if (!button) solution.classList.add("toggle-shown"); // not made a toggle yet: stay open
   }
 
@@ -356,7 +450,9 @@
       html.classList.add("q-print-answers");
       window.print();
     });
-    window.addEventListener("afterprint", function () { html.classList.remove("q-print-answers"); });
+    window.addEventListener("afterprint", function () {
+      html.classList.remove("q-print-answers");
+    });
   }
 
   function start() {

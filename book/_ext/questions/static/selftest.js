@@ -16,7 +16,10 @@
   var MARKS = { known: "Known", "not-yet": "Not yet" };
 
   function slug(term) {
-    return term.toLowerCase().replace(/[^a-z0-9]+/g, "-").replace(/^-|-$/g, "");
+    return term
+      .toLowerCase()
+      .replace(/[^a-z0-9]+/g, "-")
+      .replace(/^-|-$/g, "");
   }
 
   /* The cards' marks kept in this browser: {slug: {mark, at}}; {} when none or unreadable. */
@@ -25,13 +28,19 @@
       var progress = JSON.parse(text);
       var d = progress && progress.version === 1 && progress.definitions;
       return d && d.version === VERSION && d.cards && typeof d.cards === "object" ? d.cards : {};
-    } catch (e) { return {}; }
+    } catch {
+      return {};
+    }
   }
 
   /* The store with one card's mark set (text), or null when the store is not one to write into. */
   function withMark(text, key, mark, at) {
     var progress;
-    try { progress = text ? JSON.parse(text) : { version: 1, attempts: [] }; } catch (e) { return null; }
+    try {
+      progress = text ? JSON.parse(text) : { version: 1, attempts: [] };
+    } catch {
+      return null;
+    }
     if (!progress || progress.version !== 1 || !Array.isArray(progress.attempts)) return null;
     var d = progress.definitions;
     if (d === undefined) d = progress.definitions = { version: VERSION, cards: {} };
@@ -47,7 +56,11 @@
   if (typeof document === "undefined") return;
 
   function stored() {
-    try { return localStorage.getItem(STORE); } catch (e) { return null; }
+    try {
+      return localStorage.getItem(STORE);
+    } catch {
+      return null;
+    }
   }
 
   function setUp(box, index) {
@@ -65,29 +78,44 @@
       definition.className = "st-definition";
       definition.id = "st-" + index + "-" + i;
       var node = strong ? strong.nextSibling : paragraph.firstChild;
-      while (node) { var next = node.nextSibling; definition.appendChild(node); node = next; }
+      while (node) {
+        var next = node.nextSibling;
+        definition.appendChild(node);
+        node = next;
+      }
       paragraph.appendChild(definition);
       var controls = document.createElement("span");
       controls.className = "st-controls";
       controls.hidden = true;
-      controls.innerHTML = '<span class="st-say">Say it, then </span>' +
+      controls.innerHTML =
+        '<span class="st-say">Say it, then </span>' +
         '<button type="button" class="st-reveal" aria-expanded="false"></button>' +
         '<span class="st-marking" hidden><button type="button" class="st-mark" data-mark="known" aria-pressed="false">' +
         'I knew it</button><button type="button" class="st-mark" data-mark="not-yet" aria-pressed="false">' +
-        "Not yet</button></span>" + '<span class="st-kept"></span>';
+        "Not yet</button></span>" +
+        '<span class="st-kept"></span>';
       item.appendChild(controls);
       var reveal = controls.querySelector(".st-reveal");
       var named = /^Newton/.test(term) ? term : term.charAt(0).toLowerCase() + term.slice(1);
       reveal.textContent = "Show the definition of " + named;
       reveal.setAttribute("aria-controls", definition.id);
       item.classList.add("st-card");
-      return { item: item, key: slug(term), term: term, definition: definition, controls: controls,
-        reveal: reveal, marking: controls.querySelector(".st-marking"), kept: controls.querySelector(".st-kept"),
-        buttons: controls.querySelectorAll(".st-mark") };
+      return {
+        item: item,
+        key: slug(term),
+        term: term,
+        definition: definition,
+        controls: controls,
+        reveal: reveal,
+        marking: controls.querySelector(".st-marking"),
+        kept: controls.querySelector(".st-kept"),
+        buttons: controls.querySelectorAll(".st-mark"),
+      };
     });
 
     function render() {
-      var marks = readCards(stored()), known = 0;
+      var marks = readCards(stored()),
+        known = 0;
       cards.forEach(function (card) {
         var mark = marks[card.key] && marks[card.key].mark;
         if (mark === "known") known += 1;
@@ -133,7 +161,9 @@
             status.textContent = "Your marks cannot be kept: the progress stored in this browser is in another format.";
             return;
           }
-          try { localStorage.setItem(STORE, text); } catch (e) {
+          try {
+            localStorage.setItem(STORE, text);
+          } catch {
             status.textContent = "This browser does not let the page keep your marks (private mode?).";
             return;
           }
@@ -145,7 +175,9 @@
       });
     });
 
-    window.addEventListener("storage", function (event) { if (event.key === STORE || event.key === null) render(); });
+    window.addEventListener("storage", function (event) {
+      if (event.key === STORE || event.key === null) render();
+    });
     render();
   }
 

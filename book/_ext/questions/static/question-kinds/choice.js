@@ -4,14 +4,24 @@
   "use strict";
 
   function markChoice(part, letter) {
-    var option = (part.options || []).filter(function (o) { return o.letter === letter; })[0];
+    var option = (part.options || []).filter(function (o) {
+      return o.letter === letter;
+    })[0];
     if (!option) return { code: "no-choice", message: "Choose one of the options A to D." };
     if (letter === part.answer) return { code: "correct", correct: true, message: "Correct." };
     // the option's feedback names the idea already
     return { code: "mistake", message: option.feedback, mistake: option.mistake, loses: option.loses, see: option.see };
   }
 
-  var kind = { kinds: ["mcq"], mark: function (part, answer) { return markChoice(part, answer.choice || ""); } };
+  var kind = {
+    kinds: ["mcq"],
+    mark: function (part, answer) {
+      return markChoice(part, answer.choice || "");
+    },
+  };
   if (typeof module === "object" && module.exports) module.exports = kind;
-  else kind.kinds.forEach(function (name) { (root.QuestionKinds = root.QuestionKinds || {})[name] = kind; });
+  else
+    kind.kinds.forEach(function (name) {
+      (root.QuestionKinds = root.QuestionKinds || {})[name] = kind;
+    });
 })(this);

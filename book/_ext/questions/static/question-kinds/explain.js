@@ -7,11 +7,17 @@
     if (!String(answer.text || "").trim()) {
       return { code: "no-answer", message: "Write your answer first, then compare it with the marking points." };
     }
-    return { code: "self-marked", message: "Now tick each marking point your answer makes: your marks follow.",
-      ticked: answer.ticked || [] };
+    return {
+      code: "self-marked",
+      message: "Now tick each marking point your answer makes: your marks follow.",
+      ticked: answer.ticked || [],
+    };
   }
 
   var kind = { kinds: ["explain"], mark: markExplanation };
   if (typeof module === "object" && module.exports) module.exports = kind;
-  else kind.kinds.forEach(function (name) { (root.QuestionKinds = root.QuestionKinds || {})[name] = kind; });
+  else
+    kind.kinds.forEach(function (name) {
+      (root.QuestionKinds = root.QuestionKinds || {})[name] = kind;
+    });
 })(this);

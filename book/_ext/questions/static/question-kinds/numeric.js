@@ -9,15 +9,22 @@
   // Reading what the student typed (static/answer-reading.js): loaded before this script in a page.
   var Reading = root.AnswerReading || require("../answer-reading.js");
   var Notation = root.Notation || require("../../../notation/static/notation.js");
-  var normalise = Reading.normalise, parseNumber = Reading.parseNumber, parseUnit = Reading.parseUnit,
-    quantityOf = Reading.quantityOf, sameDims = Reading.sameDims, recasedUnit = Reading.recasedUnit,
-    splitValueAndUnit = Reading.splitValueAndUnit, superscript = Reading.superscript;
+  var normalise = Reading.normalise,
+    parseNumber = Reading.parseNumber,
+    parseUnit = Reading.parseUnit,
+    quantityOf = Reading.quantityOf,
+    sameDims = Reading.sameDims,
+    recasedUnit = Reading.recasedUnit,
+    splitValueAndUnit = Reading.splitValueAndUnit,
+    superscript = Reading.superscript;
 
   // ---------------------------------------------------------------- marking
 
   // Whole numbers of steps of 10^place nearest x; both neighbours on a tie.
   function steps(x, place) {
-    var q = x / Math.pow(10, place), n = Math.floor(q), f = q - n;
+    var q = x / Math.pow(10, place),
+      n = Math.floor(q),
+      f = q - n;
     if (Math.abs(f - 0.5) < 1e-7) return [n, n + 1];
     return [f < 0.5 ? n : n + 1];
   }
@@ -25,17 +32,22 @@
   function stepsApart(typed, target, place) {
     var best = Infinity;
     steps(typed, place).forEach(function (a) {
-      steps(target, place).forEach(function (b) { best = Math.min(best, Math.abs(a - b)); });
+      steps(target, place).forEach(function (b) {
+        best = Math.min(best, Math.abs(a - b));
+      });
     });
     return best;
   }
 
   /* Is value the target rounded to sf significant figures (60 for 56.0 at 1 s.f.; not 10 for 7.5)? */
   function roundsTo(value, target, sf) {
-    var place = Math.floor(Math.log10(Math.abs(target)) + 1e-12) - sf + 1, scaled = value / Math.pow(10, place);
-    return steps(Math.abs(target), place).some(function (n) {
-      return Math.abs(Math.abs(scaled) - n) < 1e-7 * Math.max(1, n);
-    }) && (value < 0) === (target < 0);
+    var place = Math.floor(Math.log10(Math.abs(target)) + 1e-12) - sf + 1,
+      scaled = value / Math.pow(10, place);
+    return (
+      steps(Math.abs(target), place).some(function (n) {
+        return Math.abs(Math.abs(scaled) - n) < 1e-7 * Math.max(1, n);
+      }) && value < 0 === target < 0
+    );
   }
 
   /* Compare a typed number with a target (in the same unit) at every reading
@@ -46,7 +58,10 @@
    * (60 for 56.0: right to 1 s.f.). */
   function compare(number, target, minSf, checkSf) {
     var result = { match: false, matchFewSf: false };
-    if (target === 0) { result.match = number.value === 0; return result; } // zero has no significant figures
+    if (target === 0) {
+      result.match = number.value === 0;
+      return result;
+    } // zero has no significant figures
     var checkPlace = Math.floor(Math.log10(Math.abs(target)) + 1e-12) - checkSf + 1;
     for (var sf = number.sfMax; sf >= number.sfMin; sf--) {
       if (sf >= minSf) {
@@ -61,7 +76,10 @@
 
   function outcome(code, message, extra) {
     var result = { code: code, correct: code === "correct", message: message };
-    if (extra) Object.keys(extra).forEach(function (k) { result[k] = extra[k]; });
+    if (extra)
+      Object.keys(extra).forEach(function (k) {
+        result[k] = extra[k];
+      });
     return result;
   }
 
@@ -71,26 +89,42 @@
    *        choices, answerDirection, mistakes: [{value, unit, direction, feedback}], revisit}
    * answer: {value: text, unit: text, direction: text} */
   function mark(part, answer) {
-    var valueText = answer.value || "", unitText = answer.unit || "", direction = answer.direction || "";
+    var valueText = answer.value || "",
+      unitText = answer.unit || "",
+      direction = answer.direction || "";
     if (!normalise(unitText) && /[A-Za-zµμ°%]/.test(normalise(valueText).replace(/[eExX×]/g, ""))) {
       var split = splitValueAndUnit(valueText);
-      valueText = split[0]; unitText = split[1];
+      valueText = split[0];
+      unitText = split[1];
     }
     var number = parseNumber(valueText);
     if (!number.ok) return outcome("unreadable-number", number.message);
     var unit = parseUnit(unitText);
     var expected = parseUnit(part.unit).readings[0];
     // A unit in the wrong case: say so, and mark the answer as if it were written right.
-    var fits = unit.ok && unit.readings.some(function (r) { return sameDims(r.dims, expected.dims); });
+    var fits =
+      unit.ok &&
+      unit.readings.some(function (r) {
+        return sameDims(r.dims, expected.dims);
+      });
     var recased = !fits && !answer.recased && recasedUnit(unitText, expected.dims, expected.scale);
     if (recased) {
       if (recased.replace(/\s+/g, "") === normalise(part.unit).replace(/\s+/g, "")) recased = normalise(part.unit);
       var asMeant = mark(part, { value: valueText, unit: recased, direction: direction, recased: true });
-      var caseNote = "Units are case-sensitive: " + superscript(normalise(unitText)) + " is not " +
-        (unit.ok ? "a unit of " + part.quantity : "a unit") + ". You probably meant " + superscript(recased) + ".";
+      var caseNote =
+        "Units are case-sensitive: " +
+        superscript(normalise(unitText)) +
+        " is not " +
+        (unit.ok ? "a unit of " + part.quantity : "a unit") +
+        ". You probably meant " +
+        superscript(recased) +
+        ".";
       if (asMeant.code === "correct") {
-        return outcome("unit-case", caseNote + " With that unit the answer is right.",
-          { si: asMeant.si, valueRight: true, meant: recased });
+        return outcome("unit-case", caseNote + " With that unit the answer is right.", {
+          si: asMeant.si,
+          valueRight: true,
+          meant: recased,
+        });
       }
       asMeant.message = caseNote + " " + asMeant.message;
       asMeant.meant = recased;
@@ -98,26 +132,35 @@
     }
     if (!unit.ok) return outcome("unreadable-unit", unit.message);
 
-    var minSf = part.minSf, checkSf = part.checkSf; // from the rule table, with the part's data
+    var minSf = part.minSf,
+      checkSf = part.checkSf; // from the rule table, with the part's data
     var mode = part.direction || "none";
-    var quantity = part.quantity, units = superscript(part.units || part.unit);
+    var quantity = part.quantity,
+      units = superscript(part.units || part.unit);
     var typed = number.value;
     var size = mode === "signed" ? typed : Math.abs(typed);
     var target = mode === "signed" ? part.value : Math.abs(part.value);
 
     // The reading of the unit: the one with the right dimensions and the right value, if any.
     var readings = unit.empty ? [expected] : unit.readings;
-    var fitting = readings.filter(function (r) { return sameDims(r.dims, expected.dims); });
+    var fitting = readings.filter(function (r) {
+      return sameDims(r.dims, expected.dims);
+    });
     function against(value, scale) {
-      if (part.tolerance) { // read from a graph: right within half a small square either way
+      if (part.tolerance) {
+        // read from a graph: right within half a small square either way
         var near = Math.abs(size - value / scale) <= (part.tolerance / scale) * (1 + 1e-9);
         return { match: near, matchFewSf: false };
       }
       var n = { value: size, sfMin: number.sfMin, sfMax: number.sfMax, lead: number.lead };
       return compare(n, value / scale, minSf, checkSf);
     }
-    var reading = fitting.filter(function (r) { return against(target, r.scale).match; })[0] ||
-      fitting[0] || readings[0];
+    var reading =
+      fitting.filter(function (r) {
+        return against(target, r.scale).match;
+      })[0] ||
+      fitting[0] ||
+      readings[0];
     // Every outcome carries the answer in SI (for error carried forward) when its unit fits.
     var si = sameDims(reading.dims, expected.dims) ? size * reading.scale : null;
     function out(code, message, extra) {
@@ -146,10 +189,19 @@
       var found = namedMistake(reading.dims, reading.scale);
       if (found) return found;
       var other = quantityOf(reading.dims);
-      return out(against(target, 1).match ? "wrong-unit" : "wrong", (against(target, 1).match ? "The number is right, but " : "") +
-        superscript(normalise(unitText)) + (other && other !== quantity ?
-          " is a unit of " + other + ", not of " + quantity + "." : " is not a unit of " + quantity + ".") +
-        " Give " + quantity + " in " + units + ".");
+      return out(
+        against(target, 1).match ? "wrong-unit" : "wrong",
+        (against(target, 1).match ? "The number is right, but " : "") +
+          superscript(normalise(unitText)) +
+          (other && other !== quantity
+            ? " is a unit of " + other + ", not of " + quantity + "."
+            : " is not a unit of " + quantity + ".") +
+          " Give " +
+          quantity +
+          " in " +
+          units +
+          ".",
+      );
     }
 
     // A size typed with a minus sign: ignored where the direction is asked separately (the
@@ -163,7 +215,10 @@
     if (!result.match) {
       (part.alternatives || []).some(function (alt) {
         var byAlt = against(mode === "signed" ? alt.value : Math.abs(alt.value), reading.scale);
-        if (byAlt.match) { result = byAlt; alternative = alt; }
+        if (byAlt.match) {
+          result = byAlt;
+          alternative = alt;
+        }
         return byAlt.match;
       });
     }
@@ -172,7 +227,8 @@
     if (result.match && !sign && directionRight) {
       if (unit.empty) return out("missing-unit", "The number is right. Now give the unit: " + units + ".");
       if (alternative) return out("alternative", "Accepted: " + alternative.why + ".");
-      if (signIgnored) return out("ignore-sign", "Correct: the minus sign is ignored, as the direction is given separately.");
+      if (signIgnored)
+        return out("ignore-sign", "Correct: the minus sign is ignored, as the direction is given separately.");
       return out("correct", signed ? "Correct: the minus sign says " + part.signMeans + "." : "Correct.");
     }
     if (result.match && !sign && mode === "choice" && !direction) {
@@ -183,45 +239,91 @@
     if (named) return named;
 
     if (!unit.empty && reading.scale !== 1 && against(target, 1).match && sameDims(expected.dims, [0, 0, 0, 1])) {
-      return out("angle-unit", "That number is right in degrees, but " + superscript(normalise(unitText)) +
-        " is not degrees: 1 rad = 57.3°. Give the angle in ° (degrees).");
+      return out(
+        "angle-unit",
+        "That number is right in degrees, but " +
+          superscript(normalise(unitText)) +
+          " is not degrees: 1 rad = 57.3°. Give the angle in ° (degrees).",
+      );
     }
     if (!unit.empty && reading.scale !== 1 && against(target, 1).match) {
-      return out("prefix", "Check the prefix: " + Notation.formatNumber(typed, number.sfMax) + " " + superscript(part.unit) +
-        " would be right, but 1 " + superscript(normalise(unitText)) + " = " + Notation.formatNumber(reading.scale, 1) + " " +
-        superscript(part.unit) + ". Convert g to kg, ms to s, cm to m.");
+      return out(
+        "prefix",
+        "Check the prefix: " +
+          Notation.formatNumber(typed, number.sfMax) +
+          " " +
+          superscript(part.unit) +
+          " would be right, but 1 " +
+          superscript(normalise(unitText)) +
+          " = " +
+          Notation.formatNumber(reading.scale, 1) +
+          " " +
+          superscript(part.unit) +
+          ". Convert g to kg, ms to s, cm to m.",
+      );
     }
 
     if (sign && result.match) {
-      return out("sign-on-size", "The size is right, but a " + quantity +
-        " here is a size with no sign: leave out the minus sign.");
+      return out(
+        "sign-on-size",
+        "The size is right, but a " + quantity + " here is a size with no sign: leave out the minus sign.",
+      );
     }
-    if (mode === "signed" && target !== 0 && compare(
-      { value: -typed, sfMin: number.sfMin, sfMax: number.sfMax, lead: number.lead },
-      target / reading.scale, minSf, checkSf).match) {
-      return out("sign", "The size is right but the sign is wrong. Positive is " + part.positive +
-        (target < 0 ? ", and this points the other way, so it is negative." :
-          ", and this points that way, so it is positive."));
+    if (
+      mode === "signed" &&
+      target !== 0 &&
+      compare(
+        { value: -typed, sfMin: number.sfMin, sfMax: number.sfMax, lead: number.lead },
+        target / reading.scale,
+        minSf,
+        checkSf,
+      ).match
+    ) {
+      return out(
+        "sign",
+        "The size is right but the sign is wrong. Positive is " +
+          part.positive +
+          (target < 0
+            ? ", and this points the other way, so it is negative."
+            : ", and this points that way, so it is positive."),
+      );
     }
     if (result.match && !directionRight) {
-      return out("direction", "The size is right but the direction is wrong." +
-        (part.directionHint ? " " + part.directionHint : ""));
+      return out(
+        "direction",
+        "The size is right but the direction is wrong." + (part.directionHint ? " " + part.directionHint : ""),
+      );
     }
     if (result.matchFewSf) {
       var few = Math.min(number.sfMax, minSf - 1);
-      return out("too-few-sf", few + " s.f.: the A1 needs " + minSf + " or more" +
-        (number.sfMin < number.sfMax ? " (zeros at the end of a whole number may not count: write 7.0 × 10², not 700)." : "."));
+      return out(
+        "too-few-sf",
+        few +
+          " s.f.: the A1 needs " +
+          minSf +
+          " or more" +
+          (number.sfMin < number.sfMax
+            ? " (zeros at the end of a whole number may not count: write 7.0 × 10², not 700)."
+            : "."),
+      );
     }
     // Slips computed from the working (physics_figures.questions): nothing else is called rounding.
     if (number.sfMax >= 2 && typeof part.gNineEight === "number" && against(part.gNineEight, reading.scale).match) {
-      return out("g-9.8", "That is the answer with g = 9.8 m s⁻². The data give g = 9.81 m s⁻²: use it, " +
-        "and keep every figure until the end.");
+      return out(
+        "g-9.8",
+        "That is the answer with g = 9.8 m s⁻². The data give g = 9.81 m s⁻²: use it, " +
+          "and keep every figure until the end.",
+      );
     }
     var partWay = part.roundedPartWay || [];
     for (var i = 0; i < partWay.length; i++) {
       if (number.sfMax >= 2 && against(partWay[i].value, reading.scale).match) {
-        return out("rounded-part-way", "Close, but that is what rounding " + partWay[i].rounded +
-          " part-way through gives. Keep the full calculator value until the end, then round only the answer.");
+        return out(
+          "rounded-part-way",
+          "Close, but that is what rounding " +
+            partWay[i].rounded +
+            " part-way through gives. Keep the full calculator value until the end, then round only the answer.",
+        );
       }
     }
     return out("wrong", "Not right. " + (part.revisit || "Check your method and your arithmetic."));
@@ -229,5 +331,8 @@
 
   var kind = { kinds: ["numeric", "graph"], mark: mark };
   if (typeof module === "object" && module.exports) module.exports = kind;
-  else kind.kinds.forEach(function (name) { (root.QuestionKinds = root.QuestionKinds || {})[name] = kind; });
+  else
+    kind.kinds.forEach(function (name) {
+      (root.QuestionKinds = root.QuestionKinds || {})[name] = kind;
+    });
 })(this);

@@ -10,7 +10,7 @@ from collections import Counter
 import pytest
 
 from physics_figures import bank
-from physics_figures.variants import MIN_SITUATIONS, MIN_VARIANTS, QUESTION_TYPES
+from physics_figures.variants import MIN_SITUATIONS, MIN_VARIANTS
 
 pytestmark = pytest.mark.site
 
@@ -49,7 +49,7 @@ def test_the_bank_meets_every_minimum_by_type_and_kind(forms):
     print(f"\ntemplates {len(forms)}; by type {dict(by_type)}; by kind {dict(by_kind)}; "
           f"explain parts {explain_parts}")
     assert len(forms) >= MIN_TEMPLATES
-    assert set(by_type) == set(QUESTION_TYPES)
+    assert set(by_type) == set(bank.TOPIC.type_keys)
     for kind, least in MIN_BY_TYPE.items():
         assert by_type[kind] >= least, f"{kind}: {by_type[kind]} of {least}"
     for kind, least in MIN_BY_KIND.items():

@@ -14,7 +14,7 @@ import pytest
 from test_worksheets_pdf import MARK, SHEETS, text
 
 from physics_figures import bank
-from physics_figures.worksheets.page import MOODLE_FILE
+from physics_figures.worksheets.page import moodle_file
 
 pytestmark = pytest.mark.site
 
@@ -36,7 +36,7 @@ def test_the_site_awards_each_part_the_marks_of_every_variant(site_dir, key):
 
 
 def test_moodle_gives_each_part_the_same_marks(site_dir):
-    root = ET.parse(site_dir / "teachers" / MOODLE_FILE).getroot()
+    root = ET.parse(site_dir / "teachers" / moodle_file()).getroot()
     marks: dict[tuple[str, int, str], float] = defaultdict(float)
     for question in root.iter("question"):
         idnumber = question.findtext("idnumber")

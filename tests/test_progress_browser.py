@@ -14,7 +14,6 @@ import pytest
 from browser import axe_violations, open_browser, serve_site
 
 from physics_figures import bank
-from physics_figures.variants import QUESTION_TYPES
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
@@ -96,7 +95,7 @@ def _stored(page):
 def test_every_type_is_listed_by_its_name_with_what_the_bank_has(context):
     page = _open(context, PROGRESS)
     data = _embedded(page)
-    assert [kind["type"] for kind in data["types"]] == list(QUESTION_TYPES)
+    assert [kind["type"] for kind in data["types"]] == list(bank.TOPIC.type_keys)
     for kind in data["types"]:
         section = _section(page, kind["type"])
         assert section.locator("h2").inner_text() == kind["name"]
@@ -204,7 +203,7 @@ def test_without_javascript_the_page_says_what_it_is_for_and_what_it_needs(site)
     assert page.locator(".pp-needs-js").is_visible()
     assert "JavaScript" in page.locator(".pp-needs-js").inner_text()
     assert not page.locator(".pp-file").is_visible()  # its buttons would do nothing
-    assert page.locator(".pp-type").count() == len(QUESTION_TYPES)
+    assert page.locator(".pp-type").count() == len(bank.TOPIC.type_keys)
     context.close()
     context = browser.new_context()
     page = context.new_page()

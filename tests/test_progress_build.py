@@ -14,7 +14,6 @@ from pathlib import Path
 import pytest
 
 from physics_figures import bank
-from physics_figures.variants import QUESTION_TYPES
 
 pytestmark = [pytest.mark.build]
 
@@ -27,6 +26,7 @@ def _project(tmp_path: Path, asked: str) -> Path:
         import sys
         sys.path.insert(0, {str(ROOT / "book" / "_ext")!r})
         extensions = ["myst_parser", "questions"]
+        question_topics = ["physics_figures.bank"]
         root_doc = "index"
         """))
     (tmp_path / "index.md").write_text("# Book\n\n```{toctree}\nasked\nprogress\n```\n")
@@ -53,7 +53,7 @@ def test_the_page_embeds_the_bank_by_type_with_the_page_that_places_each(tmp_pat
     result = _build(source, "html")
     assert result.returncode == 0, result.stderr
     data = _embedded(source)
-    assert [kind["type"] for kind in data["types"]] == list(QUESTION_TYPES)
+    assert [kind["type"] for kind in data["types"]] == list(bank.TOPIC.type_keys)
     entries = {t["key"]: t for kind in data["types"] for t in kind["templates"]}
     assert set(entries) == {t.key for t in bank.TEMPLATES.values() if not t.try_first}
     assert entries[key]["page"] == "asked.html"

@@ -25,7 +25,6 @@ import yaml
 from physics_figures import bank, textformat
 from physics_figures import questions as q
 from physics_figures.notation import round_number
-from physics_figures.variants import QUESTION_TYPES
 
 ROOT = Path(__file__).resolve().parents[1]
 SPHINX_BUILD = Path(sys.executable).with_name("sphinx-build")
@@ -481,6 +480,7 @@ def _sphinx_project(tmp_path: Path, body: str) -> Path:
         import sys
         sys.path.insert(0, {str(ROOT / "book" / "_ext")!r})
         extensions = ["myst_parser", "questions"]
+        question_topics = ["physics_figures.bank"]
         myst_enable_extensions = ["dollarmath"]
         root_doc = "index"
         latex_documents = [("index", "book.tex", "Book", "Author", "manual")]
@@ -557,7 +557,7 @@ def test_a_template_directive_with_text_or_an_unknown_key_fails_the_strict_build
     result = _build(source, "html")
     assert result.returncode != 0
     assert "question quick-check-1: a template writes its own text; leave the directive empty" in result.stderr
-    assert "question: no template 'quick-check-99' in physics_figures.bank" in result.stderr
+    assert "question: no template 'quick-check-99' in the topics physics_figures.bank" in result.stderr
 
 
 @pytest.mark.build
@@ -607,7 +607,7 @@ def test_the_books_question_pages_place_every_question_once_in_book_order():
     for kind, page in PRACTICE_PAGES.items():
         assert _placed(page) == [t.key for t in bank.by_type(kind) if t.key not in bank.QUICK_CHECK]
     index = (ROOT / "book" / "exam" / "practice.md").read_text()
-    for kind in QUESTION_TYPES:
+    for kind in bank.TOPIC.type_keys:
         if kind in PRACTICE_PAGES:
             assert f"{{ref}}`{PRACTICE_PAGES[kind]}`" in index, kind
         else:  # no page yet: its questions are elsewhere, and the index says where

@@ -18,7 +18,6 @@ from physics_figures.variants import (
     KINDS,
     MIN_SITUATIONS,
     MIN_VARIANTS,
-    QUESTION_TYPES,
     Draw,
     Template,
     accepted_band,
@@ -41,7 +40,7 @@ def test_each_template_has_enough_distinct_variants(template):
     texts = {(q.text, q.graph) for q in template.variants}
     assert len(texts) == len(template.values), "two variants print the same text and graph"
     assert set(template.kinds) == {getattr(p, "kind", "numeric") for q in template.variants for p in q.parts}
-    assert template.type in QUESTION_TYPES and set(template.kinds) <= set(KINDS)
+    assert template.type in bank.TOPIC.type_keys and set(template.kinds) <= set(KINDS)
 
 
 @pytest.mark.parametrize(("template", "index"), VARIANTS)
@@ -130,10 +129,11 @@ def test_multiple_choice_options_come_in_increasing_order_from_named_mistakes():
         choices_in_order(11.6, {"a": (11.62, "x"), "b": (31.2, "y"), "c": (11.4, "z")}, sig_figs=3, unit="N")
 
 
-def test_a_template_names_a_real_type_and_kind():
+def test_a_template_names_a_type_and_a_real_kind():
+    """A template names a type (its topic checks which: tests/test_topics.py) and real kinds."""
     build = bank.TEMPLATES["quick-check-1"].build
-    with pytest.raises(ValueError, match=r"type must be one of"):
-        Template("x", "kinematics", ("numeric",), "x", build)
+    with pytest.raises(ValueError, match=r"type must name one of its topic's question types"):
+        Template("x", "", ("numeric",), "x", build)
     with pytest.raises(ValueError, match=r"kinds must be some of"):
         Template("x", "drag", ("essay",), "x", build)
 

@@ -17,7 +17,6 @@ import pytest
 from physics_figures import answers, bank
 from physics_figures.bank import worked_examples
 from physics_figures.notation import format_number
-from physics_figures.variants import QUESTION_TYPES
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = range(1, 6)
@@ -185,7 +184,7 @@ def test_try_first_parts_keep_the_printed_numbers_and_are_not_counted_in_the_ban
         template = bank.TEMPLATES[key]
         assert template.try_first and not template.draws and len(template.values) == 1
         assert template.type == TYPES[key] and template.kinds == ("numeric",)
-    counted = [t.key for kind in QUESTION_TYPES for t in bank.by_type(kind)]
+    counted = [t.key for kind in bank.TOPIC.type_keys for t in bank.by_type(kind)]
     assert not set(KEYS) & set(counted)
     assert len(counted) == len(bank.TEMPLATES) - len(KEYS)
 

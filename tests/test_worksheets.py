@@ -14,9 +14,7 @@ from moodle_format import check_file
 
 from physics_figures import bank, worksheets
 from physics_figures.notation import format_number
-from physics_figures.variants import QUESTION_TYPES
 from physics_figures.worksheets import (
-    EXAM_QUESTION_COUNTS,
     bank_templates,
     choose_templates,
     part_marks,
@@ -44,8 +42,9 @@ def test_exam_weights_are_the_how_to_pages_table():
     """The end-of-topic test is weighted by the counts the book prints (from the notes)."""
     page = (ROOT / "book" / "exam" / "how-to.md").read_text()
     counts = [int(n) for n in re.findall(r"^\s+- (\d+)\s*$", page, re.MULTILINE)]
-    assert counts == list(EXAM_QUESTION_COUNTS.values())
-    assert list(EXAM_QUESTION_COUNTS) == list(QUESTION_TYPES)
+    assert counts == [t.exam_count for t in bank.TOPIC.types]
+    assert [t.key for t in bank.TOPIC.types] == ["newton", "drag", "force-momentum", "definitions", "momentum-line",
+                                                 "elastic", "two-d"]  # the notes' order
 
 
 @pytest.mark.parametrize("template", TEMPLATES, ids=lambda t: t.key)
@@ -82,8 +81,8 @@ def test_chosen_templates_make_exactly_the_marks_and_follow_the_exam_weights(mar
     chosen = choose_templates(TEMPLATES, marks, seed=1)
     assert sum(template_marks(t) for t in chosen) == marks
     if marks == 40:
-        total = sum(EXAM_QUESTION_COUNTS.values())
-        for question_type, count in EXAM_QUESTION_COUNTS.items():
+        total = sum([t.exam_count for t in bank.TOPIC.types])
+        for question_type, count in ((t.key, t.exam_count) for t in bank.TOPIC.types):
             got = sum(template_marks(t) for t in chosen if t.type == question_type)
             available = sum(template_marks(t) for t in TEMPLATES if t.type == question_type)
             # each type within a question's marks of its share (or all it has)
@@ -92,7 +91,7 @@ def test_chosen_templates_make_exactly_the_marks_and_follow_the_exam_weights(mar
 
 def test_site_sheets_are_one_per_type_and_the_40_mark_test():
     sheets = site_sheets()
-    assert [s.name for s in sheets] == [f"worksheet-{t}" for t in QUESTION_TYPES] + ["end-of-topic-test"]
+    assert [s.name for s in sheets] == [f"worksheet-{t}" for t in bank.TOPIC.type_keys] + ["end-of-topic-test"]
     assert sheets[-1].marks == worksheets.END_OF_TOPIC_MARKS
     for sheet in sheets[:-1]:
         question_type = sheet.name.removeprefix("worksheet-")
@@ -205,12 +204,12 @@ def test_moodle_export_passes_the_structural_check(small_export):
 def test_moodle_has_a_category_per_type_and_every_variant_of_each_part(small_export):
     root, _ = small_export
     _, categories = check_file(root)
-    root_path = moodle_export.ROOT_CATEGORY
-    assert f"{root_path}/{worksheets.TYPE_TITLES['drag']}" in categories
+    root_path = moodle_export.root_category()
+    assert f"{root_path}/{bank.TOPIC.type('drag').title}" in categories
     template = bank.TEMPLATES["quick-check-3"]
     first = template.variant(0)
     for index, part in enumerate(first.parts):
-        path = f"{root_path}/{worksheets.TYPE_TITLES['drag']}/{template.title} {first.label(index)}{part.prompt}"
+        path = f"{root_path}/{bank.TOPIC.type('drag').title}/{template.title} {first.label(index)}{part.prompt}"
         # a part that asks for a direction is one Cloze question (size and direction boxes)
         kind = "cloze" if part.direction == "choice" else "numerical"
         asked = [q for q in categories[path] if q.get("type") == kind]

@@ -18,8 +18,8 @@ from test_pdf import squash
 from physics_figures.notation import format_number
 from physics_figures.worksheets import site_sheets
 from physics_figures.worksheets.latex import MISTAKE_SIG_FIGS, wrong_answers
-from physics_figures.worksheets.moodle import MOODLE_MIN_VARIANTS, ROOT_CATEGORY
-from physics_figures.worksheets.page import MOODLE_FILE, site_files
+from physics_figures.worksheets.moodle import MOODLE_MIN_VARIANTS, root_category
+from physics_figures.worksheets.page import moodle_file, site_files
 
 SHEETS = site_sheets()
 MARK = re.compile(r"\[(\d+)\]")
@@ -152,7 +152,7 @@ def test_print_quality_a4_embedded_fonts_vector_graphs(teachers, sheet):
 def test_moodle_file_parses_holds_every_template_and_passes_the_structural_check(teachers):
     from physics_figures.worksheets import bank_templates
 
-    root = ET.parse(teachers / MOODLE_FILE).getroot()
+    root = ET.parse(teachers / moodle_file()).getroot()
     problems, categories = check_file(root)
     assert not problems, "\n".join(problems[:30])
     ids = [q.findtext("idnumber") for q in root.iter("question") if q.get("type") != "category"]
@@ -163,7 +163,7 @@ def test_moodle_file_parses_holds_every_template_and_passes_the_structural_check
             variants = {i for i in ids if re.fullmatch(rf"{re.escape(template.key)}-v\d+-{part_id}", i)}
             assert len(variants) == len(template.values), (template.key, part_id)
             assert len(variants) >= MOODLE_MIN_VARIANTS or len(variants) == len(template.values)
-    types = [path for path in categories if path.count("/") == ROOT_CATEGORY.count("/") + 1]
+    types = [path for path in categories if path.count("/") == root_category().count("/") + 1]
     assert len(types) == 7
 
 

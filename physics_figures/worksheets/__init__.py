@@ -1,4 +1,3 @@
-# ruff: noqa: RUF003  (comments quote the notes: en dashes)
 """The teacher's kit: worksheets in several versions, each with its own answer key.
 
 A teacher chooses question types or templates of the bank (physics_figures.bank), the
@@ -12,8 +11,9 @@ the one the book and its answer key show, so versions use the other variants fir
 :mod:`.build` typesets them with xelatex. :mod:`.moodle` exports the bank as Moodle XML.
 ``python -m physics_figures.worksheets --help`` is the command line.
 
-The bank is read generically (``bank.TEMPLATES``, ``bank.by_type``): a template added to
-the bank appears here with nothing else to change.
+A topic is read generically (physics_figures.topics: its types, their titles and exam
+weights, its templates): a template added to a topic's bank, or a new topic, appears here
+with nothing else to change. The Dynamics topic (physics_figures.bank) is the default.
 """
 
 from __future__ import annotations
@@ -25,15 +25,13 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
 
-from .. import bank
+from .. import topics
 from ..questions import Question
-from ..variants import QUESTION_TYPES, Template
+from ..topics import Topic
+from ..variants import Template
 
-#: How often each type came up in the Paper 1 and Paper 2 questions of 2021–2025 (the notes,
-#: "How to do it"; book/exam/how-to.md prints the same table, which a test compares). The
-#: end-of-topic test shares its marks among the types in these proportions.
-EXAM_QUESTION_COUNTS = {"newton": 49, "drag": 48, "force-momentum": 44, "definitions": 36,
-                        "momentum-line": 23, "elastic": 23, "two-d": 12}
+#: The topic a sheet draws from unless told otherwise (--topic on the command line).
+DEFAULT_TOPIC = "physics_figures.bank"
 #: The seed of the worksheets on the site (`make worksheets`).
 SITE_SEED = 2026
 #: The site's mixed end-of-topic test.
@@ -49,10 +47,15 @@ def _require(ok: bool, name: str, value, rule: str) -> None:
         raise ValueError(f"{name} {rule} (got {name}={value!r})")
 
 
-def bank_templates() -> list[Template]:
+def topic_of(topic: Topic | None) -> Topic:
+    """The topic given, or the default one."""
+    return topics.load(DEFAULT_TOPIC) if topic is None else topic
+
+
+def bank_templates(topic: Topic | None = None) -> list[Template]:
     """Every template a worksheet or the Moodle file may use, in the bank's order (a worked
     example's try-first part is not one: its statement is the example's)."""
-    return [template for question_type in QUESTION_TYPES for template in bank.by_type(question_type)]
+    return topic_of(topic).practice_templates()
 
 
 def template_marks(template: Template) -> int:
@@ -120,10 +123,12 @@ def _subset_sums(templates: Sequence[Template], most: int) -> dict[int, tuple[Te
     return sums
 
 
-def choose_templates(templates: Sequence[Template], marks: int, seed: int) -> list[Template]:
+def choose_templates(templates: Sequence[Template], marks: int, seed: int, topic: Topic | None = None
+                     ) -> list[Template]:
     """Templates making exactly ``marks``, shared among their types as the exam shares its
-    questions (EXAM_QUESTION_COUNTS), drawn by ``seed``. ValueError when no set of them
-    makes that many marks, naming the nearest totals that can be made."""
+    questions (each type's exam_count in the topic), drawn by ``seed``. ValueError when no
+    set of them makes that many marks, naming the nearest totals that can be made."""
+    topic = topic_of(topic)
     rng = random.Random(f"worksheet-templates:{seed}")
     by_type: dict[str, list[Template]] = {}
     for template in templates:
@@ -134,8 +139,9 @@ def choose_templates(templates: Sequence[Template], marks: int, seed: int) -> li
     _require(marks <= available, "marks", marks,
              f"is more than the {available} marks the bank holds for "
              f"{', '.join(sorted(by_type))} ({len(templates)} templates)")
-    weight = sum(EXAM_QUESTION_COUNTS[t] for t in by_type)
-    targets = {t: marks * EXAM_QUESTION_COUNTS[t] / weight for t in by_type}
+    counts = {t: topic.type(t).exam_count for t in by_type}
+    weight = sum(counts.values()) or 1
+    targets = {t: marks * counts[t] / weight for t in by_type}
     # Per type: the totals it can make; then over the types: the exact total that strays
     # least from each type's share.
     options = {t: _subset_sums(group, marks) for t, group in by_type.items()}
@@ -158,18 +164,20 @@ def choose_templates(templates: Sequence[Template], marks: int, seed: int) -> li
                          f"({', '.join(f'{t.key}: {template_marks(t)}' for t in templates)}); "
                          f"the nearest totals that can are {below} and {above} (got marks={marks!r})")
     chosen = [t for question_type, amount in best[marks][1] for t in options[question_type][amount]]
-    order = {template.key: index for index, template in enumerate(bank_templates())}
+    order = {template.key: index for index, template in enumerate(bank_templates(topic))}
     return sorted(chosen, key=lambda t: order.get(t.key, len(order)))
 
 
-def select(*, types: Sequence[str] = (), templates: Sequence[str] = ()) -> list[Template]:
+def select(*, types: Sequence[str] = (), templates: Sequence[str] = (), topic: Topic | None = None
+           ) -> list[Template]:
     """The templates named by type or by key (both may be given), in the bank's order.
     ValueError names a type or template that does not exist."""
+    topic = topic_of(topic)
     _require(bool(types) or bool(templates), "types", list(types), "or templates must name something to ask")
     for question_type in types:
-        _require(question_type in QUESTION_TYPES, "types", question_type,
-                 f"must name question types of the bank: {', '.join(QUESTION_TYPES)}")
-    known = {t.key: t for t in bank_templates()}
+        _require(question_type in topic.type_keys, "types", question_type,
+                 f"must name question types of the bank: {', '.join(topic.type_keys)}")
+    known = {t.key: t for t in bank_templates(topic)}
     for key in templates:
         if key not in known:
             close = difflib.get_close_matches(key, known, n=3)  # a typing slip
@@ -178,7 +186,7 @@ def select(*, types: Sequence[str] = (), templates: Sequence[str] = ()) -> list[
                              f"`python -m physics_figures.worksheets --list` lists them "
                              f"(got templates={list(templates)!r})")
     wanted = set(templates)
-    chosen = [t for t in bank_templates() if t.type in types or t.key in wanted]
+    chosen = [t for t in bank_templates(topic) if t.type in types or t.key in wanted]
     return chosen
 
 
@@ -192,7 +200,7 @@ def _variants_for(template: Template, count: int, seed: int) -> list[int]:
 
 
 def plan(name: str, title: str, templates: Sequence[Template], *, versions: int, seed: int,
-         marks: int | None = None) -> Sheet:
+         marks: int | None = None, topic: Topic | None = None) -> Sheet:
     """A sheet's versions: the templates (all of them, or a set making ``marks``), each
     version with its own variant of each. ValueError when the request cannot be filled."""
     _require(isinstance(versions, int) and 1 <= versions <= MAX_VERSIONS, "versions", versions,
@@ -206,7 +214,7 @@ def plan(name: str, title: str, templates: Sequence[Template], *, versions: int,
              + ": ask for fewer versions or leave those templates out")
     if marks is not None:
         _require(isinstance(marks, int) and marks >= 1, "marks", marks, "must be a whole number, 1 or more")
-        templates = choose_templates(templates, marks, seed)
+        templates = choose_templates(templates, marks, seed, topic)
     chosen_variants = {t.key: _variants_for(t, versions, seed) for t in templates}
     return Sheet(name, title, seed, tuple(
         Version(string.ascii_uppercase[index],
@@ -214,28 +222,18 @@ def plan(name: str, title: str, templates: Sequence[Template], *, versions: int,
         for index in range(versions)))
 
 
-#: The types' names, as the book's "How to do it" page gives them.
-TYPE_TITLES = {
-    "newton": "Newton's laws, F = ma and third-law pairs",
-    "drag": "Drag, air resistance and terminal velocity",
-    "force-momentum": "Force as rate of change of momentum",
-    "definitions": "Mass, weight and the definitions",
-    "momentum-line": "Conservation of momentum in a straight line",
-    "elastic": "Elastic and inelastic collisions",
-    "two-d": "Conservation of momentum in two dimensions",
-}
-
-
-def site_sheets(*, seed: int = SITE_SEED, versions: int = SITE_VERSIONS) -> list[Sheet]:
+def site_sheets(*, seed: int = SITE_SEED, versions: int = SITE_VERSIONS, topic: Topic | None = None) -> list[Sheet]:
     """The site's sheets: a worksheet of every template of each type, and the mixed 40-mark
     end-of-topic test weighted like the exam."""
+    topic = topic_of(topic)
     sheets = []
-    for question_type in QUESTION_TYPES:
-        usable = [t for t in bank.by_type(question_type) if len(t.values) >= versions]
+    for question_type in topic.types:
+        usable = [t for t in topic.by_type(question_type.key) if len(t.values) >= versions]
         if usable:
-            sheets.append(plan(f"worksheet-{question_type}", f"Worksheet: {TYPE_TITLES[question_type]}",
-                               usable, versions=versions, seed=seed))
-    usable = [t for t in bank_templates() if len(t.values) >= versions]
-    sheets.append(plan("end-of-topic-test", "Dynamics: end-of-topic test", usable, versions=versions,
-                       seed=seed, marks=END_OF_TOPIC_MARKS))
+            sheets.append(plan(f"worksheet-{question_type.key}", f"Worksheet: {question_type.title}",
+                               usable, versions=versions, seed=seed, topic=topic))
+    usable = [t for t in bank_templates(topic) if len(t.values) >= versions]
+    marks = min(END_OF_TOPIC_MARKS, sum(template_marks(t) for t in usable))  # a small topic: all it has
+    sheets.append(plan("end-of-topic-test", f"{topic.name}: end-of-topic test", usable, versions=versions,
+                       seed=seed, marks=marks, topic=topic))
     return sheets

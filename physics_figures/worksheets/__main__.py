@@ -4,6 +4,7 @@
     python -m physics_figures.worksheets --templates quick-check-3,practice-lift --versions 2 --out sheets/
     python -m physics_figures.worksheets --list
     python -m physics_figures.worksheets --site --out _build/html/teachers     (make worksheets)
+    python -m physics_figures.worksheets --topic my_topic --site --out sheets/  (another topic)
 """
 
 from __future__ import annotations
@@ -13,9 +14,10 @@ import sys
 import time
 from pathlib import Path
 
+from .. import topics
 from ..notation import format_number
-from ..variants import QUESTION_TYPES
-from . import SITE_SEED, TYPE_TITLES, bank_templates, plan, select, site_sheets, template_marks
+from ..topics import Topic
+from . import DEFAULT_TOPIC, SITE_SEED, bank_templates, plan, select, site_sheets, template_marks
 
 
 def _names(text: str) -> list[str]:
@@ -27,7 +29,9 @@ def parser() -> argparse.ArgumentParser:
         prog="python -m physics_figures.worksheets",
         description="Worksheets in several versions (different numbers, the same marks), each "
                     "with its own answer key, typeset by xelatex.")
-    p.add_argument("--types", default="", help=f"question types, comma-separated: {','.join(QUESTION_TYPES)}")
+    p.add_argument("--topic", default=DEFAULT_TOPIC,
+                   help=f"the topic's module, whose TOPIC the sheets draw from (default {DEFAULT_TOPIC})")
+    p.add_argument("--types", default="", help="question types, comma-separated (see --list)")
     p.add_argument("--templates", default="", help="template keys, comma-separated (see --list)")
     p.add_argument("--marks", type=int, default=None,
                    help="total marks (default: every template asked for)")
@@ -44,35 +48,40 @@ def parser() -> argparse.ArgumentParser:
     return p
 
 
-def _list() -> None:
-    for question_type in QUESTION_TYPES:
-        print(f"{question_type}: {TYPE_TITLES[question_type]}")
-        for template in bank_templates():
-            if template.type == question_type:
+def _list(topic: Topic) -> None:
+    for question_type in topic.types:
+        print(f"{question_type.key}: {question_type.title}")
+        for template in bank_templates(topic):
+            if template.type == question_type.key:
                 print(f"  {template.key:32} {template_marks(template):2} marks  "
                       f"{len(template.values):2} variants  {'/'.join(template.kinds)}")
 
 
 def main(argv: list[str] | None = None) -> int:
     args = parser().parse_args(argv)
+    try:
+        topic = topics.load(args.topic)
+    except ValueError as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 2
     if args.list:
-        _list()
+        _list(topic)
         return 0
     from .build import build  # after argument errors: they need no TeX
 
     try:
         if args.site:
-            sheets = site_sheets()
+            sheets = site_sheets(topic=topic)
         else:
             types, keys = _names(args.types), _names(args.templates)
             if not types and not keys:
                 raise ValueError("types or templates must name what to ask (got neither): e.g. "
                                  "--types drag,two-d or --templates quick-check-3")
-            templates = select(types=types, templates=keys)
-            title = args.title or ("Worksheet: " + "; ".join(TYPE_TITLES[t] for t in types)
+            templates = select(types=types, templates=keys, topic=topic)
+            title = args.title or ("Worksheet: " + "; ".join(topic.type(t).title for t in types)
                                    if types and not keys else "Worksheet")
             sheets = [plan(args.name, title, templates, versions=args.versions, seed=args.seed,
-                           marks=args.marks)]
+                           marks=args.marks, topic=topic)]
     except ValueError as error:
         print(f"error: {error}", file=sys.stderr)
         return 2

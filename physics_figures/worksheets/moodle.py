@@ -49,16 +49,22 @@ from pathlib import Path
 
 import numpy
 
-from .. import marking, textformat
+from .. import marking, textformat, topics
 from ..notation import format_number, plain_number, round_number
 from ..questions import OPTION_LETTERS, Question, unit_text
-from ..variants import QUESTION_TYPES, Template
-from . import TYPE_TITLES, bank_templates, part_marks
+from ..topics import Topic
+from ..variants import Template
+from . import DEFAULT_TOPIC, bank_templates, part_marks, topic_of
 from .latex import MISTAKE_SIG_FIGS, ecf_note
 
 #: Moodle's question bank is filled with this many variants of a template at least.
 MOODLE_MIN_VARIANTS = 10
-ROOT_CATEGORY = "$course$/top/Dynamics (9702)"
+
+
+def root_category(topic: Topic | None = None) -> str:
+    """The topic's category in Moodle's question bank: "$course$/top/Dynamics (9702)"."""
+    return f"$course$/top/{topic_of(topic).name} (9702)"
+
 #: The written forms of a right answer Moodle is given: the key at 2 and at 3 s.f. (an answer
 #: at 4 s.f. or more falls in the 3 s.f. band, as the book takes it).
 RIGHT_SIG_FIGS = (2, 3)
@@ -364,28 +370,33 @@ def variant_indices(template: Template) -> range:
     return range(len(template.values))
 
 
-def export(templates: list[Template] | None = None) -> tuple[ET.ElementTree, dict[str, int]]:
-    """The Moodle XML tree of the bank's templates, and how many questions of each kind."""
-    templates = bank_templates() if templates is None else templates
+def export(templates: list[Template] | None = None, topic: Topic | None = None
+           ) -> tuple[ET.ElementTree, dict[str, int]]:
+    """The Moodle XML tree of the topic's templates (all of them, or those given), in one
+    category per question type, and how many questions of each kind."""
+    topic = topic_of(topic)
+    templates = bank_templates(topic) if templates is None else templates
     out = _Export()
     drawn = _draw_graphs(templates)
-    for question_type in QUESTION_TYPES:
-        chosen = [t for t in templates if t.type == question_type]
+    for question_type in topic.types:
+        chosen = [t for t in templates if t.type == question_type.key]
         if not chosen:
             continue
-        type_path = f"{ROOT_CATEGORY}/{TYPE_TITLES[question_type]}"
-        out.category(type_path, f"<p>{_escape(TYPE_TITLES[question_type])}: questions of the Dynamics "
+        type_path = f"{root_category(topic)}/{question_type.title}"
+        out.category(type_path, f"<p>{_escape(question_type.title)}: questions of the {_escape(topic.name)} "
                                 "textbook, each in several variants with different numbers.</p>")
         for template in chosen:
             _template(out, template, type_path, drawn)
     return ET.ElementTree(out.quiz), out.count
 
 
-def _drawn(job: tuple[str, int]) -> tuple[str, dict[str, bytes]]:
-    from .. import bank
+#: The templates whose graphs the worker processes draw (set before they fork).
+_GRAPH_TEMPLATES: dict[str, Template] = {}
 
+
+def _drawn(job: tuple[str, int]) -> tuple[str, dict[str, bytes]]:
     key, index = job
-    template = bank.TEMPLATES[key]
+    template = _GRAPH_TEMPLATES[key]
     return _graph_files(template, index, template.variant(index))
 
 
@@ -394,6 +405,7 @@ def _draw_graphs(templates: list[Template]) -> dict[tuple[str, int], tuple[str, 
     jobs = [(t.key, index) for t in templates if "graph" in t.kinds for index in variant_indices(t)]
     if not jobs:
         return {}
+    _GRAPH_TEMPLATES.update({t.key: t for t in templates})
     context = multiprocessing.get_context("fork") if sys.platform == "linux" else None
     with ProcessPoolExecutor(max_workers=os.cpu_count() or 1, mp_context=context) as pool:
         return dict(zip(jobs, pool.map(_drawn, jobs, chunksize=4), strict=True))
@@ -473,9 +485,9 @@ def to_xml(tree: ET.ElementTree) -> str:
     return '<?xml version="1.0" encoding="UTF-8"?>\n' + xml + "\n"
 
 
-def write(path: Path) -> dict[str, int]:
-    """Write the bank's Moodle XML to ``path``; return the questions by kind."""
-    tree, count = export()
+def write(path: Path, topic: Topic | None = None) -> dict[str, int]:
+    """Write the topic's Moodle XML to ``path``; return the questions by kind."""
+    tree, count = export(topic=topic)
     ET.indent(tree, space=" ")
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(to_xml(tree), encoding="utf-8")
@@ -486,8 +498,14 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m physics_figures.worksheets.moodle",
                                      description="Write the question bank as Moodle XML.")
     parser.add_argument("out", type=Path, help="the .xml file to write")
+    parser.add_argument("--topic", default=DEFAULT_TOPIC, help=f"the topic's module (default {DEFAULT_TOPIC})")
     args = parser.parse_args(argv)
-    count = write(args.out)
+    try:
+        topic = topics.load(args.topic)
+    except ValueError as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 2
+    count = write(args.out, topic)
     print(f"wrote {args.out}: {sum(count.values())} questions ({', '.join(f'{n} {k}' for k, n in sorted(count.items()))}), "
           f"{format_number(args.out.stat().st_size / 1e6, decimals=1)} MB")
     return 0

@@ -11,13 +11,18 @@ from __future__ import annotations
 import html
 from dataclasses import dataclass
 
-from . import SITE_SEED, Sheet, bank_templates, site_sheets
+from ..topics import Topic
+from . import SITE_SEED, Sheet, bank_templates, site_sheets, topic_of
 
 #: Where `make worksheets` and `make moodle` write, relative to the site's root, and from
 #: the page (book/teachers.html).
 FOLDER = "teachers"
 FROM_PAGE = f"../{FOLDER}/"
-MOODLE_FILE = "dynamics-moodle.xml"
+
+
+def moodle_file(topic: Topic | None = None) -> str:
+    """The Moodle XML's name, by topic: dynamics-moodle.xml."""
+    return f"{topic_of(topic).key}-moodle.xml"
 
 
 def sheet_files(sheet: Sheet) -> list[tuple[str, str]]:
@@ -25,15 +30,16 @@ def sheet_files(sheet: Sheet) -> list[tuple[str, str]]:
     return [(f"{sheet.name}-{v.letter}.pdf", f"{sheet.name}-key-{v.letter}.pdf") for v in sheet.versions]
 
 
-def site_files() -> list[str]:
+def site_files(topic: Topic | None = None) -> list[str]:
     """Every file the page links (what `make worksheets` and `make moodle` must write)."""
-    files = [name for sheet in site_sheets() for pair in sheet_files(sheet) for name in pair]
-    return [*files, MOODLE_FILE]
+    files = [name for sheet in site_sheets(topic=topic) for pair in sheet_files(sheet) for name in pair]
+    return [*files, moodle_file(topic)]
 
 
 @dataclass(frozen=True)
 class TeachersFiles:
     sheets: tuple[Sheet, ...]
+    topic: Topic
 
     def _html(self) -> str:
         # One row per sheet and one column per version, each cell the sheet and its key:
@@ -49,7 +55,7 @@ class TeachersFiles:
                 for v, (paper, key) in zip(sheet.versions, sheet_files(sheet), strict=True))
             rows.append(f'<tr><th scope="row">{short}<br><small>{len(sheet.templates)} questions, '
                         f"{sheet.marks} marks</small></th>{cells}</tr>")
-        templates = bank_templates()
+        templates = bank_templates(self.topic)
         variants = sum(len(t.values) for t in templates)
         versions = "".join(f'<th scope="col">Version {letter}</th>' for letter in letters)
         return (
@@ -57,7 +63,7 @@ class TeachersFiles:
             "<caption>Worksheets (PDF, A4): each version with its own answer key</caption>"
             f'<thead><tr><th scope="col">Sheet</th>{versions}'
             "</tr></thead><tbody>" + "".join(rows) + "</tbody></table>\n"
-            f'<p><a href="{FROM_PAGE}{MOODLE_FILE}" download>The question bank for Moodle '
+            f'<p><a href="{FROM_PAGE}{moodle_file(self.topic)}" download>The question bank for Moodle '
             f"(Moodle XML)</a>: {len(templates)} templates, {variants} variants in all.</p>")
 
     def _markdown(self) -> str:
@@ -66,7 +72,7 @@ class TeachersFiles:
         for sheet in self.sheets:
             names = ", ".join(f"`{paper}` with `{key}`" for paper, key in sheet_files(sheet))
             lines.append(f"- {sheet.title} ({len(sheet.templates)} questions, {sheet.marks} marks): {names}")
-        lines += ["", f"The question bank for Moodle: `{FOLDER}/{MOODLE_FILE}`."]
+        lines += ["", f"The question bank for Moodle: `{FOLDER}/{moodle_file(self.topic)}`."]
         return "\n".join(lines) + "\n"
 
     def _repr_mimebundle_(self, include=None, exclude=None) -> dict[str, str]:
@@ -74,6 +80,7 @@ class TeachersFiles:
                 "text/plain": self._markdown()}
 
 
-def teachers_files() -> TeachersFiles:
+def teachers_files(topic: Topic | None = None) -> TeachersFiles:
     """The page's list of sheets, keys and the Moodle file."""
-    return TeachersFiles(tuple(site_sheets()))
+    topic = topic_of(topic)
+    return TeachersFiles(tuple(site_sheets(topic=topic)), topic)

@@ -18,6 +18,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from sphinx.util import logging
+
 from . import (
     answer_key,
     book_map,
@@ -32,11 +34,22 @@ from . import (
 )
 
 __version__ = "2.0"
+logger = logging.getLogger(__name__)
 STATIC = Path(__file__).parent / "static"
 
 
 def add_static_path(app, config):
     config.html_static_path.append(str(STATIC))
+
+
+def check_topics(app, env):
+    """A book that holds a topic's pages holds them all: a page renamed or dropped would leave
+    its types' method links and its feedback links dangling. (A small book that only asks a
+    topic's questions, as the tests' are, holds none of them.)"""
+    for topic in store.topics(app.config):
+        missing = [page for page in topic.pages if page not in env.all_docs]
+        if missing and len(missing) < len(topic.pages):
+            logger.warning(f"topic {topic.key!r} names pages that are not in the book: {', '.join(missing)}")
 
 
 def resolve(app, doctree, docname):
@@ -51,6 +64,8 @@ def resolve(app, doctree, docname):
 
 
 def setup(app):
+    # The modules whose TOPIC the book asks questions from (physics_figures.topics).
+    app.add_config_value("question_topics", [], "env", types=[list])
     app.add_node(directive.question, html=(form.visit_question, form.depart_question))
     app.add_node(directive.question_form, html=(form.visit_question_form, None))
     app.add_node(directive.worked_answer, html=(form.visit_worked_answer, form.depart_worked_answer))
@@ -61,6 +76,7 @@ def setup(app):
     app.connect("env-purge-doc", store.purge)
     app.connect("env-merge-info", store.merge)
     app.connect("env-get-outdated", store.refresh_gathering_pages)
+    app.connect("env-check-consistency", check_topics)
     app.connect("doctree-resolved", resolve)
     app.connect("html-page-context", form.add_assets)
     app.connect("build-finished", directive.write_variants)

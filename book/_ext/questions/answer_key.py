@@ -26,7 +26,7 @@ class AnswerKeyDirective(SphinxDirective):
 
     def run(self):
         store.docs(self.env, "answer-key").add(self.env.docname)
-        uses_modules(self.env, *store.BANK_MODULES)
+        uses_modules(self.env, *store.bank_modules(self.config))
         return [answer_key()]
 
 

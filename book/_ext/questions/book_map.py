@@ -25,7 +25,7 @@ class BookMapDirective(SphinxDirective):
         if self.arguments[0] not in BOOK_MAPS:
             raise self.error(f"book-map: choose one of {', '.join(BOOK_MAPS)} (got {self.arguments[0]!r})")
         store.docs(self.env, "book-map").add(self.env.docname)
-        uses_modules(self.env, *store.BANK_MODULES)
+        uses_modules(self.env, *store.bank_modules(self.config))
         return [book_map(what=self.arguments[0])]
 
 

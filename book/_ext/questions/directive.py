@@ -1,6 +1,7 @@
 """The ``question`` directive and the data it writes.
 
-A page places a template of the question bank (physics_figures.bank) by its key; the
+A page places a template of one of the book's topics (physics_figures.topics; _config.yml
+names them in question_topics) by its key; the
 template writes its own text, with the printed numbers (variant 0)::
 
     ```{question} quick-check-1
@@ -54,7 +55,7 @@ class QuestionDirective(SphinxDirective):
             raise self.error(f"question {template.key}: a template writes its own text; "
                              "leave the directive empty")
         # An edit to these (or to what they import) re-reads this page.
-        uses_modules(self.env, *store.BANK_MODULES)
+        uses_modules(self.env, *store.bank_modules(self.config))
         if data.graph is not None:
             uses_modules(self.env, store.GRAPH_MODULE)
         store.templates_used(self.env).setdefault(self.env.docname, []).append(template.key)
@@ -86,13 +87,11 @@ class QuestionDirective(SphinxDirective):
 
     def _template(self):
         if not self.arguments:
-            raise self.error("question: name a template of physics_figures.bank")
-        from physics_figures import bank  # imported here: the bank is slow to build
-
-        key = self.arguments[0]
-        if key not in bank.TEMPLATES:
-            raise self.error(f"question: no template {key!r} in physics_figures.bank")
-        return bank.TEMPLATES[key]
+            raise self.error("question: name a template of the book's topics")
+        try:
+            return store.template(self.config, self.arguments[0])
+        except ValueError as error:
+            raise self.error(f"question: {error}") from error
 
     def _graph(self, key: str, graph) -> nodes.image:
         """The printed variant's graph, drawn now as SVG (the site) and PDF (the book): an
@@ -207,15 +206,14 @@ def write_variants(app, exception):
     keys = sorted({key for keys in store.templates_used(app.env).values() for key in keys})
     if not keys:
         return
-    from physics_figures import bank
-
     folder = Path(app.outdir) / "_static" / VARIANTS_DIR
     folder.mkdir(parents=True, exist_ok=True)
     for key in keys:
-        if len(bank.TEMPLATES[key].values) < 2:  # no New numbers: nothing to load
+        template = store.template(app.config, key)
+        if len(template.values) < 2:  # no New numbers: nothing to load
             continue
         variants = []
-        for index, variant in enumerate(bank.TEMPLATES[key].variants):
+        for index, variant in enumerate(template.variants):
             data = variant.variant_data()
             if variant.graph is not None:  # its own graph, beside the variants' script
                 drawn = write_graph(folder, f"{key}-{index}", variant.graph, formats=("svg",))

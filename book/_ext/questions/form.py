@@ -61,19 +61,18 @@ def _section_anchor(env, docname: str, title: str) -> str | None:
 
 def section_links(translator) -> dict[str, dict]:
     """Where feedback can send a student, as links from the page being written, by the ids
-    the questions' data name (marking.js, sectionFor): {id: {href, title}}. The bank's sections
-    (physics_figures.bank.sections), and each documented rule's row ("rule:<id>") on the page
-    that holds the rule table."""
-    from physics_figures.bank.sections import SECTIONS
-
+    the questions' data name (marking.js, sectionFor): {id: {href, title}}. The topics' sections
+    (physics_figures.topics), and each documented rule's row ("rule:<id>") on the page that
+    holds the rule table."""
     builder = translator.builder
     env, here, links = builder.env, builder.current_docname, {}
-    for ident, (docname, section) in SECTIONS.items():
+    sections = {ident: where for topic in store.topics(builder.config) for ident, where in topic.sections.items()}
+    for ident, (docname, section) in sections.items():
         if docname not in env.all_docs:  # a smaller book (a test's) without that page
             continue
         anchor = _section_anchor(env, docname, section)
         if anchor is None:
-            logger.warning(f"physics_figures.bank.sections: page {docname!r} has no section {section!r}")
+            logger.warning(f"topic sections: page {docname!r} has no section {section!r} (section id {ident!r})")
             continue
         page = env.titles[docname].astext()
         links[ident] = {"href": builder.get_relative_uri(here, docname) + anchor,

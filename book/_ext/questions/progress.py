@@ -31,43 +31,27 @@ class PracticeProgressDirective(SphinxDirective):
 
     def run(self):
         store.docs(self.env, "practice-progress").add(self.env.docname)
-        uses_modules(self.env, *store.BANK_MODULES)
+        uses_modules(self.env, *store.bank_modules(self.config))
         return [practice_progress()]
 
 
-#: The notes' seven question types ("How to do it"), by data-type: name and method page.
-TYPE_NAMES = {
-    "newton": ("Newton's laws, F = ma and third-law pairs", "book/exam/method-newtons-laws"),
-    "drag": ("Drag, air resistance and terminal velocity", "book/exam/method-drag"),
-    "force-momentum": ("Force as rate of change of momentum", "book/exam/method-force-momentum"),
-    "definitions": ("Mass, weight and the definitions", "book/exam/method-definitions"),
-    "momentum-line": ("Conservation of momentum in a straight line", "book/exam/method-momentum-line"),
-    "elastic": ("Elastic and inelastic collisions", "book/exam/method-collisions"),
-    "two-d": ("Conservation of momentum in two dimensions", "book/exam/method-two-dimensions"),
-}
-
-
 def _progress_data(app, fromdoc: str) -> dict:
-    """Every template of the bank by type, with its title, marks and the page placing it
-    (None if no page does yet): what progress.js needs; it computes no physics."""
-    from physics_figures import bank
-    from physics_figures.variants import QUESTION_TYPES
-
-    if set(TYPE_NAMES) != set(QUESTION_TYPES):
-        raise ValueError(f"TYPE_NAMES must name exactly the types {QUESTION_TYPES}")
+    """Every template of the book's topics by type (each type's title and method page as its
+    topic declares them), with its title, marks and the page placing it (None if no page
+    does yet): what progress.js needs; it computes no physics."""
     env, placed = app.env, {}
     for docname in store.book_order(env, app.config.root_doc):
         for key in store.templates_used(env).get(docname, []):
             placed.setdefault(key, docname)
     types = []
-    for kind in QUESTION_TYPES:
-        name, method = TYPE_NAMES[kind]
-        templates = [{
-            "key": t.key, "title": t.title, "marks": t.variant(0).marks,
-            "page": app.builder.get_relative_uri(fromdoc, placed[t.key]) if t.key in placed else None,
-        } for t in bank.by_type(kind)]
-        types.append({"type": kind, "name": name, "templates": templates,
-                      "method": app.builder.get_relative_uri(fromdoc, method) if method in env.all_docs else None})
+    for topic in store.topics(app.config):
+        for kind in topic.types:
+            templates = [{
+                "key": t.key, "title": t.title, "marks": t.variant(0).marks,
+                "page": app.builder.get_relative_uri(fromdoc, placed[t.key]) if t.key in placed else None,
+            } for t in topic.by_type(kind.key)]
+            method = app.builder.get_relative_uri(fromdoc, kind.method) if kind.method in env.all_docs else None
+            types.append({"type": kind.key, "name": kind.title, "templates": templates, "method": method})
     return {"types": types}
 
 

@@ -10,10 +10,11 @@ from __future__ import annotations
 
 from docutils import nodes
 
-#: What a question's text, marks and key come from (the bank imports the models it uses), and
-#: what draws a question's graph: a page placing a question is re-read when these change, and
-#: so are the pages that gather the bank's questions (answer key, progress, try similar, map).
-BANK_MODULES = ("physics_figures.bank", "physics_figures.textformat", "physics_figures.variants")
+#: What a question's text, marks and key come from besides its topic's module (which imports
+#: the models it uses), and what draws a question's graph: a page placing a question is re-read
+#: when these change, and so are the pages that gather the questions (answer key, progress,
+#: try similar, map).
+SHARED_MODULES = ("physics_figures.textformat", "physics_figures.variants", "physics_figures.topics")
 GRAPH_MODULE = "physics_figures.figures.question_graph"
 
 #: The pages holding each directive that gathers from every page, filled once all are read.
@@ -21,6 +22,28 @@ GATHERING = ("answer-key", "practice-progress", "try-similar", "book-map")
 #: Pages with a definitions self-test (they load its script), and the page with the rule table
 #: (feedback links to its rows).
 SELF_TEST, RULES_TABLE = "self-test", "marking-rules"
+
+
+def topics(config) -> list:
+    """The topics the book asks questions from: the modules _config.yml names in
+    question_topics, each with a TOPIC (physics_figures.topics)."""
+    from physics_figures.topics import load
+
+    return [load(module) for module in config.question_topics]
+
+
+def bank_modules(config) -> tuple[str, ...]:
+    """The modules a page placing or gathering questions is re-read for."""
+    return (*config.question_topics, *SHARED_MODULES)
+
+
+def template(config, key: str):
+    """The template of that key in the book's topics; ValueError naming them if none has it."""
+    for topic in topics(config):
+        if key in topic.by_key:
+            return topic.by_key[key]
+    raise ValueError(f"no template {key!r} in the topics {', '.join(config.question_topics)} "
+                     "(_config.yml: question_topics)")
 
 
 def _store(env) -> dict:

@@ -20,24 +20,26 @@ class TrySimilarDirective(SphinxDirective):
 
     def run(self):
         store.docs(self.env, "try-similar").add(self.env.docname)
-        uses_modules(self.env, *store.BANK_MODULES)
+        uses_modules(self.env, *store.bank_modules(self.config))
         return [try_similar()]
 
 
 def _similar_question(app, docname: str):
     """(template, page) of the first question in book order, outside the worked examples, of
     the type of this page's try-first question; practice pages first."""
-    from physics_figures import bank
-
     env = app.env
-    kinds = {bank.TEMPLATES[k].type for k in store.templates_used(env).get(docname, []) if bank.TEMPLATES[k].try_first}
+
+    def template(key):
+        return store.template(app.config, key)
+
+    kinds = {template(k).type for k in store.templates_used(env).get(docname, []) if template(k).try_first}
     if len(kinds) != 1:
         raise ValueError(f"try-similar on {docname}: the page must ask exactly one worked example's "
                          f"try-first question (its types: {sorted(kinds)})")
     kind = kinds.pop()
-    found = [(bank.TEMPLATES[key], page) for page in store.book_order(env, app.config.root_doc)
+    found = [(template(key), page) for page in store.book_order(env, app.config.root_doc)
              for key in store.templates_used(env).get(page, [])
-             if bank.TEMPLATES[key].type == kind and not bank.TEMPLATES[key].try_first]
+             if template(key).type == kind and not template(key).try_first]
     if not found:
         raise ValueError(f"try-similar on {docname}: no question of type {kind!r} is placed outside "
                          "the worked examples")

@@ -4,6 +4,8 @@ book/_ext/questions and site_assets are)."""
 
 from __future__ import annotations
 
+import ast
+import graphlib
 from pathlib import Path
 
 import pytest
@@ -22,3 +24,68 @@ def test_the_rooms_are_found():
 def test_no_module_or_browser_script_is_longer_than_the_limit(path):
     lines = len(path.read_text(encoding="utf-8").splitlines())
     assert lines <= MAX_LINES, f"{path.relative_to(ROOT)} has {lines} lines (at most {MAX_LINES}): split it by job"
+
+
+def import_graph() -> dict[str, set[str]]:
+    """Our modules (physics_figures.*, and the extensions under their own names) and the
+    modules of ours each imports, anywhere in it (a late import is an arrow too)."""
+    files = [*(ROOT / "physics_figures").rglob("*.py"), *MODULES]
+    mods = {_module_name(path): path for path in files}
+    graph: dict[str, set[str]] = {name: set() for name in mods}
+    for name, path in mods.items():
+        package = name if path.name == "__init__.py" else name.rpartition(".")[0]
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Import):
+                targets = [alias.name for alias in node.names]
+            elif isinstance(node, ast.ImportFrom):
+                base = package.split(".")[: len(package.split(".")) - node.level + 1] if node.level else []
+                module = ".".join([*base, *([node.module] if node.module else [])])
+                subs = [f"{module}.{alias.name}" for alias in node.names if f"{module}.{alias.name}" in mods]
+                targets = subs + ([module] if len(subs) < len(node.names) else [])
+            else:
+                continue
+            for target in targets:
+                while target and target not in mods:  # physics_figures.models.drag.x -> ...drag
+                    target = target.rpartition(".")[0]
+                if target and target != name:
+                    graph[name].add(target)
+    return graph
+
+
+def _module_name(path: Path) -> str:
+    relative = path.relative_to(ROOT)
+    if relative.parts[0] == "book":  # book/_ext/questions/form.py -> questions.form
+        relative = relative.relative_to(*relative.parts[:2])
+    parts = list(relative.with_suffix("").parts)
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def test_the_import_graph_has_no_circle():
+    graph = import_graph()
+    assert len(graph) >= 80
+    list(graphlib.TopologicalSorter(graph).static_order())  # CycleError names the circle
+
+
+#: Arrows run one way: models -> figures and questions -> the site. Each layer may not import these.
+NEVER = {
+    "physics_figures.models": ("physics_figures.figures", "physics_figures.bank", "physics_figures.parts",
+                               "physics_figures.questions", "physics_figures.worksheets", "matplotlib"),
+    # a figure may draw a question's graph from its data (questions.Graph), never from the bank
+    "physics_figures.figures": ("physics_figures.bank", "physics_figures.topics", "physics_figures.worksheets"),
+    "physics_figures.parts": ("physics_figures.bank", "physics_figures.worksheets", "physics_figures.topics"),
+    "physics_figures.marking": ("physics_figures.bank", "physics_figures.parts", "physics_figures.questions"),
+    "physics_figures.topics": ("physics_figures.bank", "physics_figures.worksheets"),
+    "physics_figures.bank": ("physics_figures.worksheets",),
+}
+
+
+def test_no_arrow_runs_back_up():
+    graph = import_graph()
+    ours = {name.split(".")[0] for name in graph} - {"physics_figures"}  # the extensions
+    for name, imports in graph.items():
+        if name.startswith("physics_figures"):
+            assert not {i.split(".")[0] for i in imports} & ours, f"{name} imports the site's extensions"
+        for layer, forbidden in NEVER.items():
+            if name == layer or name.startswith(layer + "."):
+                wrong = sorted(i for i in imports if any(i == f or i.startswith(f + ".") for f in forbidden))
+                assert not wrong, f"{name} imports {wrong}, a layer above it"

@@ -41,14 +41,8 @@
       return found;
     })();
 
-  function outcome(code, message, extra) {
-    var result = { code: code, correct: code === "correct", message: message };
-    if (extra)
-      Object.keys(extra).forEach(function (k) {
-        result[k] = extra[k];
-      });
-    return result;
-  }
+  // An outcome as the markers give it (code, message and what else they say).
+  var outcome = KINDS.numeric.outcome;
 
   /* Mark one answer to one part: its kind's marker gives the outcome (code, message). */
   function mark(part, answer) {

@@ -329,7 +329,7 @@
     return out("wrong", "Not right. " + (part.revisit || "Check your method and your arithmetic."));
   }
 
-  var kind = { kinds: ["numeric", "graph"], mark: mark };
+  var kind = { kinds: ["numeric", "graph"], mark: mark, outcome: outcome };
   if (typeof module === "object" && module.exports) module.exports = kind;
   else
     kind.kinds.forEach(function (name) {

@@ -16,7 +16,18 @@ from ..models.drag import Skydive, ThrowUp
 from ..notation import format_number
 from ._text import VELOCITY_UNIT, plain
 from .book_figure import BookFigure
-from .style import FIGSIZE, GUIDE, INK, MAIN, PAPER, SECOND, book_style, new_axes, styled, unit_label
+from .style import (
+    FIGSIZE,
+    GUIDE,
+    INK,
+    MAIN,
+    PAPER,
+    SECOND,
+    book_style,
+    new_axes,
+    styled,
+    unit_label,
+)
 
 
 class DragGraph(NamedTuple):

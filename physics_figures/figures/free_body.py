@@ -17,9 +17,9 @@ from matplotlib.text import Annotation
 
 from ..models.drag import Skydive
 from ..notation import format_number
+from ..style import colour
 from ._text import ACCELERATION_UNIT, VELOCITY_UNIT, plain
 from .book_figure import BookFigure
-from ..style import colour
 from .style import FORCE_COLOURS, INK, PAPER, SMALL_TEXT, book_style, styled
 
 #: Line style of each kind of force, so pairs match in greyscale too.

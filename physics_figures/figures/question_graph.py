@@ -16,9 +16,9 @@ from matplotlib.ticker import FixedLocator, FuncFormatter, MultipleLocator
 
 from ..notation import format_number
 from ..questions import Graph
+from ..style import colour
 from ._text import plain
 from .book_figure import BookFigure
-from ..style import colour
 from .style import GUIDE, MAIN, SHADE, new_axes, styled, unit_label
 
 #: A labelled grid line every 1, 2, 5 or 10 small squares: the first that gives at most

@@ -2,14 +2,15 @@
 extension).
 
 * **HTML.** The "site" colours become CSS custom properties in ``_static/tokens.css``
-  (``--q-right: #17663a;``): light values under ``:root``, dark ones under
+  (``--q-right``): light values under ``:root``, dark ones under
   ``html[data-theme="dark"]`` (the theme's dark mode), only where they differ. Every
   stylesheet of the site uses them by ``var()`` and writes no colour of its own. The file
   is linked before the extensions' stylesheets, so book/_ext/site_assets puts it at the
   head of the page's one bundle (precached with it by book/_ext/offline); its pruning
   keeps a property while a kept rule reads it.
-* **LaTeX.** The "latex" colours become ``\\definecolor{dynamicsNAME}{RGB}{r,g,b}`` in
-  ``dynamics-colours.sty`` beside the .tex files; book/_latex/dynamics-print.sty loads it.
+* **LaTeX.** The "latex" colours become xcolor colours ``dynamicsNAME`` (red, green and
+  blue 0-255) in ``dynamics-colours.sty`` beside the .tex files, which
+  book/_latex/dynamics-print.sty loads.
 """
 
 from __future__ import annotations

@@ -13,6 +13,7 @@ from matplotlib.testing.compare import compare_images
 
 from physics_figures import scenarios
 from physics_figures.figures import book
+from physics_figures.style import colour
 
 BASELINE = Path(__file__).parent / "baseline"
 REGENERATE = os.environ.get("PHYSICS_FIGURES_REGENERATE_BASELINES") == "1"
@@ -38,7 +39,7 @@ def _without_text(figure):
 def test_figure_looks_like_its_baseline(name, tmp_path):
     figure = _without_text(FIGURES[name]().figure)
     actual = tmp_path / f"{name}.png"
-    figure.savefig(actual, dpi=60, facecolor="white")
+    figure.savefig(actual, dpi=60, facecolor=colour("figure.paper"))
     expected = BASELINE / f"{name}.png"
     if REGENERATE:
         expected.write_bytes(actual.read_bytes())

@@ -17,7 +17,7 @@ from ..models import stick_together, total_kinetic_energy, total_momentum
 from ..notation import format_number
 from ._text import MOMENTUM_UNIT, VELOCITY_UNIT, a_or_an, plain
 from .book_figure import BookFigure
-from .style import MAIN, SECOND, SMALL_TEXT, new_axes, styled
+from .style import INK, MAIN, PAPER, SECOND, SMALL_TEXT, new_axes, styled
 
 
 class CollisionDiagram(NamedTuple):
@@ -40,7 +40,7 @@ def _row(ax, y, masses, velocities, *, joined):
             (x, y),
             w,
             0.7,
-            facecolor="white",
+            facecolor=PAPER,
             edgecolor=colours[i],
             linewidth=2,
             hatch="" if i == 0 else "//",
@@ -53,7 +53,7 @@ def _row(ax, y, masses, velocities, *, joined):
             ha="center",
             va="center",
             fontsize=SMALL_TEXT,
-            bbox={"facecolor": "white", "edgecolor": "none", "pad": 1},
+            bbox={"facecolor": PAPER, "edgecolor": "none", "pad": 1},
         )
         blocks.append(block)
         x += w + (0 if joined else 1.8)
@@ -77,7 +77,7 @@ def _row(ax, y, masses, velocities, *, joined):
                 xytext=start,
                 arrowprops={
                     "arrowstyle": "-|>",
-                    "color": "#111111",
+                    "color": INK,
                     "linewidth": 2,
                     "shrinkA": 0,
                     "shrinkB": 0,

@@ -16,7 +16,18 @@ from ..models.drag import Skydive, ThrowUp
 from ..notation import format_number
 from ._text import VELOCITY_UNIT, plain
 from .book_figure import BookFigure
-from .style import FIGSIZE, GUIDE, MAIN, SECOND, book_style, new_axes, styled, unit_label
+from .style import (
+    FIGSIZE,
+    GUIDE,
+    INK,
+    MAIN,
+    PAPER,
+    SECOND,
+    book_style,
+    new_axes,
+    styled,
+    unit_label,
+)
 
 
 class DragGraph(NamedTuple):
@@ -48,8 +59,8 @@ def plot_drag_against_speed(
         [v_t],
         [skydive.weight],
         marker="o",
-        color="#111111",
-        markerfacecolor="white",
+        color=INK,
+        markerfacecolor=PAPER,
         markeredgewidth=1.6,
         linestyle="none",
         zorder=4,
@@ -139,7 +150,7 @@ def plot_thrown_upwards(
             [throw.max_height],
             marker="o",
             color=colour,
-            markerfacecolor="white",
+            markerfacecolor=PAPER,
             markeredgewidth=1.6,
             linestyle="none",
         )

@@ -17,9 +17,10 @@ from matplotlib.text import Annotation
 
 from ..models.drag import Skydive
 from ..notation import format_number
+from ..style import colour
 from ._text import ACCELERATION_UNIT, VELOCITY_UNIT, plain
 from .book_figure import BookFigure
-from .style import FORCE_COLOURS, SMALL_TEXT, book_style, styled
+from .style import FORCE_COLOURS, INK, PAPER, SMALL_TEXT, book_style, styled
 
 #: Line style of each kind of force, so pairs match in greyscale too.
 FORCE_STYLES = {"weight": "-", "drag": "-", "gravitational": "-", "contact": "--"}
@@ -84,7 +85,7 @@ def plot_skydiver_free_body(
     """
     w, d = skydive.weight, _drag_at(skydive, point)
     body = 0.3
-    ax.add_patch(Circle((0, 0), body, facecolor="white", edgecolor="#111111", linewidth=1.6))
+    ax.add_patch(Circle((0, 0), body, facecolor=PAPER, edgecolor=INK, linewidth=1.6))
     arrows = {
         "weight": _draw_arrow(
             ax, (0, -body), (0, -body - 1.0), kind="weight", text=f"W = {format_number(w, 3)} N"
@@ -102,9 +103,9 @@ def plot_skydiver_free_body(
         )
         if length > max_length:  # a white gap across the shaft marks the break
             y = body + shown * 0.45
-            ax.plot([-0.12, 0.12], [y - 0.05, y + 0.05], color="white", linewidth=6, zorder=5)
-            ax.plot([-0.12, 0.12], [y - 0.12, y - 0.02], color="#111111", linewidth=1, zorder=6)
-            ax.plot([-0.12, 0.12], [y + 0.08, y + 0.18], color="#111111", linewidth=1, zorder=6)
+            ax.plot([-0.12, 0.12], [y - 0.05, y + 0.05], color=PAPER, linewidth=6, zorder=5)
+            ax.plot([-0.12, 0.12], [y - 0.12, y - 0.02], color=INK, linewidth=1, zorder=6)
+            ax.plot([-0.12, 0.12], [y + 0.08, y + 0.18], color=INK, linewidth=1, zorder=6)
     _blank(ax, width=3.2, height=2 * (body + max_length) + 0.2)
     ax.set_title(point, fontweight="bold")
     return FreeBodyDiagram(ax, arrows)
@@ -195,13 +196,13 @@ def plot_book_on_table() -> ThirdLawDiagram:
         left, right = figure.subplots(1, 2)
     for ax in (left, right):
         _blank(ax, width=3.4, height=3.4)
-        ax.add_patch(Rectangle((-0.8, -0.15), 1.6, 0.15, facecolor="#c9c9c9", edgecolor="#111111"))
+        ax.add_patch(Rectangle((-0.8, -0.15), 1.6, 0.15, facecolor=colour("figure.table"), edgecolor=INK))
         ax.add_patch(
             Rectangle(
-                (-0.45, 0.0), 0.9, 0.35, facecolor="white", edgecolor="#111111", linewidth=1.6
+                (-0.45, 0.0), 0.9, 0.35, facecolor=PAPER, edgecolor=INK, linewidth=1.6
             )
         )
-        ax.add_patch(Circle((0, -4.2), 2.8, facecolor="#e8e8e8", edgecolor="#111111"))
+        ax.add_patch(Circle((0, -4.2), 2.8, facecolor=colour("figure.earth"), edgecolor=INK))
         ax.text(0, -1.45, "Earth", ha="center", va="top", fontsize=SMALL_TEXT)
         ax.text(0.8, -0.2, "table", ha="right", va="top", fontsize=SMALL_TEXT)
         ax.text(0, 0.17, "book", ha="center", va="center", fontsize=SMALL_TEXT)

@@ -20,7 +20,7 @@ from ..models.momentum_history import MomentumHistory
 from ..notation import format_number
 from ._text import IMPULSE_UNIT, MOMENTUM_UNIT, VELOCITY_UNIT, a_or_an, plain, seconds
 from .book_figure import BookFigure
-from .style import GUIDE, MAIN, SHADE, new_axes, styled, unit_label
+from .style import GUIDE, MAIN, PAPER, SHADE, new_axes, styled, unit_label
 
 
 class MomentumTimeGraph(NamedTuple):
@@ -122,7 +122,7 @@ def plot_force_time_area(history: MomentumHistory, *, ax: Axes | None = None) ->
                 f"area = Δp\n= {format_number(change, 2, plus=True)} {IMPULSE_UNIT}",
                 ha="center",
                 va="center",
-                bbox={"facecolor": "white", "edgecolor": "none", "pad": 2},
+                bbox={"facecolor": PAPER, "edgecolor": "none", "pad": 2},
                 zorder=5,
             )
         )

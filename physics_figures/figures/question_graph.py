@@ -16,6 +16,7 @@ from matplotlib.ticker import FixedLocator, FuncFormatter, MultipleLocator
 
 from ..notation import format_number
 from ..questions import Graph
+from ..style import colour
 from ._text import plain
 from .book_figure import BookFigure
 from .style import GUIDE, MAIN, SHADE, new_axes, styled, unit_label
@@ -72,8 +73,8 @@ def plot_question_graph(graph: Graph, *, ax: Axes | None = None) -> QuestionGrap
     ax.set_ylim(graph.value_min, graph.value_max)
     _axis(ax.xaxis, 0.0, graph.time_max, graph.time_division)
     _axis(ax.yaxis, graph.value_min, graph.value_max, graph.value_division)
-    ax.grid(which="minor", color="#d8d8d8", linewidth=0.5)
-    ax.grid(which="major", color="#a0a0a0", linewidth=0.8)
+    ax.grid(which="minor", color=colour("figure.grid-minor"), linewidth=0.5)
+    ax.grid(which="major", color=colour("figure.grid-major"), linewidth=0.8)
     ax.set_axisbelow(True)
     if graph.value_min < 0:
         ax.axhline(0, color=GUIDE, linewidth=1.0)

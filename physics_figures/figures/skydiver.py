@@ -19,7 +19,7 @@ from ..models.drag import Skydive
 from ..notation import format_number
 from ._text import ACCELERATION_UNIT, VELOCITY_UNIT, a_or_an, plain
 from .book_figure import BookFigure
-from .style import GUIDE, MAIN, SMALL_TEXT, new_axes, styled, unit_label
+from .style import GUIDE, INK, MAIN, PAPER, SMALL_TEXT, new_axes, styled, unit_label
 
 POINT_LABELS = ("A", "B", "C", "D", "E")
 # Where each letter sits relative to its marker (points), so letters never sit on the curve.
@@ -44,8 +44,8 @@ def _mark_points(ax: Axes, xy: dict[str, tuple[float, float]]) -> tuple[Line2D, 
         [xy[p][1] for p in labels],
         linestyle="none",
         marker="o",
-        markerfacecolor="white",
-        markeredgecolor="#111111",
+        markerfacecolor=PAPER,
+        markeredgecolor=INK,
         markeredgewidth=1.6,
         zorder=4,
     )

@@ -27,21 +27,21 @@ import matplotlib as mpl
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
-#: Okabe-Ito colours by role, so a figure says *what* a colour means.
+from ..style import colour
+
+#: Okabe-Ito colours by name (physics_figures/style/tokens.json, "figure"), so a figure
+#: says *what* a colour means through the roles below.
 PALETTE = {
-    "black": "#000000",
-    "orange": "#E69F00",
-    "sky": "#56B4E9",
-    "green": "#009E73",
-    "yellow": "#F0E442",
-    "blue": "#0072B2",
-    "vermilion": "#D55E00",
-    "purple": "#CC79A7",
+    name: colour(f"figure.{name}")
+    for name in ("black", "orange", "sky", "green", "yellow", "blue", "vermilion", "purple")
 }
 #: What each colour stands for across the chapter.
 MAIN = PALETTE["blue"]  # the quantity the figure is about
 SECOND = PALETTE["vermilion"]  # the thing it is compared with
-GUIDE = "#555555"  # asymptotes, reference lines (dark grey reads on paper and on the card)
+GUIDE = colour("figure.guide")  # asymptotes, reference lines (dark grey reads on paper and on the card)
+INK = colour("figure.ink")  # text, outlines of bodies
+FRAME = colour("figure.frame")  # axes and ticks
+PAPER = colour("figure.paper")  # bodies and labels' backgrounds, white as the card
 SHADE = PALETTE["sky"]  # filled areas
 FORCE_COLOURS = {
     "weight": PALETTE["blue"],
@@ -83,11 +83,11 @@ RC_PARAMS: dict[str, object] = {
     "axes.spines.top": False,
     "axes.spines.right": False,
     "axes.linewidth": 1.0,
-    "axes.edgecolor": "#222222",
-    "axes.labelcolor": "#111111",
-    "text.color": "#111111",
-    "xtick.color": "#222222",
-    "ytick.color": "#222222",
+    "axes.edgecolor": FRAME,
+    "axes.labelcolor": INK,
+    "text.color": INK,
+    "xtick.color": FRAME,
+    "ytick.color": FRAME,
     "axes.grid": False,
     "axes.xmargin": 0.0,
     "axes.ymargin": 0.0,

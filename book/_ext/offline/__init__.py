@@ -31,12 +31,16 @@ from pathlib import Path
 
 from sphinx.application import Sphinx
 
+from physics_figures.style import TOKENS, colour
+
 __version__ = "1.0"
 HERE = Path(__file__).parent
 SERVICE_WORKER = "sw.js"
 MANIFEST = "manifest.webmanifest"
 ICONS = {192: "_static/offline/icon-192.png", 512: "_static/offline/icon-512.png"}
-THEME_COLOUR = "#2f5d8a"
+#: The site's blue (the theme's links and header) and page (physics_figures/style/tokens.json).
+THEME_COLOUR = colour("manifest.theme")
+BACKGROUND = colour("manifest.background")
 #: Downloads and fallbacks no page needs offline.
 NOT_PRECACHED = re.compile(r"^pdf/|^teachers/|\.ttf$|\.map$|\.zip$")
 #: Loaded by script on demand: New numbers' variants and graphs, the search index.
@@ -141,7 +145,7 @@ def write_service_worker(site: Path) -> str:
 def write_manifest(site: Path, title: str) -> None:
     manifest = {
         "name": title, "short_name": "Dynamics", "start_url": "./index.html", "scope": "./",
-        "display": "standalone", "background_color": "#ffffff", "theme_color": THEME_COLOUR,
+        "display": "standalone", "background_color": BACKGROUND, "theme_color": THEME_COLOUR,
         "icons": [{"src": path, "sizes": f"{size}x{size}", "type": "image/png", "purpose": "any"}
                   for size, path in ICONS.items()],
     }
@@ -149,18 +153,19 @@ def write_manifest(site: Path, title: str) -> None:
 
 
 def write_icons(site: Path) -> None:
-    """The home-screen icons, drawn once: "Δp" in white on the book's blue."""
+    """The home-screen icons, drawn again only when the colours change: "Δp" in white on
+    the site's blue."""
     from matplotlib.figure import Figure  # drawing only when the site is written
 
     for size, path in ICONS.items():
         target = site / path
-        if target.exists():
+        if target.exists() and target.stat().st_mtime >= TOKENS.stat().st_mtime:
             continue
         target.parent.mkdir(parents=True, exist_ok=True)
         figure = Figure(figsize=(1, 1), dpi=size)
         figure.patch.set_facecolor(THEME_COLOUR)
-        figure.text(0.5, 0.5, "Δp", color="white", fontsize=34, ha="center", va="center",
-                    family="DejaVu Sans", weight="bold")
+        figure.text(0.5, 0.5, "Δp", color=colour("manifest.icon-text"), fontsize=34, ha="center",
+                    va="center", family="DejaVu Sans", weight="bold")
         figure.savefig(target, dpi=size, facecolor=THEME_COLOUR, metadata={"Software": None})
 
 

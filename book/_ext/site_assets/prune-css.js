@@ -45,12 +45,17 @@ async function main() {
   const [site, ...bundles] = process.argv.slice(2);
   if (!site || !bundles.length) throw new Error("usage: node prune-css.js SITE_DIR BUNDLE.css ...");
   const content = contentOf(site);
+  // Every colour of tokens.css (book/_ext/design_tokens.py) stays, read by a rule or not.
+  const tokens = path.join(site, "_static", "tokens.css");
+  const variables = fs.existsSync(tokens)
+    ? [...fs.readFileSync(tokens, "utf8").matchAll(/(--[\w-]+):/g)].map((m) => m[1])
+    : [];
   for (const bundle of bundles) {
     const file = path.join(site, bundle);
     const [result] = await new PurgeCSS().purge({
       content,
       css: [file],
-      safelist: SAFELIST,
+      safelist: { ...SAFELIST, variables },
       fontFace: false,
       keyframes: false,
       // custom properties no kept rule reads (var()): most of the theme's and Bootstrap's

@@ -53,6 +53,9 @@ def _shot(browser, base_url: str, page_path: str, width: int, mode: str, *, menu
     # every deferred script and figure fetched (a slow machine is still loading at "load")
     page.wait_for_load_state("networkidle")
     page.evaluate("document.fonts.ready")
+    # lazy figures load when a full-page shot grows the viewport, at a time a loaded machine
+    # varies: load and decode them all first
+    page.evaluate("Promise.all([...document.images].map(i => { i.loading = 'eager'; return i.decode().catch(() => null); }))")
     if "search.html" in page_path:
         # every result, with its snippet (each comes with a fetch of its page, in any order)
         page.wait_for_function("(document.querySelector('#search-results p.search-summary') || "

@@ -207,6 +207,22 @@ def uses_modules(env, *modules: str) -> None:
     _record(env, env.docname, modules)
 
 
+def modules_digest(app: Sphinx, modules: Iterable[str]) -> str:
+    """SHA-256 of what `modules` run: the package's files they reach (ImportGraph.digest),
+    and for a module outside the package (a topic of the tests) its own file and the
+    package's files it reaches. For work done once a build that may be skipped when it is
+    unchanged (the questions' variants)."""
+    graph = _graph(app)
+    digest = hashlib.sha256(graph.digest(modules).encode())
+    for module in sorted(set(modules)):
+        spec = None if graph.path(module) else importlib.util.find_spec(module)
+        if spec is not None and spec.origin and Path(spec.origin).is_file():
+            source = Path(spec.origin).read_bytes()
+            digest.update(f"\0{module}\0".encode() + source)
+            digest.update(graph.digest(graph.imports(ast.parse(source), None)).encode())
+    return digest.hexdigest()
+
+
 def _code_cells(docname: str, path: str, source: str) -> list[str] | None:
     """The code cells' sources of a MyST or ipynb notebook page; None if it is no notebook."""
     if path.endswith(".ipynb"):

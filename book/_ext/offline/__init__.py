@@ -150,12 +150,12 @@ def write_manifest(site: Path, title: str) -> None:
 
 def write_icons(site: Path) -> None:
     """The home-screen icons, drawn once: "Δp" in white on the book's blue."""
-    from matplotlib.figure import Figure  # drawing only when the site is written
-
     for size, path in ICONS.items():
         target = site / path
         if target.exists():
             continue
+        from matplotlib.figure import Figure  # only to draw one (importing it takes a second)
+
         target.parent.mkdir(parents=True, exist_ok=True)
         figure = Figure(figsize=(1, 1), dpi=size)
         figure.patch.set_facecolor(THEME_COLOUR)
@@ -230,15 +230,38 @@ def _page_context(app: Sphinx, pagename, templatename, context, doctree) -> None
         f'\n    <meta name="theme-color" content="{THEME_COLOUR}" />')
 
 
+def _record(site: Path) -> Path:
+    """The site as this extension last left it, beside the site (no page loads it)."""
+    return site.parent / f"{site.name}-offline.json"
+
+
+def _state(site: Path, title: str) -> dict:
+    """What this extension's work depends on: every file of the site, by content, the title
+    and this extension's code (what writes the service worker, and its template)."""
+    code = hashlib.sha256(title.encode())
+    for path in (Path(__file__), HERE / "sw_template.js"):
+        code.update(path.read_bytes())
+    files = {p.relative_to(site).as_posix(): hashlib.sha256(p.read_bytes()).hexdigest()
+             for p in sorted(site.rglob("*")) if p.is_file()}
+    return {"code": code.hexdigest(), "files": files}
+
+
 def _build_finished(app: Sphinx, exception) -> None:
     if exception is not None or app.builder.format != "html":
         return
     site = Path(app.outdir)
+    title = app.config.html_title or app.config.project
+    # A site byte for byte as this left it last time (a no-op build) needs nothing redone:
+    # reading every page for its words and every file for its hash takes seconds.
+    record = _record(site)
+    if record.exists() and json.loads(record.read_text()) == _state(site, title):
+        return
     write_icons(site)
-    write_manifest(site, app.config.html_title or app.config.project)
+    write_manifest(site, title)
     write_search_texts(site)
     remove_unreferenced(site)
     write_service_worker(site)  # last: it hashes everything the other steps wrote
+    record.write_text(json.dumps(_state(site, title), indent=0, sort_keys=True))
 
 
 def _add_static(app: Sphinx, config) -> None:

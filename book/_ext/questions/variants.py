@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+from importlib.metadata import version
 from pathlib import Path
 
 from fresh_figures import modules_digest  # book/_ext: the files a module runs, by content
@@ -22,8 +23,9 @@ from fresh_figures import modules_digest  # book/_ext: the files a module runs, 
 from . import store
 from .directive import VARIANTS_DIR, write_graph
 
-#: The code that writes the variants: an edit to it redoes them.
+#: The code that writes the variants, and the one that draws a graph: an edit redoes them.
 WRITERS = (Path(__file__), Path(__file__).with_name("directive.py"))
+GRAPH_WRITER = WRITERS[1]  # directive.write_graph
 
 
 def record_path(outdir: Path) -> Path:
@@ -35,14 +37,13 @@ def _sha256(data: bytes) -> str:
     return hashlib.sha256(data).hexdigest()
 
 
-def _code(app, modules: list[str]) -> str:
-    """The files `modules` run, this extension's writers and matplotlib's version."""
-    import matplotlib
-
+def _code(app, modules: list[str], writers=WRITERS) -> str:
+    """The files `modules` run, the `writers` and matplotlib's version (from its metadata:
+    importing matplotlib takes a second)."""
     digest = hashlib.sha256(modules_digest(app, modules).encode())
-    for path in WRITERS:
+    for path in writers:
         digest.update(path.read_bytes())
-    digest.update(matplotlib.__version__.encode())
+    digest.update(version("matplotlib").encode())
     return digest.hexdigest()
 
 
@@ -78,7 +79,7 @@ def write_variants(app, exception):
     if last.get("inputs") == inputs and _unchanged(folder, last.get("files", {})):
         return
     folder.mkdir(parents=True, exist_ok=True)
-    graph_code = _code(app, [store.GRAPH_MODULE])
+    graph_code = _code(app, [store.GRAPH_MODULE], [GRAPH_WRITER])
     graphs = last.get("graphs", {}) if last.get("graph_code") == graph_code else {}
     files, drawn_graphs = {}, {}
     for key in keys:

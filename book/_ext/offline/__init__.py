@@ -251,17 +251,31 @@ def _build_finished(app: Sphinx, exception) -> None:
         return
     site = Path(app.outdir)
     title = app.config.html_title or app.config.project
-    # A site byte for byte as this left it last time (a no-op build) needs nothing redone:
-    # reading every page for its words and every file for its hash takes seconds.
-    record = _record(site)
-    if record.exists() and json.loads(record.read_text()) == _state(site, title):
+    # Reading every page for its words and every file for its hash takes seconds: a site
+    # byte for byte as this left it last time (a no-op build) needs none of it. Extensions
+    # write their stylesheets again at every build (sphinx-exercise's, myst-nb's: bundled,
+    # so removed here); those alone, unchanged, are removed again.
+    state, record = _state(site, title), _record(site)
+    last = json.loads(record.read_text()) if record.exists() else {}
+    if last.get("code") == state["code"] and _as_left(state["files"], last):
+        for name in set(state["files"]) - set(last["files"]):
+            (site / name).unlink()
         return
     write_icons(site)
     write_manifest(site, title)
     write_search_texts(site)
-    remove_unreferenced(site)
+    removed = remove_unreferenced(site)
     write_service_worker(site)  # last: it hashes everything the other steps wrote
-    record.write_text(json.dumps(_state(site, title), indent=0, sort_keys=True))
+    record.write_text(json.dumps({**_state(site, title), "removed": {name: state["files"].get(name)
+                                                                      for name in removed}},
+                                 indent=0, sort_keys=True))
+
+
+def _as_left(files: dict[str, str], last: dict) -> bool:
+    """`files` are those this left last time, and maybe some it removed, all unchanged."""
+    left, removed = last.get("files", {}), last.get("removed", {})
+    return all(files.get(name) == sha for name, sha in left.items()) and all(
+        removed.get(name) == sha for name, sha in files.items() if name not in left)
 
 
 def _add_static(app: Sphinx, config) -> None:

@@ -97,6 +97,25 @@ def test_a_digest_changes_with_the_modules_imported_and_only_with_them(tmp_path,
     assert ImportGraph("fakepkg").digest(["fakepkg.a"]) != before
 
 
+def test_what_an_earlier_build_parsed_is_reused_only_while_the_file_is_unchanged(tmp_path, monkeypatch):
+    """A no-op build parses no module (ImportGraph.parsed is kept in the environment); an
+    edit to a module's imports, or to the data files it names, is still seen."""
+    graph = _package(tmp_path, monkeypatch)
+    assert graph.closure(["fakepkg.lonely"]) == {"fakepkg", "fakepkg.lonely"}
+    parsed = graph.parsed
+    assert {"fakepkg.lonely", "fakepkg"} <= set(parsed)
+    again = ImportGraph("fakepkg", parsed=parsed)
+    monkeypatch.setattr("ast.parse", lambda *a, **k: pytest.fail("an unchanged module was parsed again"))
+    assert again.closure(["fakepkg.lonely"]) == {"fakepkg", "fakepkg.lonely"}
+    monkeypatch.undo()
+    monkeypatch.syspath_prepend(str(tmp_path))
+    (tmp_path / "fakepkg" / "lonely.py").write_text("from . import c\nDATA = 'table.json'\n")
+    (tmp_path / "fakepkg" / "table.json").write_text("{}")
+    edited = ImportGraph("fakepkg", parsed=parsed)
+    assert edited.closure(["fakepkg.lonely"]) == {"fakepkg", "fakepkg.lonely", "fakepkg.c"}
+    assert tmp_path / "fakepkg" / "table.json" in edited.files(["fakepkg.lonely"])
+
+
 def test_cells_import_what_they_name_and_unreadable_cells_import_everything(tmp_path, monkeypatch):
     graph = _package(tmp_path, monkeypatch)
     assert graph.imported_by_cells(["%matplotlib inline\nfrom fakepkg.sub import deep\nimport os"]) == {

@@ -22,8 +22,6 @@ from sphinx.application import Sphinx
 from sphinx.transforms import SphinxTransform
 from sphinx.util import logging
 
-from physics_figures.figures.book_figure import FIGURE_MARKER
-
 logger = logging.getLogger(__name__)
 
 
@@ -46,6 +44,10 @@ def _figure_name(markdown: nodes.Element | None) -> str | None:
     first = markdown.children[0]
     if not isinstance(first, (nodes.comment, nodes.paragraph)):
         return None
+    # imported here: book_figure imports matplotlib (a second at start-up), needed only when
+    # a page with figures is read
+    from physics_figures.figures.book_figure import FIGURE_MARKER
+
     words = first.astext().lstrip("% ").split()
     if len(words) == 2 and words[0] == FIGURE_MARKER:
         return words[1]

@@ -47,6 +47,7 @@ EVERY_PAGE = (f"{PACKAGE}.notation",)
 #: The first line of the hidden cell that carries a page's digest.
 CELL_MARK = "# fresh_figures: the physics_figures modules this page imports (sha256):"
 ENV_ATTR = "fresh_figures_modules"  # {docname: {"modules": [...], "digest": "..."}}
+PARSED_ATTR = "fresh_figures_parsed"  # ImportGraph.parsed, kept between builds
 #: A glue role or directive that names another page (``path/to/page::key``).
 CROSS_PAGE_GLUE = re.compile(r"\{glue(?::\w+)?\}[` ]\s*([^`\n]*::[^`\n]*)")
 
@@ -54,7 +55,9 @@ CROSS_PAGE_GLUE = re.compile(r"\{glue(?::\w+)?\}[` ]\s*([^`\n]*::[^`\n]*)")
 class ImportGraph:
     """Which modules of `package` a piece of code imports, directly or through others."""
 
-    def __init__(self, package: str = PACKAGE) -> None:
+    def __init__(self, package: str = PACKAGE, parsed: dict | None = None) -> None:
+        """`parsed`: what an earlier graph found in each file, by content (kept between builds
+        in the environment: a no-op build parses no module)."""
         spec = importlib.util.find_spec(package)
         if spec is None or not spec.submodule_search_locations:
             raise RuntimeError(f"cannot find the {package!r} package: is it installed (pip install -e .)?")
@@ -62,6 +65,8 @@ class ImportGraph:
         self.root = Path(next(iter(spec.submodule_search_locations)))
         self._direct: dict[str, frozenset[str]] = {}
         self._data: dict[str, list[Path]] = {}
+        self._bytes: dict[Path, bytes] = {}
+        self.parsed = {} if parsed is None else parsed  # {module: [path, sha256, imports, strings]}
 
     def path(self, module: str) -> Path | None:
         """The file Python runs for `module` (a package's ``__init__.py``), or None."""
@@ -88,6 +93,9 @@ class ImportGraph:
         """Modules of the package that `tree` imports anywhere (at top level or inside a
         function: either may run), with their parent packages. `module` is the code's own
         module name, for relative imports (None: a page's cell, which has none)."""
+        return {name for name in self._imported_names(tree, module) if self.path(name) is not None}
+
+    def _imported_names(self, tree: ast.AST, module: str | None) -> set[str]:
         names: set[str] = set()
         for node in ast.walk(tree):
             if isinstance(node, ast.Import):
@@ -108,12 +116,33 @@ class ImportGraph:
                 for alias in node.names:  # `from package import module`
                     if alias.name != "*":
                         names.add(f"{base}.{alias.name}")
-        return {name for name in names if self.path(name) is not None}
+        return names
+
+    def read(self, path: Path) -> bytes:
+        """A file's bytes, read once a graph (once a build)."""
+        if path not in self._bytes:
+            self._bytes[path] = path.read_bytes()
+        return self._bytes[path]
+
+    def _parse(self, module: str) -> tuple[list[str], list[str]]:
+        """The names `module` imports and the strings it holds that could name a data file,
+        parsed again only when its file changed (checking which exist is left to the caller)."""
+        path = self.path(module)
+        source = self.read(path)
+        key = [path.relative_to(self.root).as_posix(), hashlib.sha256(source).hexdigest()]
+        known = self.parsed.get(module)
+        if known is None or known[:2] != key:
+            tree = ast.parse(source, filename=str(path))
+            strings = {node.value for node in ast.walk(tree)
+                       if isinstance(node, ast.Constant) and isinstance(node.value, str)
+                       and re.fullmatch(r"[\w-]+\.\w+", node.value) and not node.value.endswith(".py")}
+            known = self.parsed[module] = [*key, sorted(self._imported_names(tree, module)), sorted(strings)]
+        return known[2], known[3]
 
     def direct(self, module: str) -> frozenset[str]:
         if module not in self._direct:
-            tree = ast.parse(self.path(module).read_bytes(), filename=str(self.path(module)))
-            self._direct[module] = frozenset(self.imports(tree, module) - {module})
+            names = self._parse(module)[0]
+            self._direct[module] = frozenset(n for n in names if self.path(n) is not None) - {module}
         return self._direct[module]
 
     def closure(self, modules: Iterable[str]) -> set[str]:
@@ -132,9 +161,7 @@ class ImportGraph:
         (``Path(__file__).with_name("marking_rules.json")``). Read once a build."""
         if module not in self._data:
             path = self.path(module)
-            names = {node.value for node in ast.walk(ast.parse(path.read_bytes()))
-                     if isinstance(node, ast.Constant) and isinstance(node.value, str)
-                     and re.fullmatch(r"[\w-]+\.\w+", node.value) and not node.value.endswith(".py")}
+            names = self._parse(module)[1]
             self._data[module] = sorted(path.with_name(name) for name in names if path.with_name(name).is_file())
         return self._data[module]
 
@@ -152,7 +179,7 @@ class ImportGraph:
         digest = hashlib.sha256()
         for path in self.files(modules):
             digest.update(path.relative_to(self.root).as_posix().encode() + b"\0")
-            digest.update(path.read_bytes() + b"\0")
+            digest.update(self.read(path) + b"\0")
         return digest.hexdigest()
 
     def imported_by_cells(self, sources: Iterable[str]) -> set[str]:
@@ -180,7 +207,9 @@ def _with_parents(module: str) -> set[str]:
 def _graph(app: Sphinx) -> ImportGraph:
     """One graph a build (the files do not change while it runs)."""
     if getattr(app, "_fresh_figures_graph", None) is None:
-        app._fresh_figures_graph = ImportGraph()
+        if not hasattr(app.env, PARSED_ATTR):
+            setattr(app.env, PARSED_ATTR, {})
+        app._fresh_figures_graph = ImportGraph(parsed=getattr(app.env, PARSED_ATTR))
     return app._fresh_figures_graph
 
 
@@ -205,6 +234,22 @@ def uses_modules(env, *modules: str) -> None:
     """A directive of the page being read calls this with the physics_figures modules its
     output comes from: the page is read again when any of them (or what they import) changes."""
     _record(env, env.docname, modules)
+
+
+def modules_digest(app: Sphinx, modules: Iterable[str]) -> str:
+    """SHA-256 of what `modules` run: the package's files they reach (ImportGraph.digest),
+    and for a module outside the package (a topic of the tests) its own file and the
+    package's files it reaches. For work done once a build that may be skipped when it is
+    unchanged (the questions' variants)."""
+    graph = _graph(app)
+    digest = hashlib.sha256(graph.digest(modules).encode())
+    for module in sorted(set(modules)):
+        spec = None if graph.path(module) else importlib.util.find_spec(module)
+        if spec is not None and spec.origin and Path(spec.origin).is_file():
+            source = Path(spec.origin).read_bytes()
+            digest.update(f"\0{module}\0".encode() + source)
+            digest.update(graph.digest(graph.imports(ast.parse(source), None)).encode())
+    return digest.hexdigest()
 
 
 def _code_cells(docname: str, path: str, source: str) -> list[str] | None:

@@ -155,12 +155,12 @@ def write_manifest(site: Path, title: str) -> None:
 def write_icons(site: Path) -> None:
     """The home-screen icons, drawn again only when the colours change: "Δp" in white on
     the site's blue."""
-    from matplotlib.figure import Figure  # drawing only when the site is written
-
     for size, path in ICONS.items():
         target = site / path
         if target.exists() and target.stat().st_mtime >= TOKENS.stat().st_mtime:
             continue
+        from matplotlib.figure import Figure  # only to draw one (importing it takes a second)
+
         target.parent.mkdir(parents=True, exist_ok=True)
         figure = Figure(figsize=(1, 1), dpi=size)
         figure.patch.set_facecolor(THEME_COLOUR)
@@ -235,15 +235,52 @@ def _page_context(app: Sphinx, pagename, templatename, context, doctree) -> None
         f'\n    <meta name="theme-color" content="{THEME_COLOUR}" />')
 
 
+def _record(site: Path) -> Path:
+    """The site as this extension last left it, beside the site (no page loads it)."""
+    return site.parent / f"{site.name}-offline.json"
+
+
+def _state(site: Path, title: str) -> dict:
+    """What this extension's work depends on: every file of the site, by content, the title
+    and this extension's code (what writes the service worker, and its template)."""
+    code = hashlib.sha256(title.encode())
+    for path in (Path(__file__), HERE / "sw_template.js"):
+        code.update(path.read_bytes())
+    files = {p.relative_to(site).as_posix(): hashlib.sha256(p.read_bytes()).hexdigest()
+             for p in sorted(site.rglob("*")) if p.is_file()}
+    return {"code": code.hexdigest(), "files": files}
+
+
 def _build_finished(app: Sphinx, exception) -> None:
     if exception is not None or app.builder.format != "html":
         return
     site = Path(app.outdir)
+    title = app.config.html_title or app.config.project
+    # Reading every page for its words and every file for its hash takes seconds: a site
+    # byte for byte as this left it last time (a no-op build) needs none of it. Extensions
+    # write their stylesheets again at every build (sphinx-exercise's, myst-nb's: bundled,
+    # so removed here); those alone, unchanged, are removed again.
+    state, record = _state(site, title), _record(site)
+    last = json.loads(record.read_text()) if record.exists() else {}
+    if last.get("code") == state["code"] and _as_left(state["files"], last):
+        for name in set(state["files"]) - set(last["files"]):
+            (site / name).unlink()
+        return
     write_icons(site)
-    write_manifest(site, app.config.html_title or app.config.project)
+    write_manifest(site, title)
     write_search_texts(site)
-    remove_unreferenced(site)
+    removed = remove_unreferenced(site)
     write_service_worker(site)  # last: it hashes everything the other steps wrote
+    record.write_text(json.dumps({**_state(site, title), "removed": {name: state["files"].get(name)
+                                                                      for name in removed}},
+                                 indent=0, sort_keys=True))
+
+
+def _as_left(files: dict[str, str], last: dict) -> bool:
+    """`files` are those this left last time, and maybe some it removed, all unchanged."""
+    left, removed = last.get("files", {}), last.get("removed", {})
+    return all(files.get(name) == sha for name, sha in left.items()) and all(
+        removed.get(name) == sha for name, sha in files.items() if name not in left)
 
 
 def _add_static(app: Sphinx, config) -> None:

@@ -1,7 +1,8 @@
 """Questions that mark like an examiner (a local Sphinx extension), one module per job:
 
-* directive.py: the ``question`` directive, placing a bank template by its key, and the
-  data it writes (each template's variants, for New numbers);
+* directive.py: the ``question`` directive, placing a bank template by its key;
+* variants.py: each template's variants and their graphs, for New numbers (redone only
+  when what they come from changed);
 * form.py: the answer form in HTML, marked in the browser (static/marking.js, the engine;
   static/questions.js, the page);
 * print_form.py: the question in print, with answer lines (the question sheet reads it);
@@ -31,6 +32,7 @@ from . import (
     self_test,
     store,
     try_similar,
+    variants,
 )
 
 __version__ = "2.0"
@@ -79,6 +81,6 @@ def setup(app):
     app.connect("env-check-consistency", check_topics)
     app.connect("doctree-resolved", resolve)
     app.connect("html-page-context", form.add_assets)
-    app.connect("build-finished", directive.write_variants)
+    app.connect("build-finished", variants.write_variants)
     return {"version": __version__, "parallel_read_safe": True, "parallel_write_safe": True,
             "env_version": 3}

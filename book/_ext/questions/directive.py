@@ -10,12 +10,11 @@ template writes its own text, with the printed numbers (variant 0)::
 The directive makes the question's nodes: title, text, graph, the printed answer lines
 (with their prompt and marks as data, which the question sheet reads), the answer form
 (written by form.py) and the worked answer with its mark scheme. After the build, each
-template's other variants go to a small script of data, loaded by New numbers.
+template's other variants go to a small script of data, loaded by New numbers (variants.py).
 """
 
 from __future__ import annotations
 
-import json
 import os
 from pathlib import Path
 
@@ -197,29 +196,3 @@ def write_graph(folder: Path, name: str, graph, *, formats: tuple[str, ...]):
     drawn.figure.clear()  # matplotlib keeps figures alive until cleared
     return drawn
 
-
-def write_variants(app, exception):
-    """Each template's variants as a small script, loaded only when New numbers is pressed (a
-    <script> element, so it works from file:// too, where fetch() does not)."""
-    if exception or app.builder.format != "html":
-        return
-    keys = sorted({key for keys in store.templates_used(app.env).values() for key in keys})
-    if not keys:
-        return
-    folder = Path(app.outdir) / "_static" / VARIANTS_DIR
-    folder.mkdir(parents=True, exist_ok=True)
-    for key in keys:
-        template = store.template(app.config, key)
-        if len(template.values) < 2:  # no New numbers: nothing to load
-            continue
-        variants = []
-        for index, variant in enumerate(template.variants):
-            data = variant.variant_data()
-            if variant.graph is not None:  # its own graph, beside the variants' script
-                drawn = write_graph(folder, f"{key}-{index}", variant.graph, formats=("svg",))
-                data["graph"] = {"src": f"{key}-{index}.svg", "alt": drawn.alt}
-            variants.append(data)
-        payload = json.dumps(variants, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
-        (folder / f"{key}.js").write_text(
-            f"(window.QuestionVariants = window.QuestionVariants || {{}})[{json.dumps(key)}] = {payload};\n",
-            encoding="utf-8")

@@ -51,14 +51,14 @@ def write_icon_font(app: Sphinx) -> Path:
     ``_static/site.css`` declares it under the theme's font name, after the theme's own
     declaration, so the browser never fetches the 150 kB original.
     """
-    from fontTools import subset
-    from fontTools.ttLib import TTFont
-
     source = theme_dirs()[0] / "static/vendor/fontawesome/webfonts/fa-solid-900.ttf"
     target = Path(app.outdir) / "_static" / ASSETS / "icons.woff"
     newest_input = max(source.stat().st_mtime, Path(__file__).stat().st_mtime)
     if target.exists() and target.stat().st_mtime >= newest_input:
         return target
+    from fontTools import subset  # only when the font is made (a no-op build keeps it)
+    from fontTools.ttLib import TTFont
+
     options = subset.Options()
     options.flavor = "woff"  # zlib compression: needs no brotli module
     options.layout_features = []

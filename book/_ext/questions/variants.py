@@ -1,0 +1,116 @@
+"""Each template's other variants, for New numbers: a small script of data per template and
+an SVG per variant's graph, under the site's _static/questions/, written when the HTML
+build finishes.
+
+Working them out (every variant of every template) and drawing 60-odd graphs with
+matplotlib takes longer than the rest of a no-op rebuild, so the last build's inputs and
+outputs are recorded beside the site (``html-question-variants.json``): with the same
+inputs (the templates placed, the files of the bank, its shared modules and the graph
+module, this extension's code, matplotlib) and every output still as written, nothing is
+redone. When something did change, a graph whose own numbers and drawing code are as
+before is not drawn again.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from importlib.metadata import version
+from pathlib import Path
+
+from fresh_figures import modules_digest  # book/_ext: the files a module runs, by content
+
+from . import store
+from .directive import VARIANTS_DIR, write_graph
+
+#: The code that writes the variants, and the one that draws a graph: an edit redoes them.
+WRITERS = (Path(__file__), Path(__file__).with_name("directive.py"))
+GRAPH_WRITER = WRITERS[1]  # directive.write_graph
+
+
+def record_path(outdir: Path) -> Path:
+    """The last build's inputs and outputs, beside the site (no page loads it)."""
+    return outdir.parent / f"{outdir.name}-question-variants.json"
+
+
+def _sha256(data: bytes) -> str:
+    return hashlib.sha256(data).hexdigest()
+
+
+def _code(app, modules: list[str], writers=WRITERS) -> str:
+    """The files `modules` run, the `writers` and matplotlib's version (from its metadata:
+    importing matplotlib takes a second)."""
+    digest = hashlib.sha256(modules_digest(app, modules).encode())
+    for path in writers:
+        digest.update(path.read_bytes())
+    digest.update(version("matplotlib").encode())
+    return digest.hexdigest()
+
+
+def _inputs(app, keys: list[str]) -> str:
+    modules = [*store.bank_modules(app.config), store.GRAPH_MODULE]
+    return _sha256(json.dumps([keys, _code(app, modules)]).encode())
+
+
+def _unchanged(folder: Path, files: dict[str, str]) -> bool:
+    """Every output of the last build is still there, byte for byte."""
+    return bool(files) and all((folder / name).is_file() and _sha256((folder / name).read_bytes()) == sha
+                               for name, sha in files.items())
+
+
+def _write(path: Path, content: bytes) -> str:
+    if not path.exists() or path.read_bytes() != content:  # an unchanged file keeps its mtime
+        path.write_bytes(content)
+    return _sha256(content)
+
+
+def write_variants(app, exception):
+    """Each template's variants as a small script, loaded only when New numbers is pressed (a
+    <script> element, so it works from file:// too, where fetch() does not)."""
+    if exception or app.builder.format != "html":
+        return
+    keys = sorted({key for keys in store.templates_used(app.env).values() for key in keys})
+    if not keys:
+        return
+    folder = Path(app.outdir) / "_static" / VARIANTS_DIR
+    record_file = record_path(Path(app.outdir))
+    last = json.loads(record_file.read_text()) if record_file.exists() else {}
+    inputs = _inputs(app, keys)
+    if last.get("inputs") == inputs and _unchanged(folder, last.get("files", {})):
+        return
+    folder.mkdir(parents=True, exist_ok=True)
+    graph_code = _code(app, [store.GRAPH_MODULE], [GRAPH_WRITER])
+    graphs = last.get("graphs", {}) if last.get("graph_code") == graph_code else {}
+    files, drawn_graphs = {}, {}
+    for key in keys:
+        template = store.template(app.config, key)
+        if len(template.values) < 2:  # no New numbers: nothing to load
+            continue
+        variants = []
+        for index, variant in enumerate(template.variants):
+            data = variant.variant_data()
+            if variant.graph is not None:  # its own graph, beside the variants' script
+                name = f"{key}-{index}.svg"
+                data["graph"] = {"src": name, "alt": _graph(folder, name, variant.graph, graphs, drawn_graphs)}
+                files[name] = drawn_graphs[name]["svg"]
+            variants.append(data)
+        payload = json.dumps(variants, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
+        script = f"(window.QuestionVariants = window.QuestionVariants || {{}})[{json.dumps(key)}] = {payload};\n"
+        files[f"{key}.js"] = _write(folder / f"{key}.js", script.encode())
+    for name in set(last.get("files", {})) - set(files):  # a template no page places any more
+        (folder / name).unlink(missing_ok=True)
+    record_file.write_text(json.dumps({"inputs": inputs, "files": files, "graph_code": graph_code,
+                                       "graphs": drawn_graphs}, indent=1, sort_keys=True))
+
+
+def _graph(folder: Path, name: str, graph, last: dict, drawn: dict) -> str:
+    """Draw one variant's graph unless the same numbers drew the file that is there; its alt text."""
+    numbers = _sha256(repr(graph).encode())
+    before = last.get(name, {})
+    path = folder / name
+    if before.get("numbers") == numbers and path.is_file() and _sha256(path.read_bytes()) == before["svg"]:
+        drawn[name] = before
+    else:
+        figure = write_graph(folder, name.removesuffix(".svg"), graph, formats=("svg",))
+        drawn[name] = {"numbers": numbers, "alt": figure.alt, "svg": _sha256(path.read_bytes())}
+    return drawn[name]["alt"]

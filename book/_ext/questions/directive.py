@@ -177,7 +177,6 @@ def mark_scheme_nodes(data) -> list[nodes.Node]:
     return [items]
 
 
-VARIANTS_DIR = "questions"  # under the site's _static/: one file of variants per template
 GRAPHS_DIR = "question-graphs"  # beside the doctrees: the printed variants' graphs, as sources
 
 

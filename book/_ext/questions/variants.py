@@ -21,7 +21,9 @@ from pathlib import Path
 from fresh_figures import modules_digest  # book/_ext: the files a module runs, by content
 
 from . import store
-from .directive import VARIANTS_DIR, write_graph
+from .directive import write_graph
+
+VARIANTS_DIR = "questions"  # under the site's _static/: one file of variants per template
 
 #: The code that writes the variants, and the one that draws a graph: an edit redoes them.
 WRITERS = (Path(__file__), Path(__file__).with_name("directive.py"))

@@ -71,12 +71,13 @@ html: venv node_modules/.package-lock.json
 	$(JB_BUILD)
 
 # The site links the teachers' PDFs, worksheets and Moodle file, and a zip of itself (to
-# read from disk, offline), so the book is the HTML, then the PDFs, the worksheets, the
-# Moodle XML, then the zip of all (in that order, also under make -j).
+# read from disk, offline), so the book is the HTML, then the PDFs, the worksheets and the
+# Moodle XML side by side (each writes its own files; each one's output is printed when it
+# is done), then the zip of all.
 book: html
-	@$(MAKE) --no-print-directory pdf
-	@$(MAKE) --no-print-directory worksheets
-	@$(MAKE) --no-print-directory moodle
+	@scripts/ensure-debian-packages pdf
+	@echo ">>> the PDFs, the teachers' worksheets and the Moodle XML, side by side"
+	@$(MAKE) --no-print-directory -j3 --output-sync=target pdf worksheets moodle
 	@echo ">>> packing the site into a zip to open from disk"
 	$(BIN)/python scripts/zip_site.py $(SITE)
 	@echo ">>> done: open $(CURDIR)/$(SITE)/index.html  (or run: make serve)"
@@ -95,13 +96,26 @@ moodle: venv
 	@echo ">>> writing the question bank as Moodle XML"
 	$(BIN)/python -m physics_figures.worksheets.moodle $(TEACHERS)/dynamics-moodle.xml
 
-test: venv
+# The tests that need no site (models, questions, the small books of the build tests) run
+# beside the book's build, each mostly on one core; their report follows the build's. Then
+# the tests of the built site and the browser tests. The two runs together are the suite.
+NO_SITE := not site and not browser
+NO_SITE_LOG := _build/tests-without-site.log
+test: venv node_modules/.package-lock.json
 	@scripts/ensure-debian-packages test
-	@$(MAKE) --no-print-directory book
-	@echo ">>> linting, then running the test suite"
+	@echo ">>> linting"
 	$(BIN)/ruff check $(LINTED)
 	@$(MAKE) --no-print-directory jslint
-	$(BIN)/python -m pytest
+	@mkdir -p _build
+	@echo ">>> building the book; beside it, the tests that need no site (report: $(NO_SITE_LOG))"
+	@$(BIN)/python -m pytest -p no:cacheprovider -m "$(NO_SITE)" >$(NO_SITE_LOG) 2>&1 & tests=$$!; \
+	  $(MAKE) --no-print-directory book || { kill $$tests; wait $$tests; exit 1; }; \
+	  wait $$tests && no_site=0 || no_site=$$?; \
+	  echo ">>> the tests that need no site:"; cat $(NO_SITE_LOG); \
+	  echo ">>> the tests of the built site, in Chromium too"; \
+	  $(BIN)/python -m pytest -m "not ($(NO_SITE))" && site=0 || site=$$?; \
+	  [ $$no_site -eq 0 ] || echo "!!! the tests that need no site failed: see above ($(NO_SITE_LOG))"; \
+	  exit $$(( no_site || site ))
 
 # The fast loop: ruff and every test that needs no build and no browser (models, marking
 # rules, questions, notation), with the question variants sampled. Under a minute.

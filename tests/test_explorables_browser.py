@@ -1,55 +1,38 @@
-"""The explorables in a real browser: Debian's chromium, driven by playwright, on the built site.
+"""The explorables in a real browser: Debian's Chromium, driven by playwright, on the built site.
 
 The site (the `site_dir` fixture; SITE_DIR points it at a site built elsewhere) is served
-by a local http.server on a free port. Each test works the page as a reader would, with
+as a static host serves it (tests/browser.py). Each test works the page as a reader would, with
 the keyboard or the pointer, and checks the read-outs against physics_figures.
 """
 
 from __future__ import annotations
 
-import functools
-import http.server
 import re
-import threading
 from pathlib import Path
 
 import pytest
-from playwright.sync_api import Page, expect, sync_playwright
+from browser import open_browser, serve_site
+from playwright.sync_api import Page, expect
 
 from physics_figures import models, scenarios
 from physics_figures.explorables import EXPLORABLES, REFUSALS, collision_lab
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
-CHROMIUM = "/usr/bin/chromium"
-CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-                 "--disable-background-networking", "--disable-component-update", "--disable-sync"]
 PHONE = {"width": 390, "height": 844}
 DESKTOP = {"width": 1100, "height": 900}
 
 
-class QuietHandler(http.server.SimpleHTTPRequestHandler):
-    def log_message(self, format, *args):  # keep the test output clean
-        pass
-
-
 @pytest.fixture(scope="module")
 def base_url(site_dir):
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0),
-                                             functools.partial(QuietHandler, directory=str(site_dir)))
-    thread = threading.Thread(target=server.serve_forever, daemon=True)
-    thread.start()
-    yield f"http://127.0.0.1:{server.server_address[1]}"
-    server.shutdown()
-    server.server_close()
+    with serve_site(site_dir) as base:
+        yield base
 
 
 @pytest.fixture(scope="module")
 def browser():
-    with sync_playwright() as playwright:
-        browser = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
-        yield browser
-        browser.close()
+    with open_browser() as chromium:
+        yield chromium
 
 
 def page_with(site_dir: Path, name: str) -> str:

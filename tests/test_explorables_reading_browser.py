@@ -48,16 +48,27 @@ TARGETS = """() => [...document.querySelectorAll('.explorable[data-built] input,
   })"""
 
 
+@pytest.fixture(scope="module")
+def base(site_dir):
+    with serve_site(site_dir) as url:
+        yield url
+
+
+@pytest.fixture(scope="module")
+def browser():
+    with open_browser() as chromium:
+        yield chromium
+
+
 @pytest.mark.parametrize("name", EXPLORABLES)
-def test_every_control_is_at_least_44_px_square_on_a_touch_screen(site_dir, name):
-    with serve_site(site_dir) as base, open_browser() as browser:
-        context = browser.new_context(**TOUCH_PHONE)
-        page = context.new_page()
-        page.goto(f"{base}/{explorable_page(site_dir, name)}")
-        assert page.evaluate("matchMedia('(pointer: coarse)').matches"), "the touch phone is not coarse"
-        page.wait_for_selector(f'.explorable[data-explorable="{name}"][data-built]')
-        targets = page.evaluate(TARGETS)
-        context.close()
+def test_every_control_is_at_least_44_px_square_on_a_touch_screen(site_dir, base, browser, name):
+    context = browser.new_context(**TOUCH_PHONE)
+    page = context.new_page()
+    page.goto(f"{base}/{explorable_page(site_dir, name)}")
+    assert page.evaluate("matchMedia('(pointer: coarse)').matches"), "the touch phone is not coarse"
+    page.wait_for_selector(f'.explorable[data-explorable="{name}"][data-built]')
+    targets = page.evaluate(TARGETS)
+    context.close()
     assert targets, f"{name}: no controls found"
     small = [t for t in targets if t["w"] < SMALLEST_TARGET_PX or t["h"] < SMALLEST_TARGET_PX
              or (t["thumb"] and min(t["thumb"]) < SMALLEST_TARGET_PX)]
@@ -69,39 +80,37 @@ def _plot_box(page, selector):
 
 
 @pytest.mark.parametrize("viewport", [PHONE, DESKTOP], ids=["390", "1280"])
-def test_the_skydiver_time_slider_sits_next_to_its_graph(site_dir, viewport):
-    with serve_site(site_dir) as base, open_browser() as browser:
-        page = browser.new_page(viewport=viewport)
-        page.goto(f"{base}/{explorable_page(site_dir, 'skydiver')}")
-        root = '.explorable[data-explorable="skydiver"]'
-        page.wait_for_selector(f"{root}[data-built]")
-        slider = page.get_by_role("slider", name="Time along the graph").bounding_box()
-        graph = _plot_box(page, f"{root} svg.ex-plot")
+def test_the_skydiver_time_slider_sits_next_to_its_graph(site_dir, base, browser, viewport):
+    page = browser.new_page(viewport=viewport)
+    page.goto(f"{base}/{explorable_page(site_dir, 'skydiver')}")
+    root = '.explorable[data-explorable="skydiver"]'
+    page.wait_for_selector(f"{root}[data-built]")
+    slider = page.get_by_role("slider", name="Time along the graph").bounding_box()
+    graph = _plot_box(page, f"{root} svg.ex-plot")
     gap = max(graph["y"] - (slider["y"] + slider["height"]), slider["y"] - (graph["y"] + graph["height"]), 0)
     assert gap <= 120, f"the time slider is {gap:.0f} px from the velocity graph"
 
 
-def test_a_typed_value_out_of_range_gets_a_message(site_dir):
-    with serve_site(site_dir) as base, open_browser() as browser:
-        page = browser.new_page(viewport=PHONE)
-        page.goto(f"{base}/{explorable_page(site_dir, 'skydiver')}")
-        page.wait_for_selector('.explorable[data-explorable="skydiver"][data-built]')
-        box = page.get_by_role("spinbutton", name="Mass of the skydiver in kilograms")
-        used = box.input_value()
-        box.fill("500")
-        message = page.locator(".ex-range-message:visible")
-        expect(message).to_have_count(1)
-        text = message.inner_text()
-        assert "500 is out of range" in text and "40" in text and "120" in text, text
-        assert box.get_attribute("aria-invalid") == "true"
-        described = box.get_attribute("aria-describedby")
-        assert described and page.locator(f"#{described}").inner_text() == text
-        box.press("Tab")  # leaving the box: it goes back to the value in use, the message stays
-        assert box.input_value() == used
-        expect(message).to_have_count(1)
-        box.fill("70")
-        expect(page.locator(".ex-range-message:visible")).to_have_count(0)
-        assert box.get_attribute("aria-invalid") is None
+def test_a_typed_value_out_of_range_gets_a_message(site_dir, base, browser):
+    page = browser.new_page(viewport=PHONE)
+    page.goto(f"{base}/{explorable_page(site_dir, 'skydiver')}")
+    page.wait_for_selector('.explorable[data-explorable="skydiver"][data-built]')
+    box = page.get_by_role("spinbutton", name="Mass of the skydiver in kilograms")
+    used = box.input_value()
+    box.fill("500")
+    message = page.locator(".ex-range-message:visible")
+    expect(message).to_have_count(1)
+    text = message.inner_text()
+    assert "500 is out of range" in text and "40" in text and "120" in text, text
+    assert box.get_attribute("aria-invalid") == "true"
+    described = box.get_attribute("aria-describedby")
+    assert described and page.locator(f"#{described}").inner_text() == text
+    box.press("Tab")  # leaving the box: it goes back to the value in use, the message stays
+    assert box.input_value() == used
+    expect(message).to_have_count(1)
+    box.fill("70")
+    expect(page.locator(".ex-range-message:visible")).to_have_count(0)
+    assert box.get_attribute("aria-invalid") is None
 
 
 def _top_tick(page, index: int) -> float:
@@ -110,16 +119,15 @@ def _top_tick(page, index: int) -> float:
     return max(float(t.replace("\u2212", "-").replace("\u202f", "")) for t in ticks if t.strip())
 
 
-def test_the_skydiver_velocity_axis_scales_to_the_run(site_dir):
-    with serve_site(site_dir) as base, open_browser() as browser:
-        page = browser.new_page(viewport=DESKTOP)
-        page.goto(f"{base}/{explorable_page(site_dir, 'skydiver')}")
-        page.wait_for_selector('.explorable[data-explorable="skydiver"][data-built]')
-        mass, drag = 40.0, 1.0  # the lightest skydiver with the most drag: about 20 m/s
-        page.get_by_role("spinbutton", name="Mass of the skydiver in kilograms").fill(str(mass))
-        page.get_by_role("spinbutton", name="Body\u2019s drag constant k (drag = k v\u00b2) in kilograms per metre").fill(str(drag))
-        terminal = models.terminal_velocity(mass, drag)
-        top = _top_tick(page, 0)
+def test_the_skydiver_velocity_axis_scales_to_the_run(site_dir, base, browser):
+    page = browser.new_page(viewport=DESKTOP)
+    page.goto(f"{base}/{explorable_page(site_dir, 'skydiver')}")
+    page.wait_for_selector('.explorable[data-explorable="skydiver"][data-built]')
+    mass, drag = 40.0, 1.0  # the lightest skydiver with the most drag: about 20 m/s
+    page.get_by_role("spinbutton", name="Mass of the skydiver in kilograms").fill(str(mass))
+    page.get_by_role("spinbutton", name="Body\u2019s drag constant k (drag = k v\u00b2) in kilograms per metre").fill(str(drag))
+    terminal = models.terminal_velocity(mass, drag)
+    top = _top_tick(page, 0)
     assert terminal < top <= 1.5 * terminal, f"terminal velocity {terminal:.1f} m/s drawn on an axis to {top}"
 
 
@@ -146,33 +154,31 @@ OVERLAPS = """() => {
 
 
 @pytest.mark.parametrize("viewport", [PHONE, DESKTOP], ids=["390", "1280"])
-def test_annotation_labels_never_sit_on_ticks_or_the_frame(site_dir, viewport):
+def test_annotation_labels_never_sit_on_ticks_or_the_frame(site_dir, base, browser, viewport):
     bad = {}
-    with serve_site(site_dir) as base, open_browser() as browser:
-        page = browser.new_page(viewport=viewport)
-        for name in ("skydiver", "momentum-time-reader"):
-            page.goto(f"{base}/{explorable_page(site_dir, name)}")
-            page.wait_for_selector(f'.explorable[data-explorable="{name}"][data-built]')
-            found = page.evaluate(OVERLAPS)
-            if name == "skydiver":  # a hard opening: the off-scale label near the bottom frame
-                page.get_by_role("spinbutton", name="Time the parachute takes to open \u03c4 in seconds").fill("0.5")
-                found += page.evaluate(OVERLAPS)
-            if found:
-                bad[name] = found
+    page = browser.new_page(viewport=viewport)
+    for name in ("skydiver", "momentum-time-reader"):
+        page.goto(f"{base}/{explorable_page(site_dir, name)}")
+        page.wait_for_selector(f'.explorable[data-explorable="{name}"][data-built]')
+        found = page.evaluate(OVERLAPS)
+        if name == "skydiver":  # a hard opening: the off-scale label near the bottom frame
+            page.get_by_role("spinbutton", name="Time the parachute takes to open \u03c4 in seconds").fill("0.5")
+            found += page.evaluate(OVERLAPS)
+        if found:
+            bad[name] = found
     assert not bad, bad
 
 
-def test_the_collision_lab_has_one_live_region(site_dir):
-    with serve_site(site_dir) as base, open_browser() as browser:
-        page = browser.new_page(viewport=DESKTOP)
-        page.goto(f"{base}/{explorable_page(site_dir, 'collision-lab')}")
-        page.wait_for_selector('.explorable[data-explorable="collision-lab"][data-built]')
-        live = page.evaluate("""() => [...document.querySelectorAll(
-            '.explorable[data-explorable="collision-lab"] *')].filter(el => {
-              const mode = el.getAttribute('aria-live');
-              const role = el.getAttribute('role') || (el.tagName === 'OUTPUT' ? 'status' : '');
-              return mode ? mode !== 'off' : ['status', 'alert', 'log'].includes(role);
-            }).map(el => el.className || el.tagName)""")
+def test_the_collision_lab_has_one_live_region(site_dir, base, browser):
+    page = browser.new_page(viewport=DESKTOP)
+    page.goto(f"{base}/{explorable_page(site_dir, 'collision-lab')}")
+    page.wait_for_selector('.explorable[data-explorable="collision-lab"][data-built]')
+    live = page.evaluate("""() => [...document.querySelectorAll(
+        '.explorable[data-explorable="collision-lab"] *')].filter(el => {
+          const mode = el.getAttribute('aria-live');
+          const role = el.getAttribute('role') || (el.tagName === 'OUTPUT' ? 'status' : '');
+          return mode ? mode !== 'off' : ['status', 'alert', 'log'].includes(role);
+        }).map(el => el.className || el.tagName)""")
     assert len(live) == 1, f"live regions in the collision lab: {live}"
 
 
@@ -199,23 +205,22 @@ COVERED = """() => {
 
 
 @pytest.mark.parametrize("viewport", [PHONE, {"width": 900, "height": 800}, DESKTOP], ids=["390", "900", "1280"])
-def test_back_to_top_never_covers_text_or_controls(site_dir, viewport):
+def test_back_to_top_never_covers_text_or_controls(site_dir, base, browser, viewport):
     covered, scrolled = {}, 0
     pages = [explorable_page(site_dir, "skydiver"), explorable_page(site_dir, "collision-lab"),
              "book/exam/quick-check.html", "book/understand/momentum-time-graph.html"]
-    with serve_site(site_dir) as base, open_browser() as browser:
-        page = browser.new_page(viewport=viewport)
-        for path in pages:
-            page.goto(f"{base}/{path}")
-            page.wait_for_load_state("networkidle")
-            height = page.evaluate("document.body.scrollHeight")
-            for _ in range(1500, height, 700):
-                page.mouse.wheel(0, 700 + 300)  # down, then a little up: the theme shows it on the way up
-                page.mouse.wheel(0, -300)
-                page.wait_for_timeout(150)  # the theme shows the button from a scroll event
-                scrolled += page.evaluate("window.scrollY > 0")
-                found = page.evaluate(COVERED)
-                if found:
-                    covered.setdefault(path, []).extend(found[:3])
+    page = browser.new_page(viewport=viewport)
+    for path in pages:
+        page.goto(f"{base}/{path}")
+        page.wait_for_load_state("networkidle")
+        height = page.evaluate("document.body.scrollHeight")
+        for _ in range(1500, height, 700):
+            page.mouse.wheel(0, 700 + 300)  # down, then a little up: the theme shows it on the way up
+            page.mouse.wheel(0, -300)
+            page.wait_for_timeout(150)  # the theme shows the button from a scroll event
+            scrolled += page.evaluate("window.scrollY > 0")
+            found = page.evaluate(COVERED)
+            if found:
+                covered.setdefault(path, []).extend(found[:3])
     assert scrolled, "the pages never scrolled: the test saw nothing"
     assert not covered, f"Back to top covers: {covered}"

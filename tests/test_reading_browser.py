@@ -21,7 +21,6 @@ from physics_figures.notation import UNIT_SYMBOLS
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
 PHONE = {"width": 390, "height": 844}
-DESKTOP = {"width": 1280, "height": 800}
 #: CLARIFICATIONS, Reading: figure text at least this high, inline, at 390 px.
 SMALLEST_FIGURE_TEXT_PX = 11.0
 
@@ -70,6 +69,32 @@ def split_values(texts: list[str], symbols: list[str]) -> list[str]:
     return [m[0] for text in texts for m in value.finditer(text) if breakable.search(m[0])]
 
 
+SHOWN_CODE = """() => {
+  const out = [];
+  for (const el of document.querySelectorAll('.cell_input, .cell .highlight, details.hide, .toggle-details, summary'))
+    if (el.closest('.cell')) out.push(el.className || el.tagName);
+  if (/Show code cell (source|content)/.test(document.body.innerText)) out.push('Show code cell source');
+  return out;
+}"""
+
+
+@pytest.fixture(scope="module")
+def readings(site_dir) -> dict[str, dict]:
+    """Every page read once on a 390 px phone: its blocks of text with digits (BLOCK_TEXTS),
+    its figures' text sizes (FIGURE_TEXT) and any code shown (SHOWN_CODE)."""
+    read = {}
+    with serve_site(site_dir) as base, open_browser() as browser:
+        context = browser.new_context(viewport=PHONE)
+        page = context.new_page()
+        for path in site_pages(site_dir):
+            page.goto(f"{base}/{path}", wait_until="load")
+            page.wait_for_load_state("networkidle")  # the root page redirects
+            read[path] = {"blocks": page.evaluate(BLOCK_TEXTS), "figures": page.evaluate(FIGURE_TEXT),
+                          "code": page.evaluate(SHOWN_CODE)}
+        context.close()
+    return read
+
+
 def test_split_values_finds_a_breakable_space_and_passes_a_joined_value():
     symbols = question_unit_symbols()
     assert split_values(["at 50 m s⁻¹ down"], symbols) == ["50 m s⁻¹"]
@@ -79,19 +104,9 @@ def test_split_values_finds_a_breakable_space_and_passes_a_joined_value():
     assert split_values(["Example 2 shows"], symbols) == []
 
 
-def test_no_value_is_split_from_its_unit_on_any_page(site_dir):
+def test_no_value_is_split_from_its_unit_on_any_page(readings):
     symbols = question_unit_symbols()
-    found = {}
-    with serve_site(site_dir) as base, open_browser() as browser:
-        context = browser.new_context(viewport=PHONE)
-        page = context.new_page()
-        for path in site_pages(site_dir):
-            page.goto(f"{base}/{path}", wait_until="load")
-            page.wait_for_load_state("networkidle")
-            split = split_values(page.evaluate(BLOCK_TEXTS), symbols)
-            if split:
-                found[path] = split[:8]
-        context.close()
+    found = {path: split[:8] for path, read in readings.items() if (split := split_values(read["blocks"], symbols))}
     assert not found, f"values a line can break inside (use U+00A0): {found}"
 
 
@@ -135,19 +150,12 @@ FIGURE_TEXT = """async () => {
 }"""
 
 
-def test_every_figure_s_text_is_at_least_11_css_px_on_a_390_px_phone(site_dir):
+def test_every_figure_s_text_is_at_least_11_css_px_on_a_390_px_phone(readings):
     small, measured = [], 0
-    with serve_site(site_dir) as base, open_browser() as browser:
-        context = browser.new_context(viewport=PHONE)
-        page = context.new_page()
-        for path in site_pages(site_dir):
-            page.goto(f"{base}/{path}", wait_until="load")
-            page.wait_for_load_state("networkidle")  # the root page redirects
-            texts = page.evaluate(FIGURE_TEXT)
-            measured += len(texts)
-            small += [f"{path} {t['figure']}: {t['text']!r} at {t['px']:.1f} px"
-                      for t in texts if t["px"] < SMALLEST_FIGURE_TEXT_PX]
-        context.close()
+    for path, read in readings.items():
+        measured += len(read["figures"])
+        small += [f"{path} {t['figure']}: {t['text']!r} at {t['px']:.1f} px"
+                  for t in read["figures"] if t["px"] < SMALLEST_FIGURE_TEXT_PX]
     assert measured > 300, f"only {measured} figure texts measured: are the figures on the pages?"
     assert not small, f"{len(small)} figure texts below {SMALLEST_FIGURE_TEXT_PX} px at 390 px: {small[:12]}"
 
@@ -165,22 +173,8 @@ def test_question_graphs_are_measured_too(site_dir):
         assert graphs and {t["figure"] for t in page.evaluate(FIGURE_TEXT)} >= set(graphs), texts[:3]
 
 
-def test_no_page_shows_code_or_a_code_toggle(site_dir):
-    shown = {}
-    with serve_site(site_dir) as base, open_browser() as browser:
-        page = browser.new_page(viewport=DESKTOP)
-        for path in site_pages(site_dir):
-            page.goto(f"{base}/{path}", wait_until="load")
-            page.wait_for_load_state("networkidle")  # the root page redirects
-            found = page.evaluate("""() => {
-              const out = [];
-              for (const el of document.querySelectorAll('.cell_input, .cell .highlight, details.hide, .toggle-details, summary'))
-                if (el.closest('.cell')) out.push(el.className || el.tagName);
-              if (/Show code cell (source|content)/.test(document.body.innerText)) out.push('Show code cell source');
-              return out;
-            }""")
-            if found:
-                shown[path] = found
+def test_no_page_shows_code_or_a_code_toggle(readings):
+    shown = {path: read["code"] for path, read in readings.items() if read["code"]}
     assert not shown, f"pages that show code or its toggle to students: {shown}"
 
 

@@ -181,9 +181,10 @@ async def _sweep(site: Path) -> dict[str, PageReport]:
     reports = {path: PageReport(path) for path in pages}
     with serve_site(site) as base:
         async with open_browser_async() as browser:
-            # The four modes run side by side (two cores: about twice as fast).
-            await asyncio.gather(*(_sweep_mode(browser, base, pages, v, s, reports) for v, s in MODES))
-            await _weigh(browser, base, pages, reports)
+            # The four modes and the weighing run side by side (the weighing mostly waits for
+            # the network to be idle).
+            await asyncio.gather(*(_sweep_mode(browser, base, pages, v, s, reports) for v, s in MODES),
+                                 _weigh(browser, base, pages, reports))
     return reports
 
 
@@ -374,7 +375,7 @@ def _lighthouse(url: str, output: Path) -> dict[str, float]:
     """Lighthouse (npm, pinned), mobile, against the local server; {category: score}."""
     cli = node_module("lighthouse") / "cli" / "index.js"
     flags = " ".join(CHROMIUM_ARGS)
-    env = {**os.environ, "CHROME_PATH": chromium_path()}
+    env = {**os.environ, "CHROME_PATH": chromium_path(whole_browser=True)}
     result = subprocess.run(
         ["node", str(cli), url, "--quiet", "--output=json", f"--output-path={output}",
          f"--chrome-flags={flags}", "--only-categories=performance,accessibility,best-practices,seo"],
@@ -386,11 +387,21 @@ def _lighthouse(url: str, output: Path) -> dict[str, float]:
     return {name: category["score"] for name, category in report["categories"].items()}
 
 
+#: Each category's best of up to this many runs, as `make bench` judges it (CLARIFICATIONS):
+#: the performance score of one run swings with what else the machine is doing.
+LIGHTHOUSE_RUNS = 3
+
+
 def test_lighthouse_on_the_heaviest_page(sweep, site_dir):
     heaviest = max(sweep.values(), key=lambda report: report.total_bytes).path
+    scores: dict[str, float] = {}
     with serve_site(site_dir) as base, tempfile.TemporaryDirectory() as folder:
-        scores = _lighthouse(f"{base}/{heaviest}", Path(folder) / "report.json")
-    low = {name: score for name, score in scores.items() if score is None or score < LIGHTHOUSE_MINIMUM[name]}
+        for _ in range(LIGHTHOUSE_RUNS):
+            run = _lighthouse(f"{base}/{heaviest}", Path(folder) / "report.json")
+            scores = {name: max(score or 0, scores.get(name, 0)) for name, score in run.items()}
+            if all(scores[name] >= minimum for name, minimum in LIGHTHOUSE_MINIMUM.items()):
+                break
+    low = {name: score for name, score in scores.items() if score < LIGHTHOUSE_MINIMUM[name]}
     assert not low, f"lighthouse (mobile) on {heaviest}: {scores}; below the minimum {LIGHTHOUSE_MINIMUM}"
 
 

@@ -1,0 +1,95 @@
+"""Time `make test` on fresh clones of two commits, one after the other, in one run.
+
+    python scripts/bench_make_test.py BASE [COMMIT]     (COMMIT: HEAD when left out)
+
+Each commit is cloned from this repository into a temporary folder and `make test` runs
+there as CI runs it: a new venv, `npm ci`, the book built from nothing, the whole suite.
+The wall time, the tests that passed and failed, and the ratio of the second commit's time
+to the first's go into BENCHMARKS.md, under "`make test`, side by side" (the rest of the
+file is `make bench`'s, which keeps this section when it rewrites the file).
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime
+import re
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+HEADING = "## `make test`, side by side"
+
+
+def make_test(commit: str, folder: Path) -> dict:
+    """Clone `commit` into `folder`, run `make test` there; its time and test counts."""
+    subprocess.run(["git", "clone", "--quiet", str(ROOT), str(folder)], check=True)
+    subprocess.run(["git", "-C", str(folder), "checkout", "--quiet", commit], check=True)
+    sha = subprocess.run(["git", "-C", str(folder), "rev-parse", "--short", "HEAD"], check=True,
+                         capture_output=True, text=True).stdout.strip()
+    log = ROOT / "_build" / f"make-test-{sha}.log"
+    log.parent.mkdir(exist_ok=True)
+    print(f">>> make test at {sha} (log: {log})", flush=True)
+    start = time.monotonic()
+    with log.open("w") as out:
+        status = subprocess.run(["make", "test"], check=False, cwd=folder, stdout=out, stderr=subprocess.STDOUT).returncode
+    seconds = time.monotonic() - start
+    text = log.read_text(errors="replace")
+    # one pytest summary line per run ("=== 3 failed, 590 passed, 2 deselected in 552.21s ===")
+    summaries = re.findall(r"^=+ (.*\d+ passed.*) in [\d.]+s.* =+$", text, re.MULTILINE)
+    counted = {word: sum(int(n) for line in summaries for n in re.findall(rf"(\d+) {word}", line))
+               for word in ("passed", "failed", "error")}
+    print(f">>> {sha}: {seconds:.0f} s, exit {status}, {counted}", flush=True)
+    if status:
+        print(text[-3000:], file=sys.stderr)
+    return {"commit": sha, "seconds": seconds, "status": status, **counted}
+
+
+def section(runs: list[dict], command: str) -> str:
+    base, new = runs
+    ratio = new["seconds"] / base["seconds"]
+    rows = "\n".join(
+        f"| {r['commit']} | {r['seconds']:.0f} ({r['seconds'] / 60:.1f} min) | {r['passed']:,} | "
+        f"{r['failed'] + r['error']} | {r['status']} |" for r in runs)
+    when = datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC")
+    return (f"{HEADING}\n\nMeasured {when} by `{command}`: each commit cloned afresh and `make test` run "
+            "in it, one after the other, on this machine.\n\n"
+            "| commit | wall seconds | tests passed | failed | exit status |\n|---|---:|---:|---:|---:|\n"
+            f"{rows}\n\n`make test` at {new['commit']} takes **{ratio:.2f}** of the time at {base['commit']} "
+            "(goal: at most 0.60).\n")
+
+
+def replace_section(document: str, text: str) -> str:
+    """`document` with its side-by-side section replaced by (or ended with) `text`."""
+    found = re.search(rf"^{re.escape(HEADING)}\n.*?(?=^## |\Z)", document, re.MULTILINE | re.DOTALL)
+    if found:
+        return document[:found.start()] + text + ("\n" if document[found.end():] else "") + document[found.end():]
+    return document.rstrip("\n") + "\n\n" + text
+
+
+def carry_over(old_document: str, new_document: str) -> str:
+    """`new_document` (make bench's report) with the side-by-side section of the old one."""
+    found = re.search(rf"^{re.escape(HEADING)}\n.*?(?=^## |\Z)", old_document, re.MULTILINE | re.DOTALL)
+    return replace_section(new_document, found[0].rstrip("\n") + "\n") if found else new_document
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("base", help="the commit to compare against")
+    parser.add_argument("commit", nargs="?", default="HEAD")
+    parser.add_argument("--output", default=str(ROOT / "BENCHMARKS.md"))
+    args = parser.parse_args()
+    command = f"python scripts/bench_make_test.py {args.base} {args.commit}"
+    with tempfile.TemporaryDirectory(prefix="bench-make-test-") as tmp:
+        runs = [make_test(commit, Path(tmp) / f"clone-{index}") for index, commit in enumerate((args.base, args.commit))]
+    output = Path(args.output)
+    text = section(runs, command)
+    output.write_text(replace_section(output.read_text() if output.exists() else "# Benchmarks\n", text))
+    print(text)
+
+
+if __name__ == "__main__":
+    main()

@@ -369,7 +369,7 @@ def elastic_both_moving(m1: float = 0.20, u1: float = 3.0, m2: float = 0.30, spe
             Mark(f"Momentum: {ma} × {ua} + {mb} × (−{ub}) = {w(p_before)} = {ma}{v_1} + {mb}{v_2}", "C1", "b"),
             Mark(f"{relative} = {n(approach, 2)}", "C1", "b"),
             Mark(f"{v_1} = {n(v1, 2)} {PER_S} (a minus sign means A moves back the way it came)", "A1", "b"),
-            Mark(f"{v_2} = {v_1} + relative speed of approach = {n(v1, 2)} + {n(approach, 2)}", "C1", "c"),
+            Mark(f"{v_2} = {v_1} + relative speed of approach = {w(v1)} + {n(approach, 2)}", "C1", "c"),
             Mark(f"= {n(v2, 2)} {PER_S}", "A1", "c"),
         ),
     )

@@ -299,7 +299,7 @@ TEMPLATES = (
               "m2": Draw(1.0, 0.5, 3.0, 0.5), "speed2": Draw(1.5, 0.5, 4.0, 0.5)}),
     Template("practice-spring-apart", "momentum-line", ("numeric",), "Trolleys pushed apart by a spring",
              trolleys_spring_apart,
-             {"mass_a": Draw(1.5, 0.5, 3.0, 0.1), "mass_b": Draw(0.50, 0.20, 1.50, 0.05),
+             {"mass_a": Draw(1.5, 0.5, 3.0, 0.1), "mass_b": Draw(0.50, 0.20, 1.50, 0.10),
               "speed_b": Draw(1.2, 0.5, 3.0, 0.1)}),
     Template("graph-trolley-collision", "momentum-line", ("graph", "numeric"),
              "A collision: momentum–time graph", trolley_collision_momentum_time,

@@ -1,3 +1,4 @@
+# ruff: noqa: RUF001  (scheme lines as typeset: true minus, times)
 """What is printed is what is used (issue 25): every number a question states is the number
 its key is worked from. A given drawn finer than it is printed (a mass of 1.15 kg printed
 "1.2") would make the key disagree with an answer worked from the printed text."""
@@ -7,6 +8,7 @@ from __future__ import annotations
 import math
 
 import pytest
+from working_lines import evaluate, result, wrong_steps
 
 from physics_figures.bank import TEMPLATES
 from physics_figures.notation import round_number
@@ -23,14 +25,34 @@ def test_every_given_is_used_as_it_is_printed(key):
     assert not differ, differ
 
 
-def test_elastic_both_moving_working_gives_its_printed_answer():
-    """(c) v_B = v_A + approach: the printed v_A keeps enough figures for the sum to give the
-    printed answer (it printed -4.9 + 5.5 = 0.64, where -4.9 + 5.5 is 0.6)."""
-    template = TEMPLATES["elastic-both-moving"]
-    for index, question in enumerate(template.variants):
-        working = next(m.text for m in question.mark_scheme if m.part == "c" and "+" in m.text)
-        v_a, approach = (float(x.replace("\u2212", "-")) for x in working.rsplit("= ", 1)[1].split(" + "))
-        answer = float(next(m.text for m in question.mark_scheme if m.part == "c" and m.code == "A1")
-                       .split()[1].replace("\u2212", "-"))
-        printed_places = len(str(answer).split(".")[1])
-        assert round(v_a + approach, printed_places) == pytest.approx(answer), (index, working, answer)
+#: Templates whose schemes still print a step its numbers do not give (issue 25, in
+#: progress): each is fixed by printing the step's inputs with the figures its result needs.
+#: The test fails when one of them is fixed and still listed, so the list only shrinks.
+WORKING_TO_FIX = {
+    "friction-acceleration-choice", "quick-check-3", "sphere-in-liquid", "graph-ball-acceleration",
+    "practice-trolleys-stick", "practice-spring-apart", "skaters-stick-right-angles",
+}
+
+
+def test_the_working_line_reader_reads_a_scheme_as_an_examiner_does():
+    assert evaluate("½ × 0.80 × 1.05<sup>2</sup> + ½ × 1.1 × 0.80<sup>2</sup>") == pytest.approx(0.793)
+    assert evaluate("(−1.6 − 2.4) / 0.030") == pytest.approx(-133.33, rel=1e-4)
+    assert evaluate("1.8 cos 60°") == pytest.approx(0.9)
+    assert evaluate("0.15") is None and evaluate("0.20v_A + 0.30v_B") is None
+    assert result("9970 N") == (9970.0, 10.0) and result("0.64 m s") == (0.64, 0.01)
+    assert result("0.058 × 42") is None  # an expression, not a result
+
+
+@pytest.mark.parametrize("key", TEMPLATES)
+def test_every_working_line_gives_its_printed_result(key):
+    wrong = [f"variant {index}: {step}" for index, question in enumerate(TEMPLATES[key].variants)
+             for step in wrong_steps(question)[0]]
+    if key in WORKING_TO_FIX:
+        assert wrong, f"{key}'s working now gives its results: take it off WORKING_TO_FIX"
+    else:
+        assert not wrong, wrong
+
+
+def test_the_working_lines_are_read():
+    """Most templates print arithmetic the reader can check (it read 683 steps)."""
+    assert sum(wrong_steps(q)[1] for t in TEMPLATES.values() for q in t.variants) > 600

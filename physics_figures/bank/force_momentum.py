@@ -84,7 +84,7 @@ def trolley_pushed_from_rest(force: float = 5.0, mass: float = 2.0, duration: fl
             Mark(f"Δp = FΔt = {n(force, 2)} × {n(duration, 2)}", "C1", "a"),
             Mark(f"= {n(p, 2)} N s, so the final momentum is {n(p, 2)} kg m s<sup>−1</sup> "
                  "(it started at rest)", "A1", "a"),
-            Mark(f"speed = p / m = {n(p, 2)} / {n(mass, 2)}", "C1", "b"),
+            Mark(f"speed = p / m = {w(p)} / {n(mass, 2)}", "C1", "b"),
             Mark(f"= {n(v, 2)} m s<sup>−1</sup>", "A1", "b"),
         ),
     )

@@ -62,9 +62,9 @@ def section(runs: list[dict], command: str) -> str:
             "(goal: at most 0.60).\n")
 
 
-def replace_section(document: str, text: str) -> str:
-    """`document` with its side-by-side section replaced by (or ended with) `text`."""
-    found = re.search(rf"^{re.escape(HEADING)}\n.*?(?=^## |\Z)", document, re.MULTILINE | re.DOTALL)
+def replace_section(document: str, text: str, heading: str = HEADING) -> str:
+    """`document` with its section under `heading` replaced by (or ended with) `text`."""
+    found = re.search(rf"^{re.escape(heading)}\n.*?(?=^## |\Z)", document, re.MULTILINE | re.DOTALL)
     if found:
         return document[:found.start()] + text + ("\n" if document[found.end():] else "") + document[found.end():]
     return document.rstrip("\n") + "\n\n" + text

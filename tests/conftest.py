@@ -76,3 +76,21 @@ def _fresh_matplotlib():
     with matplotlib.rc_context():
         yield
     plt.close("all")
+
+
+@pytest.fixture(scope="module")
+def base_url(site_dir):
+    """The built site, served as a static host serves it (tests/browser.py), for a module."""
+    from browser import serve_site
+
+    with serve_site(site_dir) as base:
+        yield base
+
+
+@pytest.fixture(scope="module")
+def browser():
+    """Headless Chromium for a module's tests (tests/browser.py)."""
+    from browser import open_browser
+
+    with open_browser() as chromium:
+        yield chromium

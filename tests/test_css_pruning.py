@@ -11,7 +11,7 @@ from io import BytesIO
 from pathlib import Path
 
 import pytest
-from browser import open_browser, serve_site
+from browser import serve_site
 from PIL import Image, ImageChops
 from site_assets import bundle_registry, unpruned_bundle
 
@@ -36,12 +36,6 @@ def unpruned(site_dir, tmp_path_factory) -> Path:
         shutil.copyfile(unpruned_bundle(site_dir, name), copy / name)
         assert (copy / name).stat().st_size > 2 * (site_dir / name).stat().st_size, f"{name} was not pruned"
     return copy
-
-
-@pytest.fixture(scope="module")
-def browser():
-    with open_browser() as browser:
-        yield browser
 
 
 def _shot(browser, base_url: str, page_path: str, width: int, mode: str, *, menu: bool = False) -> Image.Image:

@@ -11,7 +11,6 @@ import re
 from pathlib import Path
 
 import pytest
-from browser import open_browser, serve_site
 from playwright.sync_api import Page, expect
 
 from physics_figures import models, scenarios
@@ -21,18 +20,6 @@ pytestmark = [pytest.mark.site, pytest.mark.browser]
 
 PHONE = {"width": 390, "height": 844}
 DESKTOP = {"width": 1100, "height": 900}
-
-
-@pytest.fixture(scope="module")
-def base_url(site_dir):
-    with serve_site(site_dir) as base:
-        yield base
-
-
-@pytest.fixture(scope="module")
-def browser():
-    with open_browser() as chromium:
-        yield chromium
 
 
 def page_with(site_dir: Path, name: str) -> str:

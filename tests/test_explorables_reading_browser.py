@@ -12,7 +12,7 @@
 from __future__ import annotations
 
 import pytest
-from browser import open_browser, serve_site, site_pages
+from browser import site_pages
 from playwright.sync_api import expect
 
 from physics_figures import models
@@ -48,23 +48,11 @@ TARGETS = """() => [...document.querySelectorAll('.explorable[data-built] input,
   })"""
 
 
-@pytest.fixture(scope="module")
-def base(site_dir):
-    with serve_site(site_dir) as url:
-        yield url
-
-
-@pytest.fixture(scope="module")
-def browser():
-    with open_browser() as chromium:
-        yield chromium
-
-
 @pytest.mark.parametrize("name", EXPLORABLES)
-def test_every_control_is_at_least_44_px_square_on_a_touch_screen(site_dir, base, browser, name):
+def test_every_control_is_at_least_44_px_square_on_a_touch_screen(site_dir, base_url, browser, name):
     context = browser.new_context(**TOUCH_PHONE)
     page = context.new_page()
-    page.goto(f"{base}/{explorable_page(site_dir, name)}")
+    page.goto(f"{base_url}/{explorable_page(site_dir, name)}")
     assert page.evaluate("matchMedia('(pointer: coarse)').matches"), "the touch phone is not coarse"
     page.wait_for_selector(f'.explorable[data-explorable="{name}"][data-built]')
     targets = page.evaluate(TARGETS)
@@ -80,9 +68,9 @@ def _plot_box(page, selector):
 
 
 @pytest.mark.parametrize("viewport", [PHONE, DESKTOP], ids=["390", "1280"])
-def test_the_skydiver_time_slider_sits_next_to_its_graph(site_dir, base, browser, viewport):
+def test_the_skydiver_time_slider_sits_next_to_its_graph(site_dir, base_url, browser, viewport):
     page = browser.new_page(viewport=viewport)
-    page.goto(f"{base}/{explorable_page(site_dir, 'skydiver')}")
+    page.goto(f"{base_url}/{explorable_page(site_dir, 'skydiver')}")
     root = '.explorable[data-explorable="skydiver"]'
     page.wait_for_selector(f"{root}[data-built]")
     slider = page.get_by_role("slider", name="Time along the graph").bounding_box()
@@ -91,9 +79,9 @@ def test_the_skydiver_time_slider_sits_next_to_its_graph(site_dir, base, browser
     assert gap <= 120, f"the time slider is {gap:.0f} px from the velocity graph"
 
 
-def test_a_typed_value_out_of_range_gets_a_message(site_dir, base, browser):
+def test_a_typed_value_out_of_range_gets_a_message(site_dir, base_url, browser):
     page = browser.new_page(viewport=PHONE)
-    page.goto(f"{base}/{explorable_page(site_dir, 'skydiver')}")
+    page.goto(f"{base_url}/{explorable_page(site_dir, 'skydiver')}")
     page.wait_for_selector('.explorable[data-explorable="skydiver"][data-built]')
     box = page.get_by_role("spinbutton", name="Mass of the skydiver in kilograms")
     used = box.input_value()
@@ -119,9 +107,9 @@ def _top_tick(page, index: int) -> float:
     return max(float(t.replace("\u2212", "-").replace("\u202f", "")) for t in ticks if t.strip())
 
 
-def test_the_skydiver_velocity_axis_scales_to_the_run(site_dir, base, browser):
+def test_the_skydiver_velocity_axis_scales_to_the_run(site_dir, base_url, browser):
     page = browser.new_page(viewport=DESKTOP)
-    page.goto(f"{base}/{explorable_page(site_dir, 'skydiver')}")
+    page.goto(f"{base_url}/{explorable_page(site_dir, 'skydiver')}")
     page.wait_for_selector('.explorable[data-explorable="skydiver"][data-built]')
     mass, drag = 40.0, 1.0  # the lightest skydiver with the most drag: about 20 m/s
     page.get_by_role("spinbutton", name="Mass of the skydiver in kilograms").fill(str(mass))
@@ -154,11 +142,11 @@ OVERLAPS = """() => {
 
 
 @pytest.mark.parametrize("viewport", [PHONE, DESKTOP], ids=["390", "1280"])
-def test_annotation_labels_never_sit_on_ticks_or_the_frame(site_dir, base, browser, viewport):
+def test_annotation_labels_never_sit_on_ticks_or_the_frame(site_dir, base_url, browser, viewport):
     bad = {}
     page = browser.new_page(viewport=viewport)
     for name in ("skydiver", "momentum-time-reader"):
-        page.goto(f"{base}/{explorable_page(site_dir, name)}")
+        page.goto(f"{base_url}/{explorable_page(site_dir, name)}")
         page.wait_for_selector(f'.explorable[data-explorable="{name}"][data-built]')
         found = page.evaluate(OVERLAPS)
         if name == "skydiver":  # a hard opening: the off-scale label near the bottom frame
@@ -169,9 +157,9 @@ def test_annotation_labels_never_sit_on_ticks_or_the_frame(site_dir, base, brows
     assert not bad, bad
 
 
-def test_the_collision_lab_has_one_live_region(site_dir, base, browser):
+def test_the_collision_lab_has_one_live_region(site_dir, base_url, browser):
     page = browser.new_page(viewport=DESKTOP)
-    page.goto(f"{base}/{explorable_page(site_dir, 'collision-lab')}")
+    page.goto(f"{base_url}/{explorable_page(site_dir, 'collision-lab')}")
     page.wait_for_selector('.explorable[data-explorable="collision-lab"][data-built]')
     live = page.evaluate("""() => [...document.querySelectorAll(
         '.explorable[data-explorable="collision-lab"] *')].filter(el => {
@@ -205,13 +193,13 @@ COVERED = """() => {
 
 
 @pytest.mark.parametrize("viewport", [PHONE, {"width": 900, "height": 800}, DESKTOP], ids=["390", "900", "1280"])
-def test_back_to_top_never_covers_text_or_controls(site_dir, base, browser, viewport):
+def test_back_to_top_never_covers_text_or_controls(site_dir, base_url, browser, viewport):
     covered, scrolled = {}, 0
     pages = [explorable_page(site_dir, "skydiver"), explorable_page(site_dir, "collision-lab"),
              "book/exam/quick-check.html", "book/understand/momentum-time-graph.html"]
     page = browser.new_page(viewport=viewport)
     for path in pages:
-        page.goto(f"{base}/{path}")
+        page.goto(f"{base_url}/{path}")
         page.wait_for_load_state("networkidle")
         height = page.evaluate("document.body.scrollHeight")
         for _ in range(1500, height, 700):

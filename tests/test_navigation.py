@@ -10,7 +10,7 @@ book/_ext/site_assets/static/site-menus.js passes the visible buttons' clicks on
 from __future__ import annotations
 
 import pytest
-from browser import axe_violations, open_browser, serve_site
+from browser import axe_violations
 from playwright.sync_api import TimeoutError as PlaywrightTimeout
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
@@ -28,18 +28,6 @@ ON_TOP = """(el) => {
   const hit = document.elementFromPoint(r.left + r.width / 2, r.top + Math.min(r.height / 2, 300));
   return !!hit && el.contains(hit);
 }"""
-
-
-@pytest.fixture(scope="module")
-def base_url(site_dir):
-    with serve_site(site_dir) as base:
-        yield base
-
-
-@pytest.fixture(scope="module")
-def browser():
-    with open_browser() as browser:
-        yield browser
 
 
 class Reader:

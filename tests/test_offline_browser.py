@@ -14,7 +14,7 @@ from pathlib import Path
 
 import offline
 import pytest
-from browser import open_browser, serve_site, site_pages
+from browser import serve_site, site_pages
 
 from physics_figures import bank
 
@@ -28,12 +28,6 @@ IMAGES_SHOWN = """() => Promise.all([...document.images].map(image => {
     image.loading = "eager";
     return image.decode().then(() => image.naturalWidth > 0, () => image.currentSrc || image.src);
 }))"""
-
-
-@pytest.fixture(scope="module")
-def browser():
-    with open_browser() as browser:
-        yield browser
 
 
 def _first_visit(browser, base_url: str):

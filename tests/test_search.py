@@ -11,7 +11,6 @@ from __future__ import annotations
 import re
 
 import pytest
-from browser import open_browser, serve_site
 from playwright.sync_api import TimeoutError as PlaywrightTimeout
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
@@ -47,18 +46,6 @@ CLEARANCE = """(box) => {
   const textStart = r.left + parseFloat(s.paddingLeft) + parseFloat(s.borderLeftWidth);
   return {iconRight: icon.right, textStart, iconWidth: icon.width};
 }"""
-
-
-@pytest.fixture(scope="module")
-def base_url(site_dir):
-    with serve_site(site_dir) as base:
-        yield base
-
-
-@pytest.fixture(scope="module")
-def browser():
-    with open_browser() as browser:
-        yield browser
 
 
 class Reader:

@@ -4,6 +4,8 @@
 from __future__ import annotations
 
 import math
+import re
+from collections.abc import Callable, Sequence
 
 from ..notation import format_number, round_number
 from ..questions import reading_places
@@ -41,3 +43,38 @@ def reading_rule(tolerance: float, unit: str) -> str:
 def reading(value: float, tolerance: float) -> str:
     """A value read from a graph, written to the places of its small squares (12.5, 240)."""
     return format_number(value, decimals=reading_places(tolerance))
+
+
+def _figures(value: float, sig_figs: int, in_full_up_to: int) -> tuple[str, float]:
+    """value as the working prints it with sig_figs figures (in full when it is exact to at most
+    in_full_up_to figures, as w() prints it), and the number that text stands for."""
+    for exact in range(2, max(in_full_up_to, sig_figs) + 1):
+        rounded = float(round_number(value, exact))
+        if math.isclose(rounded, value, rel_tol=1e-9, abs_tol=1e-12):
+            return format_number(value, exact), rounded
+    return format_number(value, sig_figs), float(round_number(value, sig_figs))
+
+
+def _last_place(printed: str) -> float:
+    """The place of a printed number's last digit: 0.01 for 42.25, 10 for 9970."""
+    digits = re.sub(r"[^\d.]", "", printed)
+    if "." in digits:
+        return 10.0 ** -len(digits.split(".")[1])
+    return 10.0 ** (len(digits) - len(digits.rstrip("0"))) if digits.strip("0") else 1.0
+
+
+def enough_figures(values: Sequence[float], step: Callable[..., float], printed_result: str,
+                   in_full_up_to: int = _EXACT_UP_TO) -> tuple[str, ...]:
+    """The inputs of a working step, printed with the fewest figures that give its printed
+    result: as w() prints them (3 s.f. unless exact in full), else with 4, 5, then 6 s.f.,
+    until step(inputs as printed) rounds to printed_result at its last digit, as an examiner
+    checks it. in_full_up_to=3 prints a value exact to 4 figures at 3 s.f. first (687 for 686.7),
+    when the working carries an answer printed to 3 s.f."""
+    place = _last_place(printed_result)
+    target = float(re.sub(r"[^\d.\-]", "", printed_result.replace("−", "-")))
+    for sig_figs in range(3, _EXACT_UP_TO + 1):
+        printed = [_figures(value, sig_figs, in_full_up_to) for value in values]
+        got = step(*(number for _, number in printed))
+        if min(abs(got - target), abs(abs(got) - abs(target))) <= place / 2 * (1 + 1e-9):
+            return tuple(text for text, _ in printed)
+    raise ValueError(f"no printing of {values!r} to {_EXACT_UP_TO} s.f. gives {printed_result!r}")

@@ -32,7 +32,7 @@ from ..questions import (
     choices_in_order,
 )
 from ..variants import Draw, Template
-from ._common import M_S, N_S, PER_S, reading, reading_rule, w
+from ._common import M_S, N_S, PER_S, enough_figures, reading, reading_rule, w
 
 a_answer, m1_symbol, u1_symbol, m2_symbol, speed2_symbol = sympy.symbols("a m1 u1 m2 speed2")
 
@@ -90,6 +90,8 @@ def trolleys_stick(m1: float = 2.0, u1: float = 3.0, m2: float = 1.0, speed2: fl
     lost = before - after
     no_sign = stick_together(m1, u1, m2, -u2)
     first, second, total = n(m1, 2), n(m2, 2), w(m1 + m2)
+    # the common velocity with the figures the kinetic energy after needs
+    (v_carried,) = enough_figures((v,), lambda v1: kinetic_energy(m1 + m2, v1), w(after))
     positive = f"the direction the {first} kg trolley moves at first"
     ke_before = m1_symbol * u1_symbol**2 / 2 + m2_symbol * speed2_symbol**2 / 2
     return Question(
@@ -135,7 +137,7 @@ def trolleys_stick(m1: float = 2.0, u1: float = 3.0, m2: float = 1.0, speed2: fl
             Mark(f"{first} × {n(u1, 2)} + {second} × ({n(u2, 2)}) = {total}v", "C1", "a"),
             Mark(f"v = {n(v, 2)} {PER_S} in the {first} kg trolley's direction", "A1", "a"),
             Mark(f"E<sub>k</sub> before = ½ × {first} × {n(u1, 2)}<sup>2</sup> + ½ × {second} × "
-                 f"{n(speed2, 2)}<sup>2</sup> = {w(before)} J; after = ½ × {total} × {w(v)}<sup>2</sup> "
+                 f"{n(speed2, 2)}<sup>2</sup> = {w(before)} J; after = ½ × {total} × {v_carried}<sup>2</sup> "
                  f"= {w(after)} J", "C1", "b"),
             Mark(f"Transferred = {w(before)} − {w(after)} = {n(lost, 3)} J", "A1", "b"),
         ),
@@ -239,6 +241,9 @@ def trolleys_spring_apart(mass_a: float = 1.5, mass_b: float = 0.50, speed_b: fl
     v_a = explosion_from_rest(mass_b, mass_a, speed_b)  # signed: B's way is positive, so A's is negative
     energy = total_kinetic_energy((mass_a, mass_b), (v_a, speed_b))
     a_, b_, u = n(mass_a, 2), n(mass_b, 2), n(speed_b, 2)
+    # A's speed with the figures the energy needs
+    (speed_a,) = enough_figures((abs(v_a),), lambda v1: total_kinetic_energy((mass_a, mass_b), (v1, speed_b)),
+                                n(energy, 2))
     directions = ("the same way as B", "the opposite way to B")
     return Question(
         key="practice-spring-apart",
@@ -283,7 +288,7 @@ def trolleys_spring_apart(mass_a: float = 1.5, mass_b: float = 0.50, speed_b: fl
             Mark(f"Total momentum zero: {a_} v<sub>A</sub> + {b_} × {u} = 0", "C1", "a"),
             Mark(f"v<sub>A</sub> = {n(v_a, 2)} {PER_S}: {n(abs(v_a), 2)} {PER_S}", "A1", "a"),
             Mark("the opposite way to B", "B1", "a", earns="direction"),
-            Mark(f"E<sub>k</sub> = ½ × {a_} × {w(abs(v_a))}<sup>2</sup> + ½ × {b_} × {u}<sup>2</sup>", "C1", "b"),
+            Mark(f"E<sub>k</sub> = ½ × {a_} × {speed_a}<sup>2</sup> + ½ × {b_} × {u}<sup>2</sup>", "C1", "b"),
             Mark(f"= {n(energy, 2)} J", "A1", "b"),
         ),
     )

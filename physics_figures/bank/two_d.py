@@ -34,7 +34,7 @@ from ..questions import (
     choices_in_order,
 )
 from ..variants import Draw, Template
-from ._common import M_S, N_S, PER_S, w
+from ._common import M_S, N_S, PER_S, enough_figures, w
 
 
 def pucks_glancing(mass: float = 0.40, speed_before: float = 2.5, speed_after: float = 1.5,
@@ -227,6 +227,8 @@ def skaters_stick_right_angles(m1: float = 70.0, u1: float = 4.0, m2: float = 50
     before = total_kinetic_energy((m1, m2), (u1, u2))
     after = kinetic_energy(total, speed)
     ma, mb, ua, ub = n(m1, 2), n(m2, 2), n(u1, 2), n(u2, 2)
+    # the speed with the figures the kinetic energy after needs
+    (speed_carried,) = enough_figures((speed,), lambda v1: kinetic_energy(total, v1), n(after, 3))
     sym_a, sym_m1, sym_m2, sym_u1, sym_u2 = sympy.symbols("a m_a m_b u_a u_b")
     return Question(
         key="skaters-stick-right-angles",
@@ -278,7 +280,7 @@ def skaters_stick_right_angles(m1: float = 70.0, u1: float = 4.0, m2: float = 50
             Mark(f"tan θ = {w(p2)} / {w(p1)}", "C1", "b"),
             Mark(f"θ = {n(angle, 3)}° north of east", "A1", "b"),
             Mark(f"Before: {w(kinetic_energy(m1, u1))} + {w(kinetic_energy(m2, u2))} = {w(before)} J; after: "
-                 f"½ × {w(total)} × {n(speed, 3)}<sup>2</sup> = {n(after, 3)} J", "C1", "c"),
+                 f"½ × {w(total)} × {speed_carried}<sup>2</sup> = {n(after, 3)} J", "C1", "c"),
             Mark(f"Transferred = {n(before - after, 2)} J", "A1", "c"),
         ),
     )

@@ -15,6 +15,7 @@ from ..models import (
     weight,
 )
 from ..notation import format_number as n
+from ..notation import round_number
 from ..questions import (
     OPTION_LETTERS,
     ChoicePart,
@@ -273,7 +274,7 @@ def friction_acceleration_choice(crate_weight: float = 490.0, pull: float = 180.
     }, sig_figs=2, unit=PER_S2, seed=12)
     # the mass with the figures its division needs, so the working gives the printed answer
     shown_mass = next(n(mass, figures) for figures in (3, 4, 5)
-                      if n((pull - friction) / float(n(mass, figures).replace(" ", "")), 2) == n(key, 2))
+                      if n((pull - friction) / float(round_number(mass, figures)), 2) == n(key, 2))
     return Question(
         key="friction-acceleration-choice",
         text=(f"A crate of weight {wt} N is pulled along a horizontal floor by a horizontal rope. The "

@@ -25,14 +25,6 @@ def test_every_given_is_used_as_it_is_printed(key):
     assert not differ, differ
 
 
-#: Templates whose schemes still print a step its numbers do not give (issue 25, in
-#: progress): each is fixed by printing the step's inputs with the figures its result needs.
-#: The test fails when one of them is fixed and still listed, so the list only shrinks.
-WORKING_TO_FIX = {
-    "friction-acceleration-choice",
-}
-
-
 def test_the_working_line_reader_reads_a_scheme_as_an_examiner_does():
     assert evaluate("½ × 0.80 × 1.05<sup>2</sup> + ½ × 1.1 × 0.80<sup>2</sup>") == pytest.approx(0.793)
     assert evaluate("(−1.6 − 2.4) / 0.030") == pytest.approx(-133.33, rel=1e-4)
@@ -44,12 +36,11 @@ def test_the_working_line_reader_reads_a_scheme_as_an_examiner_does():
 
 @pytest.mark.parametrize("key", TEMPLATES)
 def test_every_working_line_gives_its_printed_result(key):
+    """Each arithmetic step a scheme prints gives, from its numbers as printed, the result it
+    prints at the precision shown (tests/working_lines.py)."""
     wrong = [f"variant {index}: {step}" for index, question in enumerate(TEMPLATES[key].variants)
              for step in wrong_steps(question)[0]]
-    if key in WORKING_TO_FIX:
-        assert wrong, f"{key}'s working now gives its results: take it off WORKING_TO_FIX"
-    else:
-        assert not wrong, wrong
+    assert not wrong, wrong
 
 
 def test_the_working_lines_are_read():

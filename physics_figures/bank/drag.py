@@ -127,7 +127,15 @@ def parachute_opens_choice(mass: float = 70.0, drag: float = 1500.0) -> Question
         "used g = 10 m s⁻²": (
             acceleration(drag - weight(mass, g=G_TEN), mass),
             "You used g = 10 m s⁻². The data give g = 9.81 m s⁻²."),
-    }, sig_figs=3, unit=PER_S2)
+        "mass used as the weight": (
+            acceleration(drag - mass, mass),
+            (f"You subtracted the mass, {n(mass, 2)} kg, from the drag. Subtract the weight, a force: "
+             f"W = mg = {n(mass, 2)} × {n(G_EARTH, 3)} N.")),
+        "weight used as the mass": (
+            acceleration(drag - w, w),
+            ("You divided the resultant force by the weight. a = F / m needs the mass, "
+             f"{n(mass, 2)} kg, not the weight.")),
+    }, sig_figs=3, unit=PER_S2, seed=6)
     return Question(
         key="parachute-opens-choice",
         text=(f"A skydiver of mass {n(mass, 2)} kg is falling at terminal velocity when her parachute "
@@ -207,7 +215,11 @@ def drag_fraction_choice(percent: float = 25.0) -> Question:
             acceleration(drag, mass),
             ("That is the air resistance divided by the mass. The weight still acts: the resultant "
             "force is weight − air resistance.")),
-    }, sig_figs=3, unit=PER_S2)
+        "the resultant force divided by the weight": (
+            acceleration(weight(mass) - drag, weight(mass)),
+            ("You divided the resultant force by the weight. a = F / m: divide by the mass, "
+             "m = W / g, so a = g × (1 − the fraction).")),
+    }, sig_figs=3, unit=PER_S2, seed=1)
     return Question(
         key="drag-fraction-choice",
         text=(f"A stone falls vertically through still air. At one instant the air resistance on the "

@@ -148,8 +148,7 @@ def elastic_or_not_choice(situation: float = 0) -> Question:
     speeds = f"approach {w(approach)} {PER_S}, separation {w(separation)} {PER_S}"
     plain_energy, plain_speeds = textformat.to_plain(energy), speeds.replace(PER_S, _PER_S_PLAIN)
     if elastic:
-        key = Option(f"It is elastic: the relative speed of approach and the relative speed of separation "
-                     f"are both {n(approach, 2)} {PER_S}.")
+        key = Option("It is elastic: the relative speed of separation equals the relative speed of approach.")
         wrong = (
             Option(f"It is inelastic: {body} A loses kinetic energy in the collision.",
                    "looked at one body's kinetic energy",
@@ -165,8 +164,7 @@ def elastic_or_not_choice(situation: float = 0) -> Question:
                    f"collision is that they are equal: {plain_speeds}."),
         )
     else:
-        key = Option(f"It is inelastic: the total kinetic energy falls from {n(ke_before, 3)} J to "
-                     f"{n(ke_after, 3)} J.")
+        key = Option("It is inelastic: the total kinetic energy after the collision is less than before.")
         wrong = (
             Option("It is elastic: the total momentum is the same before and after.",
                    "momentum conserved, so elastic",
@@ -242,7 +240,18 @@ def stick_energy_choice(m1: float = 2.0, u1: float = 4.0, m2: float = 1.0, speed
             0.0,
             ("Kinetic energy is conserved only in an elastic collision. Trolleys that stick together "
             "always lose some: work out the total before and after.")),
-    }, sig_figs=2, unit="J")
+        "total kinetic energy before given": (
+            before,
+            ("That is the total kinetic energy before the collision. The energy transferred is the "
+             "kinetic energy lost: the total before − the total after.")),
+        "the ½ left out": (
+            2 * key,
+            "You wrote the kinetic energy as mv². It is ½mv²: halve each term."),
+        "kinetic energy after given": (
+            after,
+            ("That is the kinetic energy left after the collision. The energy transferred is the "
+             "kinetic energy lost: the total before − the total after.")),
+    }, sig_figs=2, unit="J", seed=0)
     a_mass, b_mass = n(m1, 2), n(m2, 2)
     return Question(
         key="stick-energy-choice",

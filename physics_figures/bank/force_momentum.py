@@ -393,7 +393,14 @@ def bounce_force_choice(mass_g: float = 60.0, speed_in: float = 12.0, speed_out:
         "grams not converted": (
             average_force(change_in_momentum(mass_g, -speed_in, speed_out), contact),
             f"You used the mass in g. Convert to kg: {n(mass, 2)} kg.", "first-law"),
-    }, sig_figs=2, unit="N")
+        "change in momentum taken as 2mu": (
+            average_force(2 * momentum(mass, speed_in), contact),
+            ("You used Δp = 2mu, which holds only when the ball bounces back at the speed it arrived. "
+             f"It leaves at {n(speed_out, 2)} m s⁻¹: Δp = m(u + v).")),
+        "milliseconds not converted": (
+            average_force(dp, contact_ms),
+            f"You divided by the time in ms. Convert to s: {n(contact_ms, 2)} ms = {n(contact, 2)} s.", "first-law"),
+    }, sig_figs=2, unit="N", seed=1)
     return Question(
         key="bounce-force-choice",
         text=(f"A ball of mass {n(mass_g, 2)} g hits a wall at right angles at {n(speed_in, 2)} {PER_S} and "

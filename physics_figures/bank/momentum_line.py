@@ -216,7 +216,20 @@ def stick_choice(m1: float = 3.0, u1: float = 4.0, m2: float = 2.0, speed2: floa
         "second body ignored": (
             stick_together(m1, u1, m2, 0.0),
             "You left out the second body's momentum. It is moving, the other way.", "momentum"),
-    }, sig_figs=2, unit=PER_S)
+        **({"masses paired with the wrong speeds": (
+            stick_together(m2, u1, m1, -speed2),
+            (f"You multiplied each speed by the other trolley's mass. The {n(m1, 2)} kg trolley moves at "
+             f"{n(u1, 2)} m s⁻¹: p = m₁u₁ − m₂u₂."), "momentum")}
+           if stick_together(m2, u1, m1, -speed2) > 0 else {}),
+        "velocities averaged": (
+            (u1 - speed2) / 2,
+            ("You averaged the two velocities. The trolleys have different masses: share the total "
+             "momentum over the total mass, v = (m₁u₁ − m₂u₂) / (m₁ + m₂)."), "conservation"),
+        "the first trolley's change in velocity given": (
+            u1 - key,
+            (f"That is how much the first trolley slows down, {n(u1, 2)} − v. The question asks for "
+             "the common velocity v itself."), "conservation"),
+    }, sig_figs=2, unit=PER_S, seed=1)
     return Question(
         key="stick-choice",
         text=(f"A trolley of mass {n(m1, 2)} kg moving at {n(u1, 2)} {PER_S} collides head-on with a "

@@ -15,6 +15,7 @@ from ..models import (
     weight,
 )
 from ..notation import format_number as n
+from ..notation import round_number
 from ..questions import (
     OPTION_LETTERS,
     ChoicePart,
@@ -242,7 +243,9 @@ def third_law_pair_choice(situation: float = 0) -> Question:
 def friction_acceleration_choice(crate_weight: float = 490.0, pull: float = 180.0,
                                  friction: float = 60.0) -> Question:
     """Paper 1 style: resultant force and acceleration with friction; the mass comes from a
-    weight. Wrong options: friction forgotten, forces added, the weight used as the mass."""
+    weight. Wrong options, three of a pool chosen so the key's letter moves: friction forgotten,
+    forces added, the weight used as the mass, the mass worked out as W times g, the friction taken
+    as the resultant force."""
     if pull <= friction:
         raise ValueError(f"pull must exceed friction={friction!r} N, so the crate speeds up "
                          f"(got pull={pull!r})")
@@ -261,7 +264,17 @@ def friction_acceleration_choice(crate_weight: float = 490.0, pull: float = 180.
         "weight used as the mass": (
             acceleration(pull - friction, crate_weight),
             f"You divided by the weight, {wt} N. F = ma needs the mass: m = W / g = {wt} / {n(G_EARTH, 3)} kg."),
-    }, sig_figs=2, unit=PER_S2)
+        "multiplied the weight by g": (
+            acceleration(pull - friction, crate_weight * G_EARTH),
+            f"You worked out the mass as W × g. Weight = mg, so the mass is m = W / g = {wt} / {n(G_EARTH, 3)} kg."),
+        "friction used as the resultant force": (
+            acceleration(friction, mass),
+            ("You used the friction alone as the resultant force. The resultant force is the pull "
+             f"minus the friction: {p} − {f} N."), "friction"),
+    }, sig_figs=2, unit=PER_S2, seed=12)
+    # the mass with the figures its division needs, so the working gives the printed answer
+    shown_mass = next(n(mass, figures) for figures in (3, 4, 5)
+                      if n((pull - friction) / float(round_number(mass, figures)), 2) == n(key, 2))
     return Question(
         key="friction-acceleration-choice",
         text=(f"A crate of weight {wt} N is pulled along a horizontal floor by a horizontal rope. The "
@@ -272,7 +285,7 @@ def friction_acceleration_choice(crate_weight: float = 490.0, pull: float = 180.
         parts=(ChoicePart("What is the acceleration of the crate?", options, answer,
                           revisit="Resultant force = forces forwards − forces backwards; mass = "
                                   "weight / g; a = resultant force / mass.", see="weight"),),
-        mark_scheme=(Mark(f"{answer}: m = {wt} / {n(G_EARTH, 3)} = {w(mass)} kg; a = ({p} − {f}) / {w(mass)} "
+        mark_scheme=(Mark(f"{answer}: m = {wt} / {n(G_EARTH, 3)} = {shown_mass} kg; a = ({p} − {f}) / {shown_mass} "
                           f"= {n(key, 2)} {PER_S2}", "B1"),),
     )
 
@@ -310,7 +323,21 @@ def lift_cable_choice(mass: float = 1200.0, a_size: float = 1.5, motion: float =
             abs(thrust_for_acceleration(lift_weight, sign * a_size) - lift_weight),
             ("That is the resultant force, ma. The tension also supports the weight: T = mg + ma, "
              "with a positive upwards."), "weight"),
-    }, sig_figs=3, unit="N")
+        **({"weight used as the mass in ma": (
+            lift_weight + sign * lift_weight * a_size,
+            (f"You multiplied the weight, not the mass, by the acceleration. The resultant force is ma "
+             f"with m = {m} kg: T = mg {'+' if up else '−'} ma."), "weight")}
+           if lift_weight + sign * lift_weight * a_size > 0 else {}),
+        "weight used as the mass": (
+            lift_weight * (G_EARTH + sign * a_size),
+            (f"You put the weight, {n(lift_weight, 3)} N, into T = m(g {'+' if up else '−'} a). The m there "
+             f"is the mass, {m} kg."), "weight"),
+        **({"mass used as the weight": (
+            mass + sign * mass * a_size,
+            (f"You used the mass, {m} kg, as the weight. The weight is mg = {m} × {n(G_EARTH, 3)} N: "
+             f"T = mg {'+' if up else '−'} ma."), "weight")}
+           if mass + sign * mass * a_size > 0 else {}),
+    }, sig_figs=3, unit="N", seed=3)
     return Question(
         key="lift-cable-choice",
         text=(f"A lift of total mass {m} kg hangs from a single vertical cable. It is {how}, with an "

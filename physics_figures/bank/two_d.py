@@ -124,7 +124,14 @@ def glancing_speed_choice(m1: float = 0.20, speed_before: float = 3.0, m2: float
             velocity_from_momentum(hit.missing.along, m2),
             ("That uses only B's component along A's first direction. B also has a component across the "
             "line (equal and opposite to A's): combine them with Pythagoras."), "third-law"),
-    }, sig_figs=2, unit=PER_S)
+        "components added": (
+            velocity_from_momentum(abs(hit.missing.along) + abs(hit.missing.across), m2),
+            ("You added B's two components of momentum. They are at right angles: combine them with "
+             "Pythagoras, p = √(p_along² + p_across²).")),
+        "divided by A's mass": (
+            velocity_from_momentum(hit.missing.magnitude, m1),
+            (f"You divided B's momentum by A's mass. v = p / m with B's own mass, {n(m2, 2)} kg."), "momentum"),
+    }, sig_figs=2, unit=PER_S, seed=10)
     ma, mb, u, v, theta = n(m1, 2), n(m2, 2), n(speed_before, 2), n(speed_after, 2), n(angle, 2)
     return Question(
         key="glancing-speed-choice",

@@ -4,6 +4,7 @@ mistakes. Its browser twin is book/_ext/questions/static/question-kinds/choice.j
 
 from __future__ import annotations
 
+import zlib
 from dataclasses import dataclass
 from typing import ClassVar
 
@@ -70,20 +71,56 @@ class ChoicePart(NoValue):
                             for letter, o in zip(OPTION_LETTERS, self.options, strict=True)]}
 
 
-def choices_in_order(key: float, wrong: dict[str, tuple], *, sig_figs: int, unit: str
+def choices_in_order(key: float, wrong: dict[str, tuple], *, sig_figs: int, unit: str, seed: int = 0
                      ) -> tuple[tuple[Option, ...], str]:
     """Options for a numerical multiple-choice part, in increasing order as Paper 1 prints them:
     the key and three named mistakes {name: (value, feedback)} worked from the same givens, or
     (value, feedback, see) for a mistake taught in another section than the part's.
-    Returns (options, the key's letter)."""
-    _require(len(wrong) == len(OPTION_LETTERS) - 1, "wrong", sorted(wrong),
-             f"must hold {len(OPTION_LETTERS) - 1} named mistakes")
+
+    Given a pool of more than three mistakes (some above the key, some below), three are chosen
+    so that the key's letter moves from variant to variant (issue 25, no give-aways): the letter
+    comes from the key's printed value, never from random state, so a variant always prints the
+    same options. ``seed`` is the template's own fixed number mixed into that choice: a template
+    picks the one that spreads its variants' keys over the letters (tests/test_choice_letters.py
+    checks no letter is the key in more than 40 % of them). Returns (options, the key's letter)."""
+    _require(len(wrong) >= len(OPTION_LETTERS) - 1, "wrong", sorted(wrong),
+             f"must hold at least {len(OPTION_LETTERS) - 1} named mistakes")
     space = "" if unit == "°" else " "
+
+    def text(value: float) -> str:
+        return f"{format_number(value, sig_figs)}{space}{unit}"
+
+    wrong = _three_mistakes(key, wrong, text, seed)
     rows = sorted([(key, "", "", None)] + [(value, name, feedback, *see) for name, (value, feedback, *see)
                                            in wrong.items()], key=lambda row: row[:3])
-    texts = [f"{format_number(value, sig_figs)}{space}{unit}" for value, *_ in rows]
+    texts = [text(value) for value, *_ in rows]
     _require(len(set(texts)) == len(texts), "wrong", texts,
              f"must print differently from the key and each other at {sig_figs} s.f.")
     options = tuple(Option(text, name, feedback, *see) for text, (_, name, feedback, *see) in zip(texts, rows, strict=True))
     answer = OPTION_LETTERS[[name for _, name, *_ in rows].index("")]
     return options, answer
+
+
+def _three_mistakes(key: float, wrong: dict[str, tuple], text, seed: int) -> dict[str, tuple]:
+    """Three of a pool of named mistakes, in the pool's order of preference within each side of
+    the key, chosen so the key takes a letter drawn from its printed value: of the letters the
+    pool can give (enough mistakes below and above the key, each printing differently), the one
+    at crc32(seed and the key's text) mod how many there are."""
+    wanted = len(OPTION_LETTERS) - 1
+    if len(wrong) == wanted:
+        return wrong
+    seen = {text(key)}
+    below, above = [], []
+    for name, row in wrong.items():
+        printed = text(row[0])
+        if printed in seen:
+            continue  # prints the same as the key or a mistake before it in the pool
+        seen.add(printed)
+        (below if row[0] < key else above).append(name)
+    places = [p for p in range(len(OPTION_LETTERS)) if len(below) >= p and len(above) >= wanted - p]
+    _require(bool(places), "wrong", sorted(wrong), "must hold three mistakes that print differently")
+    place = places[zlib.crc32(f"{seed}:{text(key)}".encode()) % len(places)]
+    # the nearest mistakes below the key first go furthest from it in the printed order, so
+    # keep the pool's preference: the first named on each side
+    chosen = below[:place] + above[:wanted - place]
+    return {name: wrong[name] for name in wrong if name in chosen}

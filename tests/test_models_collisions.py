@@ -29,6 +29,9 @@ from physics_figures.models import (
 SETTINGS = settings(max_examples=100, deadline=None)
 masses = st.floats(0.01, 100.0, allow_subnormal=False)
 velocities = st.floats(-50.0, 50.0, allow_subnormal=False)
+# A speed a lab can measure (or none): at 1e-308 m s^-1, m1 v1 / m2 rounds to zero or below the
+# smallest normal float, and comparing such speeds tests the floats, not the physics.
+measurable_velocities = velocities.filter(lambda v: v == 0 or abs(v) >= 1e-9)
 fractions = st.floats(0.0, 1.0, allow_subnormal=False)
 sizes = st.floats(0.0, 10.0, allow_subnormal=False)
 angles = st.floats(0.0, 180.0, allow_subnormal=False)
@@ -123,7 +126,7 @@ def test_light_body_bounces_back_slower_off_a_heavy_one_at_rest(light, heavier, 
 
 
 @SETTINGS
-@given(m1=masses, m2=masses, v1=velocities)
+@given(m1=masses, m2=masses, v1=measurable_velocities)
 def test_explosion_from_rest_has_zero_total_momentum_and_the_lighter_piece_is_faster(m1, m2, v1):
     v2 = explosion_from_rest(m1, m2, v1)
     assert close(total_momentum([m1, m2], [v1, v2]), 0.0, m1 * 50)

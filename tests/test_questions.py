@@ -446,7 +446,9 @@ def test_rounded_part_way_is_what_the_working_gives_with_early_rounding():
     """Practice 7(b): the mass 5.4/3.7 = 1.459... kg rounded to 1.5 kg gives 14.7 N, not 14.3 N."""
     rock = printed("practice-mars-rock").parts[1]
     assert [(round(value, 3), what) for value, what in rock.rounded_part_way] == [(14.715, "the mass to 1.5 kg")]
-    assert "(the unrounded mass: 1.5 kg would give 14.7 N)" in scheme_text(printed("practice-mars-rock"))
+    # issue 25: "the unrounded mass: 1.5 kg" read as if 1.5 kg were the unrounded value
+    assert "= 1.459 × 9.81 (the unrounded mass; the mass rounded to 1.5 kg would give 14.7 N)" in scheme_text(
+        printed("practice-mars-rock"))
     # Nothing rounds part-way to the towing slips: 1.4 m s^-2 is a resistive force left out.
     towing = printed("practice-towing").parts[0]
     assert towing.rounded_part_way == ()

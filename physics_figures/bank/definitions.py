@@ -102,7 +102,7 @@ def rock_from_mars(mars_weight: float = 5.4, g_mars: float = 3.7) -> Question:
     w_mars, g_m, g_e = n(mars_weight, 2), n(g_mars, 2), n(G_EARTH, 3)
     # Rounding the mass to 2 s.f. before W = mg changes the answer: say so where it does.
     rounded = weight(float(round_number(mass, 2)))
-    warning = (f" (the unrounded mass: {n(mass, 2)} kg would give {n(rounded, 3)} N)"
+    warning = (f" (the unrounded mass; the mass rounded to {n(mass, 2)} kg would give {n(rounded, 3)} N)"
                if n(rounded, 3) != n(earth_weight, 3) else "")
     return Question(
         key="practice-mars-rock",

@@ -15,7 +15,6 @@ from ..models import (
     weight,
 )
 from ..notation import format_number as n
-from ..notation import round_number
 from ..questions import (
     OPTION_LETTERS,
     ChoicePart,
@@ -31,7 +30,7 @@ from ..questions import (
     choices_in_order,
 )
 from ..variants import Draw, Template
-from ._common import M_S2, PER_S2, w
+from ._common import M_S2, PER_S2, enough_figures, w
 
 a_answer, trailer_mass_symbol, trailer_resistance_symbol = sympy.symbols("a trailer_mass trailer_resistance")
 hanging_mass_symbol, gravity_symbol = sympy.symbols("hanging_mass gravity")
@@ -273,8 +272,7 @@ def friction_acceleration_choice(crate_weight: float = 490.0, pull: float = 180.
              f"minus the friction: {p} − {f} N."), "friction"),
     }, sig_figs=2, unit=PER_S2, seed=12)
     # the mass with the figures its division needs, so the working gives the printed answer
-    shown_mass = next(n(mass, figures) for figures in (3, 4, 5)
-                      if n((pull - friction) / float(round_number(mass, figures)), 2) == n(key, 2))
+    (shown_mass,) = enough_figures([mass], lambda m: (pull - friction) / m, n(key, 2))
     return Question(
         key="friction-acceleration-choice",
         text=(f"A crate of weight {wt} N is pulled along a horizontal floor by a horizontal rope. The "

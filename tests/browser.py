@@ -22,6 +22,7 @@ import io
 import re
 import shutil
 import threading
+import urllib.request
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from functools import cache, lru_cache
@@ -175,28 +176,21 @@ def site_pages(site: Path) -> list[str]:
 
 
 # A redirect stub (Jupyter Book's root index.html) is judged by the page it leads to, the
-# one a reader sees. After the stub's load event its refresh may have begun already.
-HAS_REFRESH = "!!document.querySelector('meta[http-equiv=refresh i]')"
-# Polled across navigations: true once a page other than the stub has fully loaded.
-LANDED = "stub => location.href !== stub && document.readyState === 'complete'"
+# one a reader sees. Known from the stub's own HTML: asking the page itself races its refresh
+# (the script may run in the next document, or in the empty one before it).
+IS_REDIRECT_STUB = re.compile(r"<meta[^>]+http-equiv=.refresh", re.IGNORECASE)
+SCROLL_TO_BOTTOM = "window.scrollTo(0, document.body.scrollHeight)"
 
 
-def _redirects(page, url: str) -> bool:
-    from playwright.sync_api import Error
-
-    try:
-        return page.url != url or page.evaluate(HAS_REFRESH)
-    except Error:  # the page went on while asked: it redirected
-        return True
+def _is_redirect_stub(url: str) -> bool:
+    """Read over HTTP, not from the tab: the tab drops the stub's body once it has moved on."""
+    with urllib.request.urlopen(url) as response:
+        return bool(IS_REDIRECT_STUB.search(response.read().decode("utf-8", "replace")))
 
 
-async def _redirects_async(page, url: str) -> bool:
-    from playwright.async_api import Error
-
-    try:
-        return page.url != url or await page.evaluate(HAS_REFRESH)
-    except Error:
-        return True
+def _landed(stub: str):
+    """A URL predicate: any page but the stub."""
+    return lambda url: url != stub and url.startswith("http")
 
 
 @dataclass
@@ -218,7 +212,7 @@ class PageLoad:
 def load_page(context, url: str, *, scroll: bool = True, measure: bool = True) -> tuple[object, PageLoad]:
     """Open `url` in a new page of `context`; record requests, failures and console errors.
 
-    A redirect stub is followed to the page it leads to (HAS_REFRESH).
+    A redirect stub is followed to the page it leads to (IS_REDIRECT_STUB).
     With `scroll`, the page is scrolled to the bottom so lazily loaded figures count too.
     With `measure`, each response's transferred size is recorded (slower).
     """
@@ -248,10 +242,10 @@ def load_page(context, url: str, *, scroll: bool = True, measure: bool = True) -
     page.on("console", lambda m: m.type == "error" and record.console_errors.append(m.text))
     page.on("pageerror", lambda e: record.console_errors.append(str(e)))
     page.goto(url, wait_until="load")
-    if _redirects(page, url):
-        page.wait_for_function(LANDED, arg=url)
+    if _is_redirect_stub(url):
+        page.wait_for_url(_landed(url), wait_until="load")
     if scroll:
-        page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
+        page.evaluate(SCROLL_TO_BOTTOM)
         page.wait_for_load_state("networkidle")
     return page, record
 
@@ -337,10 +331,10 @@ class PageVisitor:
         `scroll`, scroll to the bottom so lazy content loads and counts."""
         self.record = PageLoad(url)
         await self.page.goto(url, wait_until="load")
-        if await _redirects_async(self.page, url):
-            await self.page.wait_for_function(LANDED, arg=url)
+        if await asyncio.to_thread(_is_redirect_stub, url):
+            await self.page.wait_for_url(_landed(url), wait_until="load")
         if scroll:
-            await self.page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
+            await self.page.evaluate(SCROLL_TO_BOTTOM)
             await self.page.wait_for_load_state("networkidle")
         await asyncio.gather(*self._pending)
         self._pending.clear()

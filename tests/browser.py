@@ -21,6 +21,7 @@ import http.server
 import io
 import re
 import shutil
+import sys
 import threading
 import urllib.request
 from collections.abc import Iterator
@@ -117,6 +118,16 @@ class _StaticHandler(http.server.SimpleHTTPRequestHandler):
         shutil.copyfileobj(source, outputfile)
 
 
+class _QuietServer(http.server.ThreadingHTTPServer):
+    daemon_threads = True
+
+    def handle_error(self, request, client_address):
+        # Chromium drops connections it no longer needs (a page left mid-download): not an
+        # error of the site, and its traceback buried the test log.
+        if not isinstance(sys.exc_info()[1], ConnectionError):
+            super().handle_error(request, client_address)
+
+
 @contextlib.contextmanager
 def serve_site(site: Path, *, prefix: str = "", cache_control: str = "no-cache") -> Iterator[str]:
     """Serve `site` on a free local port in a thread; yield its base URL (ending before
@@ -126,8 +137,7 @@ def serve_site(site: Path, *, prefix: str = "", cache_control: str = "no-cache")
     def handler(*args, **kwargs):
         return handler_class(*args, directory=str(site), **kwargs)
 
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
-    server.daemon_threads = True
+    server = _QuietServer(("127.0.0.1", 0), handler)
     thread = threading.Thread(target=server.serve_forever, daemon=True)
     thread.start()
     try:

@@ -118,10 +118,16 @@ async def _keyboard(page) -> dict:
     return {"first": first, "jumped": jumped, "stops": stops}
 
 
+# Five tabs load pages side by side: on a busy 2-core machine one load can pass playwright's
+# 30 s default (speed is judged by the weighing and Lighthouse, not by this timeout).
+SWEEP_TIMEOUT_MS = 120_000
+
+
 async def _sweep_mode(browser, base: str, pages: list[str], viewport: str, scheme: str, reports) -> None:
     mode = f"{viewport}/{scheme}"
     first = mode == "desktop/light"  # measures bytes and requests, reads the page's facts
     context = await browser.new_context(viewport=VIEWPORTS[viewport], color_scheme=scheme)
+    context.set_default_timeout(SWEEP_TIMEOUT_MS)
     # Offline: anything not on the site's own host is blocked (and reported as foreign).
     await context.route(re.compile(r"^(?!http://127\.0\.0\.1:)"), lambda route: route.abort("internetdisconnected"))
     visitor = PageVisitor(await context.new_page(), measure=first)
@@ -167,6 +173,7 @@ async def _weigh(browser, base: str, pages: list[str], reports) -> None:
     workers blocked, as `make bench` weighs it. Its layout shift while it loads, too."""
     for path in pages:
         context = await browser.new_context(viewport=VIEWPORTS["mobile"], service_workers="block")
+        context.set_default_timeout(SWEEP_TIMEOUT_MS)
         await context.route(re.compile(r"^(?!http://127\.0\.0\.1:)"), lambda route: route.abort())
         await context.add_init_script(LAYOUT_SHIFTS)
         visitor = PageVisitor(await context.new_page())

@@ -151,14 +151,27 @@ def glancing_speed_choice(m1: float = 0.20, speed_before: float = 3.0, m2: float
 
 
 _COMPASS = ("north of east", "south of west", "north of west", "south of east")
+#: Where the firework's first two pieces fly, by variant: the first along east-west, the second
+#: along north-south, so the third piece's direction is not the same in every variant (issue 25).
+_HEADINGS = (("east", "north"), ("west", "north"), ("east", "south"), ("west", "south"))
+_SIGN = {"east": 1.0, "west": -1.0, "north": 1.0, "south": -1.0}
+
+
+def _compass(east: float, north: float) -> str:
+    """The compass quadrant of a momentum from its signed components (east and north positive)."""
+    return f"{'north' if north > 0 else 'south'} of {'east' if east > 0 else 'west'}"
 
 
 def explosion_three_pieces(m1: float = 0.20, v1: float = 30.0, m2: float = 0.30, v2: float = 15.0,
-                           m3: float = 0.50) -> Question:
+                           m3: float = 0.50, heading: float = 0) -> Question:
     """Explosion into three pieces from rest (notes' variation): two at right angles, so the third
-    has momentum sqrt(p1² + p2²), opposite the resultant of the other two."""
+    has momentum sqrt(p1² + p2²), opposite the resultant of the other two. heading: which of
+    _HEADINGS the first two pieces fly along (0: east and north, the printed version)."""
+    first_way, second_way = _HEADINGS[int(heading)]
     p1, p2 = momentum(m1, v1), momentum(m2, v2)
-    size, angle = from_components(p1, p2)  # the first two together: the third is equal and opposite
+    east, north = _SIGN[first_way] * p1, _SIGN[second_way] * p2  # the first two pieces together
+    size, angle = from_components(p1, p2)  # the third is equal and opposite: the same size and angle
+    resultant_way, third_way = _compass(east, north), _compass(-east, -north)
     speed = velocity_from_momentum(size, m3)
     speeds_size, speeds_angle = from_components(v1, v2)
     upside_down = from_components(p2, p1)[1]
@@ -166,11 +179,11 @@ def explosion_three_pieces(m1: float = 0.20, v1: float = 30.0, m2: float = 0.30,
     sym_a, sym_m3 = sympy.symbols("a m_c")
     return Question(
         key="explosion-three-pieces",
-        text=(f"A firework shell at rest explodes into three pieces. A piece of mass {ma} kg flies due east "
-              f"at {ua} {PER_S}, and a piece of mass {mb} kg flies due north at {ub} {PER_S}. The third "
-              f"piece has mass {mc} kg. Calculate, for the third piece, (a) the size of its momentum, "
-              "(b) its speed and (c) the angle its direction makes with due west or due east, giving "
-              "the direction (for example, south of west)."),
+        text=(f"A firework shell at rest explodes into three pieces. A piece of mass {ma} kg flies due "
+              f"{first_way} at {ua} {PER_S}, and a piece of mass {mb} kg flies due {second_way} at {ub} "
+              f"{PER_S}. The third piece has mass {mc} kg. Calculate, for the third piece, (a) the size of "
+              "its momentum, (b) its speed and (c) the angle its direction makes with the east–west line, "
+              "and state its direction."),
         givens=(Given("mass 1", m1, "kg", 2), Given("speed 1", v1, "m s^-1", 2), Given("mass 2", m2, "kg", 2),
                 Given("speed 2", v2, "m s^-1", 2), Given("mass 3", m3, "kg", 2)),
         parts=(
@@ -179,7 +192,7 @@ def explosion_three_pieces(m1: float = 0.20, v1: float = 30.0, m2: float = 0.30,
                  revisit="The total momentum stays zero: the third piece's momentum is equal and opposite "
                          "to the resultant of the other two, √(p₁² + p₂²) for two at right angles.",
                  mistakes=(
-                     Mistake("momenta added as scalars", p1 + p2,
+                     Mistake("momentum added as scalars", p1 + p2,
                              "You added the sizes. The two momenta are at right angles: add them as "
                              "vectors, with Pythagoras."),
                      Mistake("momenta subtracted", abs(p1 - p2),
@@ -195,21 +208,21 @@ def explosion_three_pieces(m1: float = 0.20, v1: float = 30.0, m2: float = 0.30,
                              "momenta, then divide by the third piece's mass.", see="conservation"),
                  ), see="momentum"),
             Part("angle of the third piece's direction", angle, "°", "angle", units="° (degrees)",
-                 shown_sig_figs=3, direction="choice", choices=_COMPASS, answer_direction="south of west",
+                 shown_sig_figs=3, direction="choice", choices=_COMPASS, answer_direction=third_way,
                  direction_hint="The third piece's momentum cancels the other two: it points opposite to "
-                                "their resultant, which is north of east.",
-                 revisit="tan θ = (northward momentum) / (eastward momentum); the third piece moves the "
+                                f"their resultant, which is {resultant_way}.",
+                 revisit="tan θ = (north–south momentum) / (east–west momentum); the third piece moves the "
                          "opposite way to the resultant of the other two.",
                  mistakes=(
                      Mistake("tan the wrong way up", upside_down,
-                             "You measured the angle from north–south. tan θ = (northward momentum) / "
-                             "(eastward momentum) gives the angle from east–west."),
+                             "You measured the angle from north–south. tan θ = (north–south momentum) / "
+                             "(east–west momentum) gives the angle from east–west."),
                      Mistake("used the speeds", speeds_angle,
                              "You used the speeds. The direction comes from the momenta, which include "
                              "the masses."),
                      Mistake("same direction as the other two", angle,
                              "That is the direction of the other two pieces' resultant. The total is "
-                             "zero, so the third piece moves the opposite way.", direction="north of east"),
+                             "zero, so the third piece moves the opposite way.", direction=resultant_way),
                  ), see="two-d"),
         ),
         mark_scheme=(
@@ -219,7 +232,8 @@ def explosion_three_pieces(m1: float = 0.20, v1: float = 30.0, m2: float = 0.30,
             Mark(f"= {n(speed, 2)} {PER_S}", "A1", "b"),
             Mark(f"tan θ = {w(p2)} / {w(p1)}", "C1", "c"),
             Mark(f"θ = {n(angle, 3)}°", "A1", "c"),
-            Mark("south of west (opposite to the resultant of the other two)", "B1", "c", earns="direction"),
+            Mark(f"{third_way} (opposite to the resultant of the other two, {resultant_way})", "B1", "c",
+                 earns="direction"),
         ),
     )
 
@@ -383,7 +397,7 @@ TEMPLATES = (
     Template("explosion-three-pieces", "two-d", ("numeric",), "A firework explodes", explosion_three_pieces,
              {"m1": Draw(0.20, 0.10, 0.50, 0.05), "v1": Draw(30.0, 10.0, 50.0, 5.0),
               "m2": Draw(0.30, 0.10, 0.50, 0.05), "v2": Draw(15.0, 10.0, 50.0, 5.0),
-              "m3": Draw(0.50, 0.20, 1.00, 0.10)}),
+              "m3": Draw(0.50, 0.20, 1.00, 0.10), "heading": Draw(0, 0, len(_HEADINGS) - 1, 1)}),
     Template("skaters-stick-right-angles", "two-d", ("numeric",), "Skaters at right angles",
              skaters_stick_right_angles,
              {"m1": Draw(70.0, 50.0, 100.0, 5.0), "u1": Draw(4.0, 2.0, 8.0, 0.5),

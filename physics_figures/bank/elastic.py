@@ -148,7 +148,8 @@ def elastic_or_not_choice(situation: float = 0) -> Question:
     speeds = f"approach {w(approach)} {PER_S}, separation {w(separation)} {PER_S}"
     plain_energy, plain_speeds = textformat.to_plain(energy), speeds.replace(PER_S, _PER_S_PLAIN)
     if elastic:
-        key = Option("It is elastic: the relative speed of separation equals the relative speed of approach.")
+        key = Option(f"It is elastic: the relative speed of separation of the {body}s equals their relative "
+                     "speed of approach.")
         wrong = (
             Option(f"It is inelastic: {body} A loses kinetic energy in the collision.",
                    "looked at one body's kinetic energy",
@@ -158,15 +159,17 @@ def elastic_or_not_choice(situation: float = 0) -> Question:
                    "kinetic energy lost in every collision",
                    "Not in every collision: in an elastic one the total kinetic energy is kept. Compare "
                    f"the totals, or the relative speeds ({plain_speeds})."),
-            Option("It is inelastic: the relative speeds of approach and separation do not add up to zero.",
+            Option(f"It is inelastic: the relative speeds of approach and separation of the {body}s do not add "
+                   "up to zero.",
                    "approach + separation = 0",
                    "Relative speeds are sizes, so they never add to zero. The test for an elastic "
                    f"collision is that they are equal: {plain_speeds}."),
         )
     else:
-        key = Option("It is inelastic: the total kinetic energy after the collision is less than before.")
+        key = Option(f"It is inelastic: the total kinetic energy of the {body}s after the collision is less "
+                     "than before.")
         wrong = (
-            Option("It is elastic: the total momentum is the same before and after.",
+            Option(f"It is elastic: the total momentum of the {body}s is the same before and after.",
                    "momentum conserved, so elastic",
                    "Momentum is conserved in every collision, elastic or not, so it cannot decide. "
                    f"Compare the total kinetic energy: {plain_energy}."),

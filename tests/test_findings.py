@@ -85,3 +85,70 @@ def test_a_template_states_why_its_answer_cannot_vary_in_words():
     stated = type(template)(kinds=("explain",), same_answer_because="One definition, asked in four wordings.",
                             **fields)
     assert stated.same_answer_because.startswith("One definition")
+
+
+# ---- real named mistakes, not strawmen -------------------------------------------------------
+
+SIN_COS, SCALARS = "sin and cos swapped", "momentum added as scalars"
+KE_KEPT, ONE_MASS = "kinetic energy conserved", "one body's mass used for both"
+
+#: (template, part, mistake, its value in variant 0 worked by hand from the printed numbers). A part
+#: is an index for a numerical part; None for a multiple-choice part, whose option prints the value.
+REAL_MISTAKES = (
+    # sin and cos swapped: A's components taken as p sin θ along and p cos θ across
+    ("practice-pucks", 0, SIN_COS, 0.767),  # √((1.0 − 0.60 sin 40°)² + (0.60 cos 40°)²)
+    ("oblique-wall-bounce", 0, SIN_COS, 0.919),  # 1.2 cos 40° (the angle is to the wall)
+    ("oblique-wall-bounce", 1, SIN_COS, 1.84),  # 2 × 1.2 cos 40°
+    ("glancing-speed-choice", None, SIN_COS, 1.6),  # √((0.60 − 0.30 sin 40°)² + (0.30 cos 40°)²) / 0.30
+    # momentum added as scalars: sizes added (or subtracted) with no signs or angles
+    ("practice-pucks", 0, SCALARS, 0.40),  # 1.0 − 0.60
+    ("skaters-stick-right-angles", 0, SCALARS, 3.58),  # (70 × 4.0 + 50 × 3.0) / 120
+    ("explosion-three-pieces", 0, SCALARS, 10.5),  # 0.20 × 30 + 0.30 × 15
+    ("practice-trolleys-stick", 0, SCALARS, 2.5),  # (2.0 × 3.0 + 1.0 × 1.5) / 3.0
+    ("stick-choice", None, SCALARS, 2.8),  # (3.0 × 4.0 + 2.0 × 1.0) / 5.0
+    # the kinetic energy "conserved" in a collision that loses it, or an explosion that gains it
+    ("sticking-energy-lost", 0, KE_KEPT, 1.90),  # ½ × 0.80 × 3.0² = ½ × 2.0 × v²
+    ("sticking-energy-lost", 2, KE_KEPT, 0.0),
+    ("practice-trolleys-stick", 1, KE_KEPT, 0.0),
+    ("stick-energy-choice", None, KE_KEPT, 0.0),
+    ("quick-check-2", 0, KE_KEPT, 20.0),  # ½ × 0.010 × 400² = ½ × 4.0 × v²
+    # one body's mass used for both after they stick
+    ("practice-trolleys-stick", 0, ONE_MASS, 2.25),  # (6.0 − 1.5) / 2.0
+    ("stick-choice", None, ONE_MASS, 3.3),  # (12 − 2.0) / 3.0
+    ("sticking-energy-lost", 0, ONE_MASS, 2.0),  # 0.80 × 3.0 / 1.2
+    # the real mistakes that replace the strawmen
+    ("quick-check-1", 0, "speed given as momentum", 7.5),  # 5.0 × 3.0 / 2.0
+    ("quick-check-1", 1, "impulse taken as kinetic energy", 3.87),  # √(2 × 15 / 2.0)
+    ("quick-check-1", 1, "distance given as speed", 11.25),  # ½ × 2.5 × 3.0²
+    ("practice-stopping-time", 0, "stopping distance given as the time", 18.0),  # ½ × 900 × 12² / 3600
+    ("graph-kick-force-time", 2, "impulse taken as kinetic energy", 5.96),  # √(2 × 8.0 / 0.45)
+)
+
+#: Mistakes no student makes (issue 25), which the real ones above replace.
+STRAWMEN = ("mass over momentum", "momentum times mass", "force over momentum", "impulse × mass",
+            "force times mass")
+
+
+def _named(question) -> set[str]:
+    return {m.name for p in question.parts for m in p.mistakes} | {
+        o.mistake for p in question.parts if isinstance(p, ChoicePart) for o in p.options}
+
+
+@pytest.mark.parametrize(("key", "part", "name", "value"), REAL_MISTAKES,
+                         ids=[f"{key}-{part}-{name}" for key, part, name, _ in REAL_MISTAKES])
+def test_the_real_mistakes_are_named_with_their_variant_0_values(key, part, name, value):
+    question = TEMPLATES[key].variant(0)
+    if part is None:  # multiple choice: the option standing for the mistake prints its value
+        (option,) = [o for o in question.parts[0].options if o.mistake == name]
+        assert re.match(r"[\d.]+", textformat.to_plain(option.text)).group() == f"{value:g}"
+        assert option.see or question.parts[0].see, "the feedback sends the student to a section"
+        return
+    (mistake,) = [m for m in question.parts[part].mistakes if m.name == name]
+    assert mistake.value == pytest.approx(value, rel=2e-3, abs=1e-12)
+    assert mistake.see or question.parts[part].see, "the feedback sends the student to a section"
+
+
+@pytest.mark.parametrize("key", TEMPLATES)
+def test_no_strawman_mistake_remains(key):
+    named = set().union(*(_named(q) for q in TEMPLATES[key].variants))
+    assert not named & set(STRAWMEN)

@@ -234,15 +234,15 @@ def stick_energy_choice(m1: float = 2.0, u1: float = 4.0, m2: float = 1.0, speed
             ("You worked out the kinetic energy after with A's mass only. The trolleys move together "
              "afterwards: use ½(m₁ + m₂)v²."))}
     options, answer = choices_in_order(key, {
-        "forgot B's direction": (
+        "kinetic energy conserved": (
+            0.0,
+            ("Kinetic energy is conserved only in an elastic collision. Trolleys that stick together "
+            "always lose some: work out the total before and after.")),
+        "momentum added as scalars": (
             before - total_kinetic_energy((m1 + m2,), (same_way,)),
             ("You gave B's velocity the same sign as A's. They move towards each other, so B's momentum "
             "is negative: the common velocity is (m₁u₁ − m₂u₂) / (m₁ + m₂)."), "momentum"),
         **forgot_b,
-        "kinetic energy taken as conserved": (
-            0.0,
-            ("Kinetic energy is conserved only in an elastic collision. Trolleys that stick together "
-            "always lose some: work out the total before and after.")),
         "total kinetic energy before given": (
             before,
             ("That is the total kinetic energy before the collision. The energy transferred is the "
@@ -409,9 +409,15 @@ def sticking_energy_lost(m1: float = 0.80, u1: float = 3.0, m2: float = 1.2) -> 
             Part("speed just after the collision", v, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
                  revisit="Momentum is conserved: m₁u₁ = (m₁ + m₂)v, with the mass of both trolleys after.",
                  mistakes=(
-                     Mistake("divided by B's mass only", velocity_from_momentum(momentum(m1, u1), m2),
-                             "After sticking, both trolleys move together: divide the momentum by the "
-                             "total mass.", see="momentum"),
+                     Mistake("one body's mass used for both", velocity_from_momentum(momentum(m1, u1), m2),
+                             "You divided by B's mass only. After sticking, both trolleys move together: "
+                             "divide the momentum by the total mass.", see="momentum"),
+                     # ½m₁u₁² = ½(m₁ + m₂)v²: sticking is inelastic, "(initial EK > final EK) so inelastic"
+                     # (9702/23/O/N/17 Q3(b)(iii)); wrong physics, so it keeps no mark (XP, 9702/22/M/J/20)
+                     Mistake("kinetic energy conserved", u1 * math.sqrt(m1 / (m1 + m2)),
+                             "You set the kinetic energy after equal to the kinetic energy before. Trolleys "
+                             "that stick together always lose kinetic energy: use momentum, m₁u₁ = "
+                             "(m₁ + m₂)v.", see="kinetic-energy"),
                  ), see="conservation"),
             Part("total kinetic energy just after", after, "J", "energy", shown_sig_figs=2,
                  ecf=Ecf(sympy.Rational(1, 2) * (sym_m1 + sym_m2) * sym_a**2, {"m_a": m1, "m_b": m2}),
@@ -428,6 +434,10 @@ def sticking_energy_lost(m1: float = 0.80, u1: float = 3.0, m2: float = 1.2) -> 
                  mistakes=(
                      Mistake("gave the kinetic energy before", before,
                              "That is the kinetic energy before. Subtract the kinetic energy after."),
+                     Mistake("kinetic energy conserved", 0.0,
+                             "Kinetic energy is conserved only in an elastic collision. Trolleys that "
+                             "stick together always lose some: subtract the total after from the total "
+                             "before."),
                  ), see="kinetic-energy"),
         ),
         mark_scheme=(

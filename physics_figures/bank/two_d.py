@@ -65,9 +65,14 @@ def pucks_glancing(mass: float = 0.40, speed_before: float = 2.5, speed_after: f
                  revisit="Momentum is a vector: conserve the components along and across the "
                          "original line separately, then combine them with Pythagoras.",
                  mistakes=(
-                     Mistake("sizes subtracted", p_before - p_after,
+                     Mistake("momentum added as scalars", p_before - p_after,
                              "You subtracted the sizes. Momentum is a vector: resolve along and "
                              "across the line and conserve each.", see="conservation"),
+                     # 9702/21/M/J/16 Q2(a) marks each component on its own ("horizontal component
+                     # (= 12 cos 50°)", "vertical component (= 12 sin 50°)"); a swap is wrong physics (XP)
+                     Mistake("sin and cos swapped", missing_momentum(p_before, p_after, 90.0 - angle).magnitude,
+                             f"You swapped sin and cos. The angle is measured from A's original direction, so "
+                             f"A's component along that line is p cos {theta}° and across it p sin {theta}°."),
                      Mistake("across component only", b.across,
                              "That is only the component across the line. Combine it with the "
                              "component along the line: p = √(along² + across²)."),
@@ -112,7 +117,7 @@ def glancing_speed_choice(m1: float = 0.20, speed_before: float = 3.0, m2: float
     key = hit.speed_missing
     swapped = missing_momentum(p_before, p_after, 90.0 - angle)
     options, answer = choices_in_order(key, {
-        "momentum treated as a scalar": (
+        "momentum added as scalars": (
             velocity_after_collision(m1, speed_before, m2, 0.0, speed_after),
             ("You subtracted the sizes of the momenta as if A carried straight on. Momentum is a vector: "
             "conserve the components along and across A's first direction separately.")),
@@ -232,6 +237,7 @@ def explosion_three_pieces(m1: float = 0.20, v1: float = 30.0, m2: float = 0.30,
             Mark(f"= {n(speed, 2)} {PER_S}", "A1", "b"),
             Mark(f"tan θ = {w(p2)} / {w(p1)}", "C1", "c"),
             Mark(f"θ = {n(angle, 3)}°", "A1", "c"),
+            # the direction's own B1, as 9702/21/M/J/16 Q3(b)(ii): "(direction of force is) upwards/up B1"
             Mark(f"{third_way} (opposite to the resultant of the other two, {resultant_way})", "B1", "c",
                  earns="direction"),
         ),
@@ -264,7 +270,7 @@ def skaters_stick_right_angles(m1: float = 70.0, u1: float = 4.0, m2: float = 50
                  revisit="Add the momenta as vectors (Pythagoras: they are at right angles), then divide "
                          "by the total mass.",
                  mistakes=(
-                     Mistake("momenta added as scalars", stick_together(m1, u1, m2, u2),
+                     Mistake("momentum added as scalars", stick_together(m1, u1, m2, u2),
                              "You added the momenta as if the skaters moved along one line. They move at "
                              "right angles: combine the momenta with Pythagoras."),
                      Mistake("Pythagoras on the speeds", from_components(u1, u2)[0],
@@ -337,7 +343,7 @@ def oblique_wall_bounce(mass: float = 0.060, speed: float = 20.0, angle: float =
                  shown_sig_figs=2,
                  revisit="Resolve: the angle is to the wall, so the component at right angles to it is p sin θ.",
                  mistakes=(
-                     Mistake("used cos", along,
+                     Mistake("sin and cos swapped", along,
                              f"That is the component along the wall. The angle {theta}° is measured from "
                              "the wall, so the component at right angles to it is p sin θ."),
                  ), see="two-d"),
@@ -352,7 +358,7 @@ def oblique_wall_bounce(mass: float = 0.060, speed: float = 20.0, angle: float =
                      Mistake("forgot the reversal", across,
                              "The component at right angles to the wall reverses: it changes by twice its "
                              "size, 2p sin θ."),
-                     Mistake("used cos", oblique_bounce_momentum_change(p, 90.0 - angle),  # 2p cos θ
+                     Mistake("sin and cos swapped", oblique_bounce_momentum_change(p, 90.0 - angle),  # 2p cos θ
                              "You doubled the component along the wall, which does not change. Double the "
                              "component at right angles to it, p sin θ."),
                  ), see="two-d"),

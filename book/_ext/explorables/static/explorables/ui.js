@@ -66,8 +66,7 @@
       : formatNumber(x, opts.sf || 3);
   }
 
-  /** Fill a template's "{name}" placeholders with numbers to 3 s.f., as Python's str.format does
-   *  with format_number (physics_figures.explorables: REFUSALS, UNREALISTIC_OPENING). */
+  /** Fill "{name}" in a text of physics_figures.explorables with numbers to 3 s.f., as Python does. */
   function fill(template, numbers) {
     return template.replace(/\{(\w+)\}/g, function (all, name) {
       return fmt(numbers[name]);

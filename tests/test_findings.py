@@ -112,6 +112,7 @@ REAL_MISTAKES = (
     ("practice-trolleys-stick", 1, KE_KEPT, 0.0),
     ("stick-energy-choice", None, KE_KEPT, 0.0),
     ("quick-check-2", 0, KE_KEPT, 20.0),  # ½ × 0.010 × 400² = ½ × 4.0 × v²
+    ("example-4-try", 4, KE_KEPT, 0.90),  # ½ × 0.20 × 3.0², the kinetic energy before (notes, Example 4)
     # one body's mass used for both after they stick
     ("practice-trolleys-stick", 0, ONE_MASS, 2.25),  # (6.0 − 1.5) / 2.0
     ("stick-choice", None, ONE_MASS, 3.3),  # (12 − 2.0) / 3.0

@@ -105,7 +105,7 @@ def pucks_glancing(mass: float = 0.40, speed_before: float = 2.5, speed_after: f
 def glancing_speed_choice(m1: float = 0.20, speed_before: float = 3.0, m2: float = 0.30,
                           speed_after: float = 1.5, angle: float = 40.0) -> Question:
     """Paper 1 style: the speed of the struck puck after a glancing collision. Wrong options:
-    momentum treated as a scalar, sin and cos swapped, one component forgotten."""
+    momentum added as scalars, sin and cos swapped, one component forgotten."""
     if speed_after >= speed_before:
         raise ValueError(f"speed_after must be less than speed_before={speed_before!r} m s^-1: puck A "
                          f"cannot speed up by hitting a puck at rest (got speed_after={speed_after!r})")

@@ -7,7 +7,8 @@ same fixed-step Runge-Kutta as models.drag.open_canopy while a parachute opens).
 * serialises each explorable's starting situation from ``scenarios`` into plain data
   (``explorable_data``), which the ``explorable`` directive writes into the page as JSON;
 * holds the Python twins of the few rules the explorables add on top of ``models``
-  (``collision_lab``, ``earliest_parachute_opening``, ``UNREALISTIC_DECELERATION_IN_G``),
+  (``collision_lab``, ``earliest_parachute_opening``, ``UNREALISTIC_DECELERATION_IN_G``,
+  ``opening_jolt``),
   so that the tests can check the JavaScript against Python on many random inputs.
 
 SI units throughout; velocities are signed, positive to the right (collisions) or
@@ -198,6 +199,31 @@ def earliest_parachute_opening(mass, body_drag, parachute_drag, *, g=G_EARTH):
 #: Above this peak deceleration (in g) the skydiver explorer says why the number is
 #: unrealistic: a canopy that opens that hard would injure the skydiver.
 UNREALISTIC_DECELERATION_IN_G = 15.0
+#: What the skydiver explorer says above that limit; {placeholders} are filled with the numbers
+#: of ``opening_jolt`` to 3 s.f. (physics_figures.notation here, notation.js in the browser). The
+#: speed is the one the canopy opens at, not the speed at D (issue 25).
+UNREALISTIC_OPENING = (
+    "Unrealistic: {in_g} g would injure the skydiver. A canopy that opens at {speed_at_opening} m s⁻¹ "
+    "and fills in only {opening_duration} s jerks them to a stop far too hard; real parachutes are "
+    "made to open over two or three seconds, which keeps the deceleration to a few g."
+)
+
+
+def opening_jolt(dive):
+    """The numbers the skydiver explorer's warning quotes, from a models.Skydive: the largest
+    deceleration in g (at D), the speed when the parachute starts to open (m s^-1) and the
+    time the canopy takes to fill (s). Keys are UNREALISTIC_OPENING's placeholders."""
+    return {"in_g": -dive.point_acceleration["D"] / dive.g, "speed_at_opening": dive.speed_at_opening,
+            "opening_duration": dive.opening_duration}
+
+
+def opening_warning(dive):
+    """What the skydiver explorer says about a dive: UNREALISTIC_OPENING filled from opening_jolt
+    when the peak deceleration is above UNREALISTIC_DECELERATION_IN_G, else nothing ("")."""
+    numbers = opening_jolt(dive)
+    if numbers["in_g"] <= UNREALISTIC_DECELERATION_IN_G:
+        return ""
+    return UNREALISTIC_OPENING.format(**{name: format_number(x, 3) for name, x in numbers.items()})
 
 
 def explorable_data(name):
@@ -217,6 +243,7 @@ def explorable_data(name):
             "parachuteOpensAt": dive.parachute_opens_at,
             "openingDuration": dive.opening_duration,
             "unrealisticDecelerationInG": UNREALISTIC_DECELERATION_IN_G,
+            "unrealisticOpening": UNREALISTIC_OPENING,
         }
     if name == "collision-lab":
         # starts on the notes' sticking trolleys; an explosion starts on the spring trolleys

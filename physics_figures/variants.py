@@ -104,11 +104,20 @@ class Template:
     variant_count: int = MIN_VARIANTS
     #: A worked example's try-first part: the printed numbers only, not one of the bank's.
     try_first: bool = False
+    #: Why an explain or conceptual template's answer is the same text in every variant (say, one
+    #: definition asked in several wordings); else each variant's answer follows its situation
+    #: (issue 25: tests/test_findings.py).
+    same_answer_because: str = ""
 
     def __post_init__(self):
         _require(bool(self.type), "type", self.type, "must name one of its topic's question types")
         _require(bool(self.kinds) and set(self.kinds) <= set(KINDS), "kinds", self.kinds,
                  f"must be some of {KINDS}")
+        if self.same_answer_because:
+            _require(bool(self.same_answer_because.strip()), "same_answer_because", self.same_answer_because,
+                     "must say why the answer cannot follow the variant, in words")
+            _require(bool({"explain", "mcq"} & set(self.kinds)), "same_answer_because", self.same_answer_because,
+                     f"is only for an explain or multiple-choice template, not a {'/'.join(self.kinds)} one")
         _require(not (self.try_first and self.draws), "draws", dict(self.draws),
                  "must be empty for a worked example's try-first part (it keeps the printed numbers)")
         if not self.try_first:

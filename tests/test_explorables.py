@@ -14,6 +14,7 @@ from physics_figures import models, scenarios
 from physics_figures.explorables import (
     EXPLORABLES,
     REFUSALS,
+    UNREALISTIC_OPENING,
     collision_lab,
     earliest_parachute_opening,
     explorable_data,
@@ -140,6 +141,7 @@ def test_skydiver_page_data_carry_the_opening_duration_and_the_15_g_limit():
     data = explorable_data("skydiver")
     assert data["openingDuration"] == scenarios.SKYDIVER.opening_duration == 2.5
     assert data["unrealisticDecelerationInG"] == 15
+    assert data["unrealisticOpening"] == UNREALISTIC_OPENING  # its words; the browser fills in the numbers
 
 
 def test_page_data_are_the_notes_scenarios():

@@ -15,6 +15,7 @@ from playwright.sync_api import Page, expect
 
 from physics_figures import models, scenarios
 from physics_figures.explorables import EXPLORABLES, REFUSALS, collision_lab
+from physics_figures.notation import format_number
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
@@ -235,6 +236,10 @@ def test_skydiver_says_why_more_than_15_g_is_unrealistic(visit):
     expect(warning).to_be_visible()
     expect(warning).to_contain_text("Unrealistic")
     expect(warning).to_contain_text("would injure the skydiver")
+    # Issue 25: it quotes the speed the canopy opens at (88.6 m s⁻¹ here), not the speed at D (59.3)
+    v_t1 = models.terminal_velocity(120, 0.15)
+    expect(warning).to_contain_text(f"opens at {format_number(models.velocity_from_rest(60, v_t1), 3)}")
+    expect(warning).not_to_contain_text("59.3")
     set_slider(box, "Time the parachute takes to open", "End")  # a slow opening: a few g again
     assert value_of(box, "decelG") < 15
     expect(warning).to_be_hidden()

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import shutil
 import subprocess
 from pathlib import Path
@@ -165,6 +166,11 @@ def test_skydive_agrees_with_the_python_model_at_every_sample_point_and_random_t
             assert_close(js["pointDrag"][label], dive.point_drag[label], scale=weight, what=f"drag at {label}")
             assert_close(js["pointAcceleration"][label], dive.point_acceleration[label], scale=G_EARTH,
                          what=f"acceleration at {label}")
+        assert_close(js["speedAtOpening"], dive.speed_at_opening, scale=100, what=f"speed at opening {opts}")
+        jolt = explorables.opening_jolt(dive)
+        assert set(js["openingJolt"]) == set(jolt), opts
+        for name, value in jolt.items():
+            assert_close(js["openingJolt"][name], value, scale=100, what=f"{name} {opts}")
     assert early > 0  # some random openings came before C, and still agree
 
 
@@ -214,6 +220,26 @@ def test_a_hard_opening_in_the_javascript_goes_over_15_g():
             "openingDuration": 0.5, "g": G_EARTH}
     (js,) = run_js([{"call": "skydive", "opts": hard, "times": [0.0]}])
     assert -js["pointAcceleration"]["D"] / G_EARTH > explorables.UNREALISTIC_DECELERATION_IN_G
+
+
+def test_the_unrealistic_warning_quotes_the_speed_the_parachute_opens_at():
+    # Issue 25: at the explorer's hardest setting the warning said the canopy fills "at 59.3 m s⁻¹",
+    # the speed at D, after the canopy has already slowed the skydiver. The canopy opens at the
+    # freefall speed at 60 s: v_t1 tanh(g t / v_t1), with v_t1 = √(120 x 9.81 / 0.15) = 88.6 m s⁻¹.
+    hard = {"mass": 120, "bodyDrag": 0.15, "parachuteDrag": 80, "parachuteOpensAt": 60,
+            "openingDuration": 0.5, "g": G_EARTH}
+    v_t1, v_t2 = models.terminal_velocity(120, 0.15), models.terminal_velocity(120, 80)
+    dive = models.skydive(120, terminal_velocity_freefall=v_t1, terminal_velocity_parachute=v_t2,
+                          parachute_opens_at=60, opening_duration=0.5, duration=120)
+    (js,) = run_js([{"call": "skydive", "opts": hard, "times": [0.0]}])
+    assert round(js["speedAtOpening"], 1) == round(dive.speed_at_opening, 1) == 88.6
+    assert round(js["points"]["D"][1], 1) == 59.3  # the speed the old warning quoted
+    # the warning's words take the numbers of openingJolt, whose keys are its placeholders
+    placeholders = set(re.findall(r"\{(\w+)\}", explorables.UNREALISTIC_OPENING))
+    assert placeholders == set(js["openingJolt"]) == set(explorables.opening_jolt(dive))
+    warning = explorables.opening_warning(dive)
+    assert "opens at 88.6 m s⁻¹" in warning and "59.3" not in warning
+    assert explorables.opening_warning(scenarios.SKYDIVER) == ""  # the notes' skydiver: a few g
 
 
 # ---- collisions ------------------------------------------------------------------

@@ -153,32 +153,34 @@ def parachute_opens_choice(mass: float = 70.0, drag: float = 1500.0) -> Question
 #: Bodies that fall to a terminal velocity: the situation, what gives the drag, and whether
 #: an upthrust acts (notes: drag and terminal velocity; in a liquid the upthrust is constant too).
 _FALLERS = (
-    ("A skydiver jumps from a helicopter hovering high above the ground.", "air resistance", False),
-    ("A steel ball is released from rest just below the surface of a deep tank of oil.",
+    ("A skydiver jumps from a helicopter hovering high above the ground.", "the skydiver", "air resistance",
+     False),
+    ("A steel ball is released from rest just below the surface of a deep tank of oil.", "the ball",
      "the viscous drag of the oil", True),
-    ("A raindrop starts to fall from a cloud.", "air resistance", False),
-    ("A small stone is dropped into a deep lake and sinks.", "the drag of the water", True),
+    ("A raindrop starts to fall from a cloud.", "the raindrop", "air resistance", False),
+    ("A small stone is dropped into a deep lake and sinks.", "the stone", "the drag of the water", True),
 )
 
 
 def terminal_velocity_explained(situation: float = 0) -> Question:
     """Describe and explain: why a falling body reaches a terminal velocity (notes, Drag and
-    terminal velocity: drag grows with speed until it balances the weight)."""
-    what, drag_name, upthrust = _FALLERS[int(situation)]
+    terminal velocity: drag grows with speed until it balances the weight). The model answer
+    names the variant's body and its drag (issue 25)."""
+    what, body, drag_name, upthrust = _FALLERS[int(situation)]
     constant = "the weight and the upthrust" if upthrust else "the weight"
+    balance = f"{drag_name} and the upthrust together equal" if upthrust else f"{drag_name} equals"
     return Question(
         key="terminal-velocity-explained",
         text=f"{what} Soon it falls at a constant velocity.",
         givens=(),
         parts=(ExplainPart(
             "Explain, in terms of the forces on it, why it reaches a constant (terminal) velocity.",
-            f"At first the speed is small, so {drag_name} is small and the resultant force is "
-            f"downwards: it accelerates. As its speed increases, {drag_name} increases, while "
+            f"At first the speed of {body} is small, so {drag_name} is small and the resultant force is "
+            f"downwards: {body} accelerates. As its speed increases, {drag_name} increases, while "
             f"{constant} {'stay' if upthrust else 'stays'} the same. So the resultant force decreases, "
             "and so does the acceleration. "
-            f"When the drag{' and the upthrust together' if upthrust else ''} equal the weight, the "
-            "resultant force is zero, the acceleration is zero, and the velocity stays constant: "
-            "this is the terminal velocity."),),
+            f"When {balance} the weight of {body}, the resultant force is zero, the acceleration is "
+            "zero, and the velocity stays constant: this is the terminal velocity."),),
         mark_scheme=(
             Mark(f"{drag_name[0].upper()}{drag_name[1:]} increases as the speed increases "
                  f"({constant} constant)", "B1", "a"),

@@ -148,7 +148,8 @@ def elastic_or_not_choice(situation: float = 0) -> Question:
     speeds = f"approach {w(approach)} {PER_S}, separation {w(separation)} {PER_S}"
     plain_energy, plain_speeds = textformat.to_plain(energy), speeds.replace(PER_S, _PER_S_PLAIN)
     if elastic:
-        key = Option("It is elastic: the relative speed of separation equals the relative speed of approach.")
+        key = Option(f"It is elastic: the relative speed of separation of the {body}s equals their relative "
+                     "speed of approach.")
         wrong = (
             Option(f"It is inelastic: {body} A loses kinetic energy in the collision.",
                    "looked at one body's kinetic energy",
@@ -158,15 +159,17 @@ def elastic_or_not_choice(situation: float = 0) -> Question:
                    "kinetic energy lost in every collision",
                    "Not in every collision: in an elastic one the total kinetic energy is kept. Compare "
                    f"the totals, or the relative speeds ({plain_speeds})."),
-            Option("It is inelastic: the relative speeds of approach and separation do not add up to zero.",
+            Option(f"It is inelastic: the relative speeds of approach and separation of the {body}s do not add "
+                   "up to zero.",
                    "approach + separation = 0",
                    "Relative speeds are sizes, so they never add to zero. The test for an elastic "
                    f"collision is that they are equal: {plain_speeds}."),
         )
     else:
-        key = Option("It is inelastic: the total kinetic energy after the collision is less than before.")
+        key = Option(f"It is inelastic: the total kinetic energy of the {body}s after the collision is less "
+                     "than before.")
         wrong = (
-            Option("It is elastic: the total momentum is the same before and after.",
+            Option(f"It is elastic: the total momentum of the {body}s is the same before and after.",
                    "momentum conserved, so elastic",
                    "Momentum is conserved in every collision, elastic or not, so it cannot decide. "
                    f"Compare the total kinetic energy: {plain_energy}."),
@@ -231,15 +234,15 @@ def stick_energy_choice(m1: float = 2.0, u1: float = 4.0, m2: float = 1.0, speed
             ("You worked out the kinetic energy after with A's mass only. The trolleys move together "
              "afterwards: use ½(m₁ + m₂)v²."))}
     options, answer = choices_in_order(key, {
-        "forgot B's direction": (
+        "kinetic energy conserved": (
+            0.0,
+            ("Kinetic energy is conserved only in an elastic collision. Trolleys that stick together "
+            "always lose some: work out the total before and after.")),
+        "momentum added as scalars": (
             before - total_kinetic_energy((m1 + m2,), (same_way,)),
             ("You gave B's velocity the same sign as A's. They move towards each other, so B's momentum "
             "is negative: the common velocity is (m₁u₁ − m₂u₂) / (m₁ + m₂)."), "momentum"),
         **forgot_b,
-        "kinetic energy taken as conserved": (
-            0.0,
-            ("Kinetic energy is conserved only in an elastic collision. Trolleys that stick together "
-            "always lose some: work out the total before and after.")),
         "total kinetic energy before given": (
             before,
             ("That is the total kinetic energy before the collision. The energy transferred is the "
@@ -406,9 +409,15 @@ def sticking_energy_lost(m1: float = 0.80, u1: float = 3.0, m2: float = 1.2) -> 
             Part("speed just after the collision", v, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
                  revisit="Momentum is conserved: m₁u₁ = (m₁ + m₂)v, with the mass of both trolleys after.",
                  mistakes=(
-                     Mistake("divided by B's mass only", velocity_from_momentum(momentum(m1, u1), m2),
-                             "After sticking, both trolleys move together: divide the momentum by the "
-                             "total mass.", see="momentum"),
+                     Mistake("one body's mass used for both", velocity_from_momentum(momentum(m1, u1), m2),
+                             "You divided by B's mass only. After sticking, both trolleys move together: "
+                             "divide the momentum by the total mass.", see="momentum"),
+                     # ½m₁u₁² = ½(m₁ + m₂)v²: sticking is inelastic, "(initial EK > final EK) so inelastic"
+                     # (9702/23/O/N/17 Q3(b)(iii)); wrong physics, so it keeps no mark (XP, 9702/22/M/J/20)
+                     Mistake("kinetic energy conserved", u1 * math.sqrt(m1 / (m1 + m2)),
+                             "You set the kinetic energy after equal to the kinetic energy before. Trolleys "
+                             "that stick together always lose kinetic energy: use momentum, m₁u₁ = "
+                             "(m₁ + m₂)v.", see="kinetic-energy"),
                  ), see="conservation"),
             Part("total kinetic energy just after", after, "J", "energy", shown_sig_figs=2,
                  ecf=Ecf(sympy.Rational(1, 2) * (sym_m1 + sym_m2) * sym_a**2, {"m_a": m1, "m_b": m2}),
@@ -425,6 +434,10 @@ def sticking_energy_lost(m1: float = 0.80, u1: float = 3.0, m2: float = 1.2) -> 
                  mistakes=(
                      Mistake("gave the kinetic energy before", before,
                              "That is the kinetic energy before. Subtract the kinetic energy after."),
+                     Mistake("kinetic energy conserved", 0.0,
+                             "Kinetic energy is conserved only in an elastic collision. Trolleys that "
+                             "stick together always lose some: subtract the total after from the total "
+                             "before."),
                  ), see="kinetic-energy"),
         ),
         mark_scheme=(

@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+import math
+
 import sympy
 
 from ..models import (
@@ -58,9 +60,9 @@ def trolley_pushed_from_rest(force: float = 5.0, mass: float = 2.0, duration: fl
                      Mistake("force divided by time", force / duration,
                              "You divided the force by the time. Force is the rate of change of "
                              "momentum, so the change in momentum is force × time: Δp = F Δt."),
-                     Mistake("force times mass", force * mass,
-                             "You multiplied the force by the mass. The change in momentum is "
-                             "force × time; the mass is only needed for the speed."),
+                     Mistake("speed given as momentum", velocity_from_momentum(p, mass),
+                             f"That is the speed, F Δt / m, in m s⁻¹. The final momentum is the change in "
+                             f"momentum, F Δt = {n(force, 2)} × {n(duration, 2)}, in N s.", see="momentum"),
                      Mistake("acceleration given as momentum", acceleration(force, mass),
                              "That is the acceleration, F/m. Momentum is found from Δp = F Δt."),
                      Mistake("kinetic energy instead of momentum", kinetic_energy(mass, v),
@@ -71,10 +73,13 @@ def trolley_pushed_from_rest(force: float = 5.0, mass: float = 2.0, duration: fl
                  revisit="Momentum = mass × velocity, so v = p / m.",
                  ecf=Ecf(a_answer / mass_symbol, {"mass": mass}),
                  mistakes=(
-                     Mistake("momentum times mass", p * mass,
-                             "You multiplied the momentum by the mass. p = mv, so v = p / m."),
-                     Mistake("mass over momentum", mass / p,
-                             "That is m / p, upside down. p = mv, so v = p / m."),
+                     # wrong physics (impulse is not energy): keeps no mark (XP, 9702/22/M/J/20 annotations)
+                     Mistake("impulse taken as kinetic energy", math.sqrt(2 * p / mass),
+                             "You set F Δt equal to ½mv². Force × time is the change in momentum, not "
+                             "energy (that is force × distance): v = Δp / m.", see="second-law"),
+                     Mistake("distance given as speed", 0.5 * acceleration(force, mass) * duration**2,
+                             f"That is the distance it travels in {n(duration, 2)} s, ½at², in m. The speed "
+                             "is v = p / m (or u + at).", see="second-law"),
                      Mistake("acceleration given as speed", acceleration(force, mass),
                              f"That is the acceleration, F/m, in m s⁻². The speed after {n(duration, 2)} s "
                              "is p / m (or u + at)."),
@@ -202,8 +207,9 @@ def car_stopping_time(mass: float = 900.0, speed: float = 12.0, force: float = 3
             Part("time to stop", duration, "s", "time", shown_sig_figs=2,
                  revisit="Force × time = change in momentum, so Δt = Δp / F.",
                  mistakes=(
-                     Mistake("force over momentum", force / dp,
-                             "That is F / Δp, upside down: Δt = Δp / F."),
+                     Mistake("stopping distance given as the time", kinetic_energy(mass, speed) / force,
+                             f"That is the stopping distance in m, from F s = ½mv². The time comes from "
+                             f"force × time = change in momentum: Δt = Δp / F = {m} × {v} / {f}."),
                      Mistake("mass over force", mass / force,
                              f"You left out the speed. The change in momentum is mv = {m} × {v}."),
                  ), see="second-law"),
@@ -261,8 +267,9 @@ def kick_force_time(peak: float = 200.0, rise: float = 0.01, hold: float = 0.03,
                  shown_sig_figs=2, ecf=Ecf(b_answer / mass_symbol, {"mass": mass}),
                  revisit="The ball starts at rest, so its momentum afterwards is the impulse: v = Δp / m.",
                  mistakes=(
-                     Mistake("impulse × mass", area * mass,
-                             "You multiplied the impulse by the mass. Δp = mv, so v = Δp / m.", see="momentum-time-graph"),
+                     Mistake("impulse taken as kinetic energy", math.sqrt(2 * area / mass),
+                             "You set the impulse equal to ½mv². The area under a force–time graph is the "
+                             "change in momentum, not energy: v = Δp / m.", see="momentum-time-graph"),
                      Mistake("force ÷ mass", acceleration(peak, mass),
                              "That is the largest acceleration, F / m, in m s⁻². The speed comes from "
                              "the change in momentum: v = Δp / m.", see="second-law"),

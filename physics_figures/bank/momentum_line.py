@@ -109,9 +109,14 @@ def trolleys_stick(m1: float = 2.0, u1: float = 3.0, m2: float = 1.0, speed2: fl
                  revisit="Momentum before = momentum after, with a minus sign for the trolley "
                          "moving the other way: m₁u₁ + m₂u₂ = (m₁ + m₂)v.",
                  mistakes=(
-                     Mistake("sign of the second trolley left out", no_sign,
+                     Mistake("momentum added as scalars", no_sign,
                              f"The {second} kg trolley moves the other way, so its momentum is negative: "
                              f"{first} × {n(u1, 2)} + {second} × (−{n(speed2, 2)}).", see="momentum"),
+                     # wrong physics: keeps no mark (9702/22/M/J/20, annotations: "XP ... No credit is
+                     # given for substitution, or subsequent arithmetic, in a physically incorrect equation")
+                     Mistake("one body's mass used for both", (momentum(m1, u1) - momentum(m2, speed2)) / m1,
+                             f"You divided by the {first} kg trolley's mass only. They move off together: "
+                             "divide the total momentum by the total mass, m₁ + m₂."),
                      Mistake("second trolley ignored", momentum(m1, u1) / (m1 + m2),
                              f"You left out the {second} kg trolley's momentum. It is moving, the other way.", see="momentum"),
                  ), see="conservation"),
@@ -205,11 +210,11 @@ def stick_choice(m1: float = 3.0, u1: float = 4.0, m2: float = 2.0, speed2: floa
                          f"(m1 u1 > m2 speed2; got m1={m1!r}, u1={u1!r}, m2={m2!r}, speed2={speed2!r})")
     key = stick_together(m1, u1, m2, -speed2)
     options, answer = choices_in_order(key, {
-        "sign of the oncoming body left out": (
+        "momentum added as scalars": (
             stick_together(m1, u1, m2, speed2),
             ("The second body moves the other way, so its momentum is negative. Momentum is a vector: "
              "give each velocity a sign."), "momentum"),
-        "divided by one mass": (
+        "one body's mass used for both": (
             (momentum(m1, u1) - momentum(m2, speed2)) / m1,
             ("The bodies move off together, so divide the total momentum by the total mass, "
              "m₁ + m₂."), "conservation"),

@@ -352,23 +352,24 @@ def lift_cable_choice(mass: float = 1200.0, a_size: float = 1.5, motion: float =
 #: Vehicles at a constant velocity: what moves, what gives its driving force, and the
 #: resistive forces on it (notes: Newton's first law, the car cruising at a steady speed).
 _CRUISERS = (
-    ("A car travels along a straight, level road at a constant velocity.", "the engine",
+    ("A car travels along a straight, level road at a constant velocity.", "the car", "the engine",
      "friction and air resistance"),
-    ("A cyclist pedals along a straight, level road at a constant velocity.", "the cyclist's pedalling",
-     "air resistance and friction"),
-    ("A ship sails in a straight line through calm water at a constant velocity.", "the propeller",
-     "the drag of the water and air resistance"),
-    ("An aeroplane flies horizontally in a straight line at a constant velocity.",
+    ("A cyclist pedals along a straight, level road at a constant velocity.", "the cyclist",
+     "the cyclist's pedalling", "air resistance and friction"),
+    ("A ship sails in a straight line through calm water at a constant velocity.", "the ship",
+     "the propeller", "the drag of the water and air resistance"),
+    ("An aeroplane flies horizontally in a straight line at a constant velocity.", "the aeroplane",
      "the thrust of its engines", "air resistance"),
-    ("A train travels along a straight, level track at a constant velocity.", "the motors",
+    ("A train travels along a straight, level track at a constant velocity.", "the train", "the motors",
      "friction and air resistance"),
 )
 
 
 def constant_velocity_explained(situation: float = 0) -> Question:
     """Describe and explain: why a driving force is still needed at constant velocity
-    (notes: Newton's first law; balanced forces mean at rest or constant velocity)."""
-    what, driver, resistive = _CRUISERS[int(situation)]
+    (notes: Newton's first law; balanced forces mean at rest or constant velocity). The model
+    answer names the variant's body, its driving force and its resistive forces (issue 25)."""
+    what, body, driver, resistive = _CRUISERS[int(situation)]
     return Question(
         key="constant-velocity-explained",
         text=f"{what} The driving force from {driver} acts on it all the time.",
@@ -376,11 +377,11 @@ def constant_velocity_explained(situation: float = 0) -> Question:
         parts=(ExplainPart(
             "Explain, using Newton's laws, why a driving force is still needed even though the "
             "velocity is constant.",
-            f"Resistive forces ({resistive}) act on it, opposite to its motion. At a constant "
+            f"Resistive forces ({resistive}) act on {body}, opposite to its motion. At a constant "
             "velocity the acceleration is zero, so by Newton's first (and second) law the resultant "
-            "force is zero. So the forward driving force must be equal in size to the resistive "
-            "forces, to cancel them. Without the driving force the resultant force would be "
-            "backwards, and it would slow down."),),
+            f"force on {body} is zero. So the forward driving force from {driver} must be equal in size "
+            "to the resistive forces, to cancel them. Without the driving force the resultant force "
+            f"would be backwards, and {body} would slow down."),),
         mark_scheme=(
             Mark(f"Resistive forces ({resistive}) act against the motion", "B1", "a"),
             Mark("constant velocity, so zero acceleration: the resultant force is zero (Newton's first law)",

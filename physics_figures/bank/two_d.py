@@ -65,9 +65,14 @@ def pucks_glancing(mass: float = 0.40, speed_before: float = 2.5, speed_after: f
                  revisit="Momentum is a vector: conserve the components along and across the "
                          "original line separately, then combine them with Pythagoras.",
                  mistakes=(
-                     Mistake("sizes subtracted", p_before - p_after,
+                     Mistake("momentum added as scalars", p_before - p_after,
                              "You subtracted the sizes. Momentum is a vector: resolve along and "
                              "across the line and conserve each.", see="conservation"),
+                     # 9702/21/M/J/16 Q2(a) marks each component on its own ("horizontal component
+                     # (= 12 cos 50°)", "vertical component (= 12 sin 50°)"); a swap is wrong physics (XP)
+                     Mistake("sin and cos swapped", missing_momentum(p_before, p_after, 90.0 - angle).magnitude,
+                             f"You swapped sin and cos. The angle is measured from A's original direction, so "
+                             f"A's component along that line is p cos {theta}° and across it p sin {theta}°."),
                      Mistake("across component only", b.across,
                              "That is only the component across the line. Combine it with the "
                              "component along the line: p = √(along² + across²)."),
@@ -100,7 +105,7 @@ def pucks_glancing(mass: float = 0.40, speed_before: float = 2.5, speed_after: f
 def glancing_speed_choice(m1: float = 0.20, speed_before: float = 3.0, m2: float = 0.30,
                           speed_after: float = 1.5, angle: float = 40.0) -> Question:
     """Paper 1 style: the speed of the struck puck after a glancing collision. Wrong options:
-    momentum treated as a scalar, sin and cos swapped, one component forgotten."""
+    momentum added as scalars, sin and cos swapped, one component forgotten."""
     if speed_after >= speed_before:
         raise ValueError(f"speed_after must be less than speed_before={speed_before!r} m s^-1: puck A "
                          f"cannot speed up by hitting a puck at rest (got speed_after={speed_after!r})")
@@ -112,7 +117,7 @@ def glancing_speed_choice(m1: float = 0.20, speed_before: float = 3.0, m2: float
     key = hit.speed_missing
     swapped = missing_momentum(p_before, p_after, 90.0 - angle)
     options, answer = choices_in_order(key, {
-        "momentum treated as a scalar": (
+        "momentum added as scalars": (
             velocity_after_collision(m1, speed_before, m2, 0.0, speed_after),
             ("You subtracted the sizes of the momenta as if A carried straight on. Momentum is a vector: "
             "conserve the components along and across A's first direction separately.")),
@@ -151,14 +156,27 @@ def glancing_speed_choice(m1: float = 0.20, speed_before: float = 3.0, m2: float
 
 
 _COMPASS = ("north of east", "south of west", "north of west", "south of east")
+#: Where the firework's first two pieces fly, by variant: the first along east-west, the second
+#: along north-south, so the third piece's direction is not the same in every variant (issue 25).
+_HEADINGS = (("east", "north"), ("west", "north"), ("east", "south"), ("west", "south"))
+_SIGN = {"east": 1.0, "west": -1.0, "north": 1.0, "south": -1.0}
+
+
+def _compass(east: float, north: float) -> str:
+    """The compass quadrant of a momentum from its signed components (east and north positive)."""
+    return f"{'north' if north > 0 else 'south'} of {'east' if east > 0 else 'west'}"
 
 
 def explosion_three_pieces(m1: float = 0.20, v1: float = 30.0, m2: float = 0.30, v2: float = 15.0,
-                           m3: float = 0.50) -> Question:
+                           m3: float = 0.50, heading: float = 0) -> Question:
     """Explosion into three pieces from rest (notes' variation): two at right angles, so the third
-    has momentum sqrt(p1² + p2²), opposite the resultant of the other two."""
+    has momentum sqrt(p1² + p2²), opposite the resultant of the other two. heading: which of
+    _HEADINGS the first two pieces fly along (0: east and north, the printed version)."""
+    first_way, second_way = _HEADINGS[int(heading)]
     p1, p2 = momentum(m1, v1), momentum(m2, v2)
-    size, angle = from_components(p1, p2)  # the first two together: the third is equal and opposite
+    east, north = _SIGN[first_way] * p1, _SIGN[second_way] * p2  # the first two pieces together
+    size, angle = from_components(p1, p2)  # the third is equal and opposite: the same size and angle
+    resultant_way, third_way = _compass(east, north), _compass(-east, -north)
     speed = velocity_from_momentum(size, m3)
     speeds_size, speeds_angle = from_components(v1, v2)
     upside_down = from_components(p2, p1)[1]
@@ -166,11 +184,11 @@ def explosion_three_pieces(m1: float = 0.20, v1: float = 30.0, m2: float = 0.30,
     sym_a, sym_m3 = sympy.symbols("a m_c")
     return Question(
         key="explosion-three-pieces",
-        text=(f"A firework shell at rest explodes into three pieces. A piece of mass {ma} kg flies due east "
-              f"at {ua} {PER_S}, and a piece of mass {mb} kg flies due north at {ub} {PER_S}. The third "
-              f"piece has mass {mc} kg. Calculate, for the third piece, (a) the size of its momentum, "
-              "(b) its speed and (c) the angle its direction makes with due west or due east, giving "
-              "the direction (for example, south of west)."),
+        text=(f"A firework shell at rest explodes into three pieces. A piece of mass {ma} kg flies due "
+              f"{first_way} at {ua} {PER_S}, and a piece of mass {mb} kg flies due {second_way} at {ub} "
+              f"{PER_S}. The third piece has mass {mc} kg. Calculate, for the third piece, (a) the size of "
+              "its momentum, (b) its speed and (c) the angle its direction makes with the east–west line, "
+              "and state its direction."),
         givens=(Given("mass 1", m1, "kg", 2), Given("speed 1", v1, "m s^-1", 2), Given("mass 2", m2, "kg", 2),
                 Given("speed 2", v2, "m s^-1", 2), Given("mass 3", m3, "kg", 2)),
         parts=(
@@ -179,7 +197,7 @@ def explosion_three_pieces(m1: float = 0.20, v1: float = 30.0, m2: float = 0.30,
                  revisit="The total momentum stays zero: the third piece's momentum is equal and opposite "
                          "to the resultant of the other two, √(p₁² + p₂²) for two at right angles.",
                  mistakes=(
-                     Mistake("momenta added as scalars", p1 + p2,
+                     Mistake("momentum added as scalars", p1 + p2,
                              "You added the sizes. The two momenta are at right angles: add them as "
                              "vectors, with Pythagoras."),
                      Mistake("momenta subtracted", abs(p1 - p2),
@@ -195,21 +213,21 @@ def explosion_three_pieces(m1: float = 0.20, v1: float = 30.0, m2: float = 0.30,
                              "momenta, then divide by the third piece's mass.", see="conservation"),
                  ), see="momentum"),
             Part("angle of the third piece's direction", angle, "°", "angle", units="° (degrees)",
-                 shown_sig_figs=3, direction="choice", choices=_COMPASS, answer_direction="south of west",
+                 shown_sig_figs=3, direction="choice", choices=_COMPASS, answer_direction=third_way,
                  direction_hint="The third piece's momentum cancels the other two: it points opposite to "
-                                "their resultant, which is north of east.",
-                 revisit="tan θ = (northward momentum) / (eastward momentum); the third piece moves the "
+                                f"their resultant, which is {resultant_way}.",
+                 revisit="tan θ = (north–south momentum) / (east–west momentum); the third piece moves the "
                          "opposite way to the resultant of the other two.",
                  mistakes=(
                      Mistake("tan the wrong way up", upside_down,
-                             "You measured the angle from north–south. tan θ = (northward momentum) / "
-                             "(eastward momentum) gives the angle from east–west."),
+                             "You measured the angle from north–south. tan θ = (north–south momentum) / "
+                             "(east–west momentum) gives the angle from east–west."),
                      Mistake("used the speeds", speeds_angle,
                              "You used the speeds. The direction comes from the momenta, which include "
                              "the masses."),
                      Mistake("same direction as the other two", angle,
                              "That is the direction of the other two pieces' resultant. The total is "
-                             "zero, so the third piece moves the opposite way.", direction="north of east"),
+                             "zero, so the third piece moves the opposite way.", direction=resultant_way),
                  ), see="two-d"),
         ),
         mark_scheme=(
@@ -219,7 +237,9 @@ def explosion_three_pieces(m1: float = 0.20, v1: float = 30.0, m2: float = 0.30,
             Mark(f"= {n(speed, 2)} {PER_S}", "A1", "b"),
             Mark(f"tan θ = {w(p2)} / {w(p1)}", "C1", "c"),
             Mark(f"θ = {n(angle, 3)}°", "A1", "c"),
-            Mark("south of west (opposite to the resultant of the other two)", "B1", "c", earns="direction"),
+            # the direction's own B1, as 9702/21/M/J/16 Q3(b)(ii): "(direction of force is) upwards/up B1"
+            Mark(f"{third_way} (opposite to the resultant of the other two, {resultant_way})", "B1", "c",
+                 earns="direction"),
         ),
     )
 
@@ -250,7 +270,7 @@ def skaters_stick_right_angles(m1: float = 70.0, u1: float = 4.0, m2: float = 50
                  revisit="Add the momenta as vectors (Pythagoras: they are at right angles), then divide "
                          "by the total mass.",
                  mistakes=(
-                     Mistake("momenta added as scalars", stick_together(m1, u1, m2, u2),
+                     Mistake("momentum added as scalars", stick_together(m1, u1, m2, u2),
                              "You added the momenta as if the skaters moved along one line. They move at "
                              "right angles: combine the momenta with Pythagoras."),
                      Mistake("Pythagoras on the speeds", from_components(u1, u2)[0],
@@ -323,7 +343,7 @@ def oblique_wall_bounce(mass: float = 0.060, speed: float = 20.0, angle: float =
                  shown_sig_figs=2,
                  revisit="Resolve: the angle is to the wall, so the component at right angles to it is p sin θ.",
                  mistakes=(
-                     Mistake("used cos", along,
+                     Mistake("sin and cos swapped", along,
                              f"That is the component along the wall. The angle {theta}° is measured from "
                              "the wall, so the component at right angles to it is p sin θ."),
                  ), see="two-d"),
@@ -338,7 +358,7 @@ def oblique_wall_bounce(mass: float = 0.060, speed: float = 20.0, angle: float =
                      Mistake("forgot the reversal", across,
                              "The component at right angles to the wall reverses: it changes by twice its "
                              "size, 2p sin θ."),
-                     Mistake("used cos", oblique_bounce_momentum_change(p, 90.0 - angle),  # 2p cos θ
+                     Mistake("sin and cos swapped", oblique_bounce_momentum_change(p, 90.0 - angle),  # 2p cos θ
                              "You doubled the component along the wall, which does not change. Double the "
                              "component at right angles to it, p sin θ."),
                  ), see="two-d"),
@@ -383,7 +403,7 @@ TEMPLATES = (
     Template("explosion-three-pieces", "two-d", ("numeric",), "A firework explodes", explosion_three_pieces,
              {"m1": Draw(0.20, 0.10, 0.50, 0.05), "v1": Draw(30.0, 10.0, 50.0, 5.0),
               "m2": Draw(0.30, 0.10, 0.50, 0.05), "v2": Draw(15.0, 10.0, 50.0, 5.0),
-              "m3": Draw(0.50, 0.20, 1.00, 0.10)}),
+              "m3": Draw(0.50, 0.20, 1.00, 0.10), "heading": Draw(0, 0, len(_HEADINGS) - 1, 1)}),
     Template("skaters-stick-right-angles", "two-d", ("numeric",), "Skaters at right angles",
              skaters_stick_right_angles,
              {"m1": Draw(70.0, 50.0, 100.0, 5.0), "u1": Draw(4.0, 2.0, 8.0, 0.5),

@@ -371,7 +371,7 @@ def pucks_on_an_air_table() -> Question:
                          {"mass_x": m_x, "speed_x": v_x, "mass_y": m_y}),
                  revisit="Kinetic energy is a scalar: add ½mv² for X and for Y after the collision.",
                  mistakes=(
-                     Mistake("kinetic energy taken as conserved", pucks.kinetic_energy_before,
+                     Mistake("kinetic energy conserved", pucks.kinetic_energy_before,
                              "That is the kinetic energy before. Kinetic energy is conserved only in "
                              "an elastic collision, which is what you are testing: work it out from "
                              "the speeds after."),

@@ -333,6 +333,12 @@ class Skydive:
         """Time the canopy is fully open, s: parachute_opens_at + opening_duration."""
         return self.parachute_opens_at + self.opening_duration
 
+    @property
+    def speed_at_opening(self) -> float:
+        """Speed when the parachute starts to open, m s^-1: v_t1 tanh(g t_open / v_t1), the
+        speed the canopy has to stop (faster than the speed at D, where the deceleration peaks)."""
+        return float(self.opening.velocity[0])
+
     def drag_constant_at(self, t):
         """Drag constant k at time t (s, scalar or array), kg m^-1."""
         return _scalar_or_array(_canopy_k(np.asarray(t, dtype=float) - self.parachute_opens_at,

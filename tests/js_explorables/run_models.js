@@ -24,6 +24,8 @@ function run(c) {
       points: dive.points,
       pointDrag: dive.pointDrag,
       pointAcceleration: dive.pointAcceleration,
+      speedAtOpening: dive.speedAtOpening,
+      openingJolt: models.openingJolt(dive),
       velocity: at(dive.velocityAt),
       dragConstant: at(dive.dragConstantAt),
       drag: at(dive.dragAt),

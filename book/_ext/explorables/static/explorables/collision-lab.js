@@ -17,13 +17,6 @@
     explosion: "Explosion from rest (pushed apart)",
   };
 
-  /** Fill a template "{name}" from physics_figures.explorables.REFUSALS (3 s.f., as Python does). */
-  function fill(template, numbers) {
-    return template.replace(/\{(\w+)\}/g, function (all, name) {
-      return fmt(numbers[name]);
-    });
-  }
-
   function build(root, data) {
     var kind = data.kind;
     var title = el("p", { class: "ex-title", id: X.nextId("title") }, "Explore: a collision lab");
@@ -245,7 +238,7 @@
       var text;
       if (lab.refusal) {
         verdict.className = "ex-verdict ex-refused";
-        verdict.textContent = X.joinUnits(fill(data.refusals[lab.refusal], lab.numbers));
+        verdict.textContent = X.joinUnits(X.fill(data.refusals[lab.refusal], lab.numbers));
         text = "Refused. " + verdict.textContent;
       } else {
         verdict.className = "ex-verdict";

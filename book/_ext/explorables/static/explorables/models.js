@@ -204,6 +204,8 @@
       parachuteOpensAt: tOpen,
       openingDuration: tau,
       parachuteOpenAt: tOpen + tau,
+      // the speed the canopy starts to open at (faster than at D, where the deceleration peaks)
+      speedAtOpening: vOpen,
       terminalVelocityFreefall: vt1,
       terminalVelocityParachute: vt2,
       dragConstantFreefall: k1,
@@ -219,6 +221,20 @@
       dragAt: dragAt,
       resultantForceAt: resultantForceAt,
       accelerationAt: accelerationAt,
+    };
+  }
+
+  /**
+   * The numbers the explorer's "Unrealistic" warning quotes (twin:
+   * physics_figures.explorables.opening_jolt): the largest deceleration in g (at D), the
+   * speed the parachute starts to open at and the time it takes to fill. The keys are the
+   * placeholders of physics_figures.explorables.UNREALISTIC_OPENING.
+   */
+  function openingJolt(dive) {
+    return {
+      in_g: -dive.pointAcceleration.D / dive.g,
+      speed_at_opening: dive.speedAtOpening,
+      opening_duration: dive.openingDuration,
     };
   }
 
@@ -407,6 +423,7 @@
     openCanopy: openCanopy,
     OPENING_STEPS: OPENING_STEPS,
     skydive: skydive,
+    openingJolt: openingJolt,
     totalMomentum: totalMomentum,
     totalKineticEnergy: totalKineticEnergy,
     relativeSpeed: relativeSpeed,

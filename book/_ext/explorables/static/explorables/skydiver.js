@@ -228,18 +228,9 @@
       LABELS.forEach(function (label) {
         buttons[label].hidden = !(label in p);
       });
+      // the words and the 15 g limit come from physics_figures.explorables, the numbers from the model
       warning.textContent = X.joinUnits(
-        inG > data.unrealisticDecelerationInG
-          ? "Unrealistic: " +
-              fmt(inG, { sf: 2 }) +
-              " g would injure the skydiver. A canopy that fills in only " +
-              fmt(dive.openingDuration, { sf: 2 }) +
-              " s at " +
-              fmt(p.D[1]) +
-              " " +
-              MS +
-              " jerks them to a stop far too hard; real parachutes are made to open over two or three seconds, which keeps the deceleration to a few g."
-          : "",
+        inG > data.unrealisticDecelerationInG ? X.fill(data.unrealisticOpening, M.openingJolt(dive)) : "",
       );
 
       drawGraphs(duration);

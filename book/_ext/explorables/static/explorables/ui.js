@@ -66,6 +66,13 @@
       : formatNumber(x, opts.sf || 3);
   }
 
+  /** Fill "{name}" in a text of physics_figures.explorables with numbers to 3 s.f., as Python does. */
+  function fill(template, numbers) {
+    return template.replace(/\{(\w+)\}/g, function (all, name) {
+      return fmt(numbers[name]);
+    });
+  }
+
   /** A tick value with as many places as the spacing of `all` the ticks needs: 5, 0.5, 10 000. */
   function tickText(v, all) {
     var step = all.length > 1 ? all[1] - all[0] : 1;
@@ -474,6 +481,7 @@
     el: el,
     svg: svg,
     fmt: fmt,
+    fill: fill,
     joinUnits: window.Notation.joinUnits,
     MINUS: MINUS,
     Quantity: Quantity,

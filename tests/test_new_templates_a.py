@@ -11,14 +11,16 @@ answer, which has no unit, in the browser's marker and in Moodle.
 
 from __future__ import annotations
 
+import json
 import math
+import subprocess
 import xml.etree.ElementTree as ET
+from pathlib import Path
 
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from moodle_format import check_file
-from test_questions_engine import mark_all
 
 from physics_figures import bank
 from physics_figures.models import (
@@ -32,6 +34,16 @@ from physics_figures.worksheets import moodle as moodle_export
 NEW = {"sticking-fraction-lost": "elastic", "bounce-energy-ratio": "elastic",
        "headed-ball-force-speed": "force-momentum", "mass-from-momentum-change": "force-momentum",
        "stopping-force-distance": "newton", "collision-third-law": "momentum-line"}
+
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def mark_all(cases: list[dict]) -> list[dict]:
+    """The browser's marker (tests/js/mark_cases.js) under Node, on {part, answer} cases."""
+    result = subprocess.run(["node", str(ROOT / "tests" / "js" / "mark_cases.js")], input=json.dumps(cases),
+                            check=True, capture_output=True, text=True, timeout=120)
+    return json.loads(result.stdout)
 
 
 def printed(key: str):

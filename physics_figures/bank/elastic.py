@@ -528,8 +528,9 @@ def sticking_fraction_lost(m1: float = 3.0, u1: float = 4.0, m2: float = 1.0) ->
 def bounce_energy_ratio(m1: float = 0.20, u1: float = 3.0, m2: float = 0.60, back: float = 0.60) -> Question:
     """The kinetic energy after a collision as a ratio of that before: a light ball bounces back
     off a heavier one at rest (notes, "Elastic and inelastic collisions": to decide, compare the
-    total kinetic energy before and after). The scheme's lines follow 9702/21/M/J/15 Q2(b)
-    (momentum, then "total initial kinetic energy not equal to the total final kinetic energy")
+    total kinetic energy before and after). The scheme's lines follow 9702/21/M/J/15 Q3(b), the
+    collision of balls X and Y ("total initial kinetic energy not equal to the total final kinetic
+    energy … so not elastic or is inelastic")
     and 9702/23/M/J/16 Q3(b)(iii) (KE = ½mv² C1 … C1 … A1)."""
     if m2 <= m1:
         raise ValueError(f"m2 must be heavier than m1, so the first ball bounces back (got m1={m1!r}, m2={m2!r})")

@@ -191,7 +191,7 @@ def _check_numerical(question, where) -> list[str]:
         if high < low:
             problems.append(f"{where}: the answer {other} has a negative tolerance")
     units = [u.findtext("unit_name") for u in question.findall("units/unit")]
-    if not units:
+    if not units and question.findtext("showunits") != "3":  # 3: no units, for a ratio
         problems.append(f"{where}: no unit")
     problems += [f"{where}: unit {u!r} has a space" for u in units if u is None or " " in u]
     return problems

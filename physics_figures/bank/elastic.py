@@ -12,6 +12,7 @@ from ..models import (
     elastic_collision,
     kinetic_energy,
     momentum,
+    percentage_kinetic_energy_lost,
     relative_speed,
     stick_together,
     total_kinetic_energy,
@@ -31,10 +32,11 @@ from ..questions import (
     Option,
     Part,
     Question,
+    Step,
     choices_in_order,
 )
 from ..variants import Draw, Template
-from ._common import M_S, PER_S, w
+from ._common import M_S, PER_S, enough_figures, w
 
 #: A unit for feedback, which the page shows as plain text.
 _PER_S_PLAIN = "m s⁻¹"
@@ -451,6 +453,170 @@ def sticking_energy_lost(m1: float = 0.80, u1: float = 3.0, m2: float = 1.2) -> 
     )
 
 
+#: A ratio of two energies has no unit: the marker takes a bare number, or a percentage with %.
+_NO_UNIT = "no unit (a number), or a percentage with %"
+#: Symbols of the ratio templates' error carried forward.
+a_answer, mass_1, speed_1, mass_2, speed_back = sympy.symbols("a mass_1 speed_1 mass_2 speed_back")
+
+
+def _percentage_without_sign(value: float, what: str) -> Mistake:
+    """The ratio written as a percentage with the % sign left off (a slip of a factor of 100)."""
+    return Mistake("percentage without %", 100 * value,
+                   f"That is the {what} as a percentage, written without its % sign. Give it as a number, "
+                   f"{n(value, 2)}, or as {n(100 * value, 2)} %.", kind="slip")
+
+
+def sticking_fraction_lost(m1: float = 3.0, u1: float = 4.0, m2: float = 1.0) -> Question:
+    """Kinetic energy lost as a fraction, when two trolleys stick (notes, "Elastic and inelastic
+    collisions": 3.0 kg at 4.0 m s^-1 hits 1.0 kg at rest, 3.0 m s^-1 together, 24 J -> 18 J, so
+    6.0 J, 25 % of it, is transferred; How to do it 5., "Percentage of kinetic energy lost").
+    The scheme's lines follow 9702/23/M/J/16 Q3(b)(iii) (KE = ½mv² C1 … change in kinetic energy
+    C1 … A1); a ratio is accepted as a decimal or a percentage, as in 9702/22/O/N/16 Q5(b)(iv)
+    ("= 0.88 or 88 % A1")."""
+    v = stick_together(m1, u1, m2, 0.0)
+    before = kinetic_energy(m1, u1)
+    after = kinetic_energy(m1 + m2, v)
+    fraction = percentage_kinetic_energy_lost(before, after) / 100
+    ma, mb, ua, total = n(m1, 2), n(m2, 2), n(u1, 2), w(m1 + m2)
+    shown = n(fraction, 2)
+    # the energies with the figures the fraction needs, and the speed with the figures they need
+    e_before, e_after = enough_figures((before, after), lambda b, a: (b - a) / b, shown)
+    (v_carried,) = enough_figures((v,), lambda speed: kinetic_energy(m1 + m2, speed), e_after)
+    return Question(
+        key="sticking-fraction-lost",
+        text=(f"Trolley A, of mass {ma} kg, moves at {ua} {PER_S} along a level track and hits trolley B, of "
+              f"mass {mb} kg, which is at rest. The trolleys stick together. Calculate (a) their speed just after "
+              "the collision and (b) the fraction of the kinetic energy of A that is transferred to other "
+              "forms in the collision. Give (b) as a decimal or as a percentage."),
+        givens=(Given("mass of A", m1, "kg", 2), Given("speed of A", u1, "m s^-1", 2),
+                Given("mass of B", m2, "kg", 2)),
+        parts=(
+            Part("speed just after the collision", v, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
+                 revisit="Momentum is conserved: m₁u₁ = (m₁ + m₂)v, with the mass of both trolleys after.",
+                 mistakes=(
+                     Mistake("the mass of one body used for both", velocity_from_momentum(momentum(m1, u1), m1),
+                             f"You used A's mass for the pair after the collision. The trolleys move together: "
+                             f"{ma} × {ua} = ({ma} + {mb})v.", see="momentum"),
+                     Mistake("kinetic energy conserved", u1 * math.sqrt(m1 / (m1 + m2)),
+                             "You set the kinetic energies before and after equal. Trolleys that stick together "
+                             "always lose kinetic energy: use momentum, which is conserved.",
+                             see="kinetic-energy"),
+                 ), see="conservation"),
+            Part("fraction of the kinetic energy transferred", fraction, "", "fraction", units=_NO_UNIT,
+                 shown_sig_figs=2,
+                 working=(Step("common speed", v, "m s^-1", 2),),
+                 answer_from=lambda speed: percentage_kinetic_energy_lost(before, kinetic_energy(m1 + m2, speed))
+                 / 100,
+                 ecf=Ecf(1 - (mass_1 + mass_2) * a_answer**2 / (mass_1 * speed_1**2),
+                         {"mass_1": m1, "speed_1": u1, "mass_2": m2}),
+                 revisit="Fraction lost = (kinetic energy before − kinetic energy after) / kinetic energy "
+                         "before, with ½mv² for each.",
+                 mistakes=(
+                     Mistake("kinetic energy conserved", 0.0,
+                             "Kinetic energy is conserved only in an elastic collision. Trolleys that stick "
+                             "together always lose some: work out ½mv² before and after."),
+                     Mistake("fraction kept, not lost", after / before,
+                             "That is the fraction of the kinetic energy that is kept, after / before. The "
+                             "fraction transferred is (before − after) / before."),
+                     Mistake("lost as a fraction of the energy after", (before - after) / after,
+                             "You divided the energy lost by the kinetic energy after. A fraction of the "
+                             "kinetic energy before is (before − after) / before."),
+                     Mistake("A's mass only after", percentage_kinetic_energy_lost(before, kinetic_energy(m1, v))
+                             / 100,
+                             "You worked out the kinetic energy after with A's mass only. Both trolleys move "
+                             "afterwards: ½(m₁ + m₂)v²."),
+                     _percentage_without_sign(fraction, "fraction"),
+                 ), see="kinetic-energy"),
+        ),
+        mark_scheme=(
+            Mark(f"{ma} × {ua} = {total}v", "C1", "a"),
+            Mark(f"v = {n(v, 2)} {PER_S}", "A1", "a"),
+            Mark(f"E<sub>k</sub> before = ½ × {ma} × {ua}<sup>2</sup> = {e_before} J; after = ½ × {total} × "
+                 f"{v_carried}<sup>2</sup> = {e_after} J", "C1", "b"),
+            Mark(f"fraction = ({e_before} − {e_after}) / {e_before} = {shown}, or {n(100 * fraction, 2)} %", "A1", "b"),
+        ),
+    )
+
+
+def bounce_energy_ratio(m1: float = 0.20, u1: float = 3.0, m2: float = 0.60, back: float = 0.60) -> Question:
+    """The kinetic energy after a collision as a ratio of that before: a light ball bounces back
+    off a heavier one at rest (notes, "Elastic and inelastic collisions": to decide, compare the
+    total kinetic energy before and after). The scheme's lines follow 9702/21/M/J/15 Q3(b), the
+    collision of balls X and Y ("total initial kinetic energy not equal to the total final kinetic
+    energy … so not elastic or is inelastic")
+    and 9702/23/M/J/16 Q3(b)(iii) (KE = ½mv² C1 … C1 … A1)."""
+    if m2 <= m1:
+        raise ValueError(f"m2 must be heavier than m1, so the first ball bounces back (got m1={m1!r}, m2={m2!r})")
+    v1 = -back  # positive: A's first direction
+    v2 = velocity_after_collision(m1, u1, m2, 0.0, v1)
+    before = kinetic_energy(m1, u1)
+    after = total_kinetic_energy((m1, m2), (v1, v2))
+    if after > before:
+        raise ValueError(f"back={back!r} m s^-1 would create kinetic energy ({n(before, 3)} J before, "
+                         f"{n(after, 3)} J after)")
+    ratio = after / before
+    ma, mb, ua, vb = n(m1, 2), n(m2, 2), n(u1, 2), n(back, 2)
+    shown = n(ratio, 2)
+    e_before, e_after = enough_figures((before, after), lambda b, a: a / b, shown)
+    (v2_carried,) = enough_figures((v2,), lambda speed: total_kinetic_energy((m1, m2), (back, speed)), e_after)
+    return Question(
+        key="bounce-energy-ratio",
+        text=(f"Ball A, of mass {ma} kg, moving at {ua} {PER_S}, hits ball B, of mass {mb} kg, head-on. B was at "
+              f"rest. After the collision A bounces straight back at {vb} {PER_S}. Calculate (a) the speed of B "
+              "just after the collision and (b) the ratio (total kinetic energy after the collision) / (total "
+              "kinetic energy before the collision). Give (b) as a decimal or as a percentage."),
+        givens=(Given("mass of A", m1, "kg", 2), Given("speed of A", u1, "m s^-1", 2),
+                Given("mass of B", m2, "kg", 2), Given("speed of A after", back, "m s^-1", 2)),
+        parts=(
+            Part("speed of B just after the collision", v2, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
+                 revisit="Momentum is conserved, with a sign on every velocity: A bounces back, so its "
+                         "velocity after is negative. m₁u₁ = m₁v₁ + m₂v₂.",
+                 mistakes=(
+                     Mistake("momentum added as scalars", velocity_after_collision(m1, u1, m2, 0.0, back),
+                             f"You gave A's velocity after the same sign as before. A bounces back, so its "
+                             f"momentum after is negative: {ma} × {ua} = {ma} × (−{vb}) + {mb}v.",
+                             see="momentum"),
+                     Mistake("changes in velocity taken as equal", u1 + back,
+                             "You gave B the same change in velocity as A. It is the changes in momentum that "
+                             "are equal and opposite: B's mass is different."),
+                     Mistake("as if A stopped", velocity_from_momentum(momentum(m1, u1), m2),
+                             "You gave B all of A's momentum, as if A stopped. A bounces back, so B gains "
+                             "more than that."),
+                 ), see="conservation"),
+            Part("ratio of the kinetic energy after to that before", ratio, "", "ratio", units=_NO_UNIT,
+                 shown_sig_figs=2,
+                 working=(Step("speed of B", v2, "m s^-1", 2),),
+                 answer_from=lambda speed: total_kinetic_energy((m1, m2), (back, speed)) / before,
+                 ecf=Ecf((mass_1 * speed_back**2 + mass_2 * a_answer**2) / (mass_1 * speed_1**2),
+                         {"mass_1": m1, "speed_1": u1, "mass_2": m2, "speed_back": back}),
+                 revisit="Total kinetic energy after (½mv² for each ball) ÷ total kinetic energy before.",
+                 mistakes=(
+                     Mistake("ratio inverted", before / after,
+                             "That is before / after, upside down. The ratio asked for is the kinetic energy "
+                             "after ÷ the kinetic energy before (less than 1: some is lost)."),
+                     Mistake("fraction lost given", (before - after) / before,
+                             "That is the fraction lost, (before − after) / before. The ratio asked for is "
+                             "after / before."),
+                     Mistake("kinetic energy conserved", 1.0,
+                             "Kinetic energy is conserved only in an elastic collision. Work out ½mv² for each "
+                             "ball after the collision and compare."),
+                     Mistake("A's kinetic energy only", kinetic_energy(m1, back) / before,
+                             "You left out B's kinetic energy after. Both balls move afterwards: add ½mv² for "
+                             "each."),
+                     _percentage_without_sign(ratio, "ratio"),
+                 ), see="kinetic-energy"),
+        ),
+        mark_scheme=(
+            Mark(f"Momentum: {ma} × {ua} = {ma} × (−{vb}) + {mb}v", "C1", "a"),
+            Mark(f"v = {n(v2, 2)} {PER_S}", "A1", "a"),
+            Mark(f"E<sub>k</sub> before = ½ × {ma} × {ua}<sup>2</sup> = {e_before} J; after = ½ × {ma} × "
+                 f"{vb}<sup>2</sup> + ½ × {mb} × {v2_carried}<sup>2</sup> = {e_after} J", "C1", "b"),
+            Mark(f"ratio = {e_after} / {e_before} = {shown}", "A1", "b"),
+        ),
+    )
+
+
+
 TEMPLATES = (
     Template("quick-check-4", "elastic", ("numeric",), "Quick check 4", light_ball_hits_heavy_ball,
              {"m1": Draw(1.0, 0.5, 2.0, 0.1), "u1": Draw(6.0, 2.0, 9.0, 0.5), "m2": Draw(2.0, 1.0, 5.0, 0.5)}),
@@ -469,4 +635,10 @@ TEMPLATES = (
     Template("sticking-energy-lost", "elastic", ("numeric",), "Energy lost when trolleys stick", sticking_energy_lost,
              {"m1": Draw(0.80, 0.40, 2.00, 0.10), "u1": Draw(3.0, 1.0, 5.0, 0.5),
               "m2": Draw(1.2, 0.4, 2.0, 0.1)}),
+    Template("sticking-fraction-lost", "elastic", ("numeric",), "Fraction of the kinetic energy lost",
+             sticking_fraction_lost,
+             {"m1": Draw(3.0, 0.5, 4.0, 0.5), "u1": Draw(4.0, 1.0, 6.0, 0.5), "m2": Draw(1.0, 0.5, 4.0, 0.5)}),
+    Template("bounce-energy-ratio", "elastic", ("numeric",), "Kinetic energy after ÷ before", bounce_energy_ratio,
+             {"m1": Draw(0.20, 0.10, 0.50, 0.05), "u1": Draw(3.0, 2.0, 6.0, 0.5),
+              "m2": Draw(0.60, 0.30, 1.50, 0.10), "back": Draw(0.60, 0.10, 2.0, 0.10)}),
 )

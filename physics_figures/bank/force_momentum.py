@@ -15,6 +15,7 @@ from ..models import (
     change_in_momentum,
     impulse,
     kinetic_energy,
+    mass_from_momentum_change,
     momentum,
     stream_force,
     time_for_momentum_change,
@@ -422,6 +423,137 @@ def bounce_force_choice(mass_g: float = 60.0, speed_in: float = 12.0, speed_out:
                           f"{n(contact, 2)} = {n(key, 2)} N", "B1"),),
     )
 
+
+#: A unit in feedback, which the page shows as plain text.
+_PER_S_PLAIN = "m s⁻¹"
+
+
+def headed_ball(change: float = 3.6, contact_ms: float = 12.0, mass: float = 0.43, speed_in: float = 3.0) -> Question:
+    """Force, then speed, from a given change in momentum: F = Δp/Δt, and a ball that turns round
+    has Δp = m(v + u) in size (notes, How to do it 3.; common mistake "wrong signs"). Lines as
+    9702/21/M/J/16 Q3(b)(ii): "change in momentum = 0.15 x (6.2 + 2.5) C1 ... force = 1.305 / 0.12
+    = 11 N A1", and 9702/21/M/J/22 Q1(b)(ii) for the change of a body that turns round."""
+    contact = contact_ms / 1000
+    force = average_force(change, contact)
+    # away from the head is positive: Δp = m v - m(-u), so v = Δp / m - u
+    speed_out = velocity_from_momentum(change, mass) - speed_in
+    if speed_out <= 0:
+        raise ValueError(f"change must exceed the ball's momentum before ({n(momentum(mass, speed_in), 3)} N s), "
+                         f"so it is sent back (got change={change!r})")
+    p, t_ms, t, m, u = n(change, 2), n(contact_ms, 2), n(contact, 2), n(mass, 2), n(speed_in, 2)
+    return Question(
+        key="headed-ball-force-speed",
+        text=(f"A football of mass {m} kg moving horizontally at {u} {PER_S} is headed straight back the way "
+              f"it came. The size of the change in the ball's momentum is {p} N s, and the player's head is "
+              f"in contact with the ball for {t_ms} ms. Calculate (a) the average force of the head on the "
+              "ball and (b) the speed of the ball just after it leaves the head."),
+        givens=(Given("change in momentum", change, "N s", 2), Given("contact time", contact_ms, "ms", 2),
+                Given("mass", mass, "kg", 2), Given("speed before", speed_in, "m s^-1", 2)),
+        parts=(
+            Part("average force on the ball", force, "N", "force", shown_sig_figs=2,
+                 revisit="Force is the rate of change of momentum: F = Δp / Δt, with the time in s.",
+                 mistakes=(
+                     Mistake("milliseconds not converted", change / contact_ms,
+                             f"You divided by {t_ms} instead of {t}: convert ms to s.", kind="slip"),
+                     Mistake("multiplied by the time", change * contact,
+                             "You multiplied the change in momentum by the time. Force is the rate of "
+                             "change of momentum: F = Δp / Δt."),
+                     Mistake("change in velocity given", velocity_from_momentum(change, mass),
+                             f"Dividing the change in momentum by the mass gives the change in velocity, in "
+                             f"m s⁻¹. The force is Δp / Δt = {p} / {t}.", unit="m s^-1", see="momentum"),
+                 ), see="second-law"),
+            Part("speed of the ball after it leaves the head", speed_out, "m s^-1", "speed", units=_M_S,
+                 shown_sig_figs=2,
+                 revisit="The ball turns round, so its velocities have opposite signs: Δp = mv − m(−u) = "
+                         "m(v + u), so v = Δp / m − u.",
+                 mistakes=(
+                     Mistake("momentum added as scalars", velocity_from_momentum(change, mass) + speed_in,
+                             f"You took Δp = m(v − u), as if the ball kept going the same way. It turns round: "
+                             f"give the velocity before a minus sign, so {p} = {m}(v + {u}).", see="momentum"),
+                     Mistake("the speed before left out", velocity_from_momentum(change, mass),
+                             f"Δp / m = {w(velocity_from_momentum(change, mass))} {_PER_S_PLAIN} is the change in "
+                             f"velocity. The ball arrived at {u} {_PER_S_PLAIN} the other way: v = Δp / m − u."),
+                 ), see="momentum"),
+        ),
+        mark_scheme=(
+            Mark(f"F = Δp / Δt = {p} / {t}", "C1", "a"),
+            Mark(f"= {n(force, 2)} N", "A1", "a"),
+            Mark(f"The ball turns round: Δp = m(v + u), so {p} = {m}(v + {u})", "C1", "b"),
+            Mark(f"v = {p} / {m} − {u} = {n(speed_out, 2)} {PER_S}", "A1", "b"),
+        ),
+    )
+
+
+dv_symbol = sympy.Symbol("velocity_change")
+
+
+def mass_from_velocity_change(force: float = 6.0, duration: float = 2.5, speed_before: float = 1.2,
+                              speed_after: float = 4.2, turns: float = 0) -> Question:
+    """Mass from a given change in momentum: Δp = FΔt, then m = Δp / Δv with signs (notes, How to
+    do it 3.; "Force x time = change in momentum"). turns: 0, the force acts along the motion and
+    speeds the body up; 1, it acts against the motion and sends the body back. Lines as
+    9702/21/M/J/16 Q3(b)(ii) (Δp C1, then the quantity worked from it A1)."""
+    back = bool(int(turns))
+    u = -speed_before if back else speed_before  # positive: the way the force acts
+    v = speed_after
+    if not back and speed_after <= speed_before:
+        raise ValueError(f"speed_after must exceed speed_before={speed_before!r} m s^-1 when the force acts "
+                         f"along the motion (got speed_after={speed_after!r})")
+    dp = impulse(force, duration)
+    mass = mass_from_momentum_change(dp, u, v)
+    if not 0.5 <= mass <= 10.0:  # a laboratory trolley or an ice puck, as the text says
+        raise ValueError(f"speed_after={speed_after!r} m s^-1 gives a mass of {n(mass, 2)} kg: the text's trolley "
+                         "or puck is 0.5 to 10 kg")
+    f, t, ub, va = n(force, 2), n(duration, 2), n(speed_before, 2), n(speed_after, 2)
+    if back:
+        motion = (f"A puck slides at {ub} {PER_S} to the left across smooth ice. A constant resultant force of "
+                  f"{f} N acts on it to the right for {t} s, and it then moves at {va} {PER_S} to the right.")
+        change_text = f"{va} − (−{ub})"
+        scalars = Mistake("momentum added as scalars", dp / abs(speed_after - speed_before),
+                          f"You subtracted the speeds. The puck turns round, so its velocity changes from −{ub} to "
+                          f"+{va} {_PER_S_PLAIN}: Δv = {va} + {ub}.", see="momentum")
+    else:
+        motion = (f"A trolley moves at {ub} {PER_S} along a straight, level track. A constant resultant force "
+                  f"of {f} N acts on it in its direction of motion for {t} s, and its speed rises to {va} {PER_S}.")
+        change_text = f"{va} − {ub}"
+        scalars = Mistake("speeds added", dp / (speed_after + speed_before),
+                          f"You added the speeds. Both velocities are in the same direction: Δv = {va} − {ub}.",
+                          see="momentum")
+    dv = v - u
+    return Question(
+        key="mass-from-momentum-change",
+        text=(f"{motion} Calculate (a) the change in its momentum and (b) its mass."),
+        givens=(Given("force", force, "N", 2), Given("duration", duration, "s", 2),
+                Given("speed before", speed_before, "m s^-1", 2), Given("speed after", speed_after, "m s^-1", 2)),
+        parts=(
+            Part("change in momentum", dp, "N s", "change in momentum", units=_N_S, shown_sig_figs=2,
+                 revisit="Force × time = change in momentum: Δp = FΔt.",
+                 mistakes=(
+                     Mistake("force divided by time", force / duration,
+                             "You divided the force by the time. Force is the rate of change of momentum, "
+                             "so Δp = F × Δt."),
+                 ), see="second-law"),
+            Part("mass", mass, "kg", "mass", shown_sig_figs=2,
+                 ecf=Ecf(a_answer / dv_symbol, {"velocity_change": dv}),
+                 revisit="Δp = mv − mu = m(v − u), with a sign on each velocity: m = Δp / (v − u).",
+                 mistakes=(
+                     scalars,
+                     Mistake("final velocity only", dp / speed_after,
+                             f"You divided by the final speed. The force changed the velocity from "
+                             f"{'−' if back else ''}{ub} to {va} {_PER_S_PLAIN}: divide by the change, v − u."),
+                     Mistake("upside down", dv / dp,
+                             "That is Δv / Δp, upside down. Δp = mΔv, so m = Δp / Δv."),
+                 ), see="momentum"),
+        ),
+        mark_scheme=(
+            Mark(f"Δp = FΔt = {f} × {t}", "C1", "a"),
+            Mark(f"= {n(dp, 2)} N s", "A1", "a"),
+            Mark(f"m = Δp / (v − u) = {w(dp)} / ({change_text})", "C1", "b"),
+            Mark(f"= {n(mass, 2)} kg", "A1", "b"),
+        ),
+    )
+
+
 TEMPLATES = (
     Template("quick-check-1", "force-momentum", ("numeric",), "Quick check 1",
              trolley_pushed_from_rest,
@@ -453,4 +585,13 @@ TEMPLATES = (
              bounce_force_choice,
              {"mass_g": Draw(60.0, 40.0, 200.0, 10.0), "speed_in": Draw(12.0, 8.0, 25.0, 1.0),
               "speed_out": Draw(8.0, 3.0, 15.0, 1.0), "contact_ms": Draw(25.0, 10.0, 50.0, 5.0)}),
+    Template("headed-ball-force-speed", "force-momentum", ("numeric",), "A header: force and speed from Δp",
+             headed_ball,
+             {"change": Draw(3.6, 2.0, 6.0, 0.1), "contact_ms": Draw(12.0, 8.0, 20.0, 1.0),
+              "mass": Draw(0.43, 0.40, 0.45, 0.01), "speed_in": Draw(3.0, 2.0, 8.0, 0.5)}),
+    Template("mass-from-momentum-change", "force-momentum", ("numeric",), "Mass from a change in momentum",
+             mass_from_velocity_change,
+             {"force": Draw(6.0, 2.0, 9.0, 0.5), "duration": Draw(2.5, 1.0, 5.0, 0.5),
+              "speed_before": Draw(1.2, 0.5, 3.0, 0.1), "speed_after": Draw(4.2, 2.0, 6.0, 0.1),
+              "turns": Draw(0, 0, 1, 1)}),
 )

@@ -9,6 +9,8 @@ import sympy
 
 from ..models import (
     MomentumHistory,
+    average_force,
+    change_in_momentum,
     explosion_from_rest,
     kinetic_energy,
     momentum,
@@ -312,6 +314,135 @@ def trolleys_spring_apart(mass_a: float = 1.5, mass_b: float = 0.50, speed_b: fl
     )
 
 
+mass_b_third, speed_b_third, contact_third = sympy.symbols("mass_b_third speed_b_third contact_third")
+
+
+def collision_third_law(mass_a: float = 0.60, speed_a: float = 2.5, mass_b: float = 0.40, speed_b: float = 0.0,
+                        after_a: float = 0.50, contact: float = 0.050) -> Question:
+    """Newton's third law inside a collision: the forces on A and B are equal and opposite and act
+    for the same time, so B gains the momentum A loses (notes, "Why it works": Δp_A = -Δp_B; How to
+    do it 5., "Contact force during the collision"). Printed: the notes' Example 3 (0.60 kg at
+    2.5 m s⁻¹ hits 0.40 kg at rest, A moves on at 0.50 m s⁻¹, 0.050 s: B 3.0 m s⁻¹, 24 N).
+    The scheme's lines follow 9702/21/M/J/15 Q3(c) ("force on X is equal and opposite to force on
+    Y (Newton III)" … "time of collision same for both balls hence change in momentum is the
+    same") and 9702/21/M/J/16 Q3(b)(ii) (Δp C1, then F = Δp / Δt A1)."""
+    u_b = -speed_b  # right is positive: B is at rest or moves left, towards A
+    dp_a = change_in_momentum(mass_a, speed_a, after_a)
+    dp_b = -dp_a  # third law: equal and opposite forces for the same time
+    v_b = velocity_after_collision(mass_a, speed_a, mass_b, u_b, after_a)
+    if v_b < after_a:
+        raise ValueError(f"after_a={after_a!r} m s^-1 leaves B ({n(v_b, 2)} m s^-1) behind A, which cannot "
+                         "pass through it")
+    before = total_kinetic_energy((mass_a, mass_b), (speed_a, u_b))
+    after = total_kinetic_energy((mass_a, mass_b), (after_a, v_b))
+    if after > before:
+        raise ValueError(f"after_a={after_a!r} m s^-1 would create kinetic energy ({n(before, 3)} J before, "
+                         f"{n(after, 3)} J after)")
+    force_b = average_force(dp_b, contact)
+    ma, ua, mb, ub, va, t = n(mass_a, 2), n(speed_a, 2), n(mass_b, 2), n(speed_b, 2), n(after_a, 2), n(contact, 2)
+    ways = ("to the right", "to the left")
+    b_before = "at rest" if speed_b == 0 else f"moving at {ub} {PER_S} to the left, towards A"
+    a_after = "stops" if after_a == 0 else f"moves on to the right at {va} {PER_S}"
+    givens = [Given("mass of A", mass_a, "kg", 2), Given("speed of A", speed_a, "m s^-1", 2),
+              Given("mass of B", mass_b, "kg", 2), Given("contact time", contact, "s", 2)]
+    if speed_b:
+        givens.append(Given("speed of B", speed_b, "m s^-1", 2))
+    if after_a:
+        givens.append(Given("speed of A after", after_a, "m s^-1", 2))
+    third_law = ("By Newton's third law B pushes A and A pushes B with equal and opposite forces, for the same "
+                 "time, so their changes in momentum are equal and opposite: Δp of B = −Δp of A.")
+    # B's velocity change with "the mass of one body used for both": A's change in velocity given to B
+    same_velocity_change = u_b + (speed_a - after_a)
+    b_mistakes = [
+        Mistake("changes in velocity taken as equal", same_velocity_change,
+                f"You gave B the same change in velocity as A. The changes in momentum are equal and opposite, "
+                f"not the changes in velocity: B's is {w(dp_b)} N s, so its velocity changes by {w(dp_b)} / {mb}."),
+    ]
+    if speed_b:
+        b_mistakes += [
+            Mistake("momentum added as scalars", speed_b + velocity_from_momentum(dp_b, mass_b),
+                    f"You added B's speed before as if it moved to the right. B moved to the left: its velocity "
+                    f"before is −{ub} m s⁻¹, so v = −{ub} + Δp / m.", see="momentum"),
+            Mistake("B's velocity before left out", velocity_from_momentum(dp_b, mass_b),
+                    f"Δp / m = {w(velocity_from_momentum(dp_b, mass_b))} m s⁻¹ is B's change in velocity. Add it "
+                    f"to B's velocity before, −{ub} m s⁻¹."),
+        ]
+    a_mistakes = [
+        Mistake("the mass of one body used for both", momentum(mass_b, speed_a - after_a),
+                f"You multiplied B's mass by A's change in velocity. The changes in momentum are equal and "
+                f"opposite, so work out A's with A's mass: {ma} × ({va} − {ua})."),
+        Mistake("the same direction as A's change", dp_b,
+                "The size is right, but B's change in momentum is opposite to A's (Newton's third law): A "
+                "loses momentum to the right, so B gains momentum to the right.", direction="to the left",
+                see="third-law"),
+    ]
+    if after_a:
+        a_mistakes.append(
+            Mistake("as if A stopped", momentum(mass_a, speed_a),
+                    f"That is all of A's momentum, as if A stopped. A moves on at {va} m s⁻¹: B gains only "
+                    "what A loses.", see="conservation"))
+    f_mistakes = [
+        Mistake("difference of the momenta after", average_force(momentum(mass_b, v_b) - momentum(mass_a, after_a),
+                                                                 contact) if after_a else
+                average_force(2 * dp_b, contact),
+                "The force on B comes from B's own change in momentum ÷ the contact time, not from the "
+                "difference between the two trolleys' momenta." if after_a else
+                "You doubled the change in momentum. The force on B comes from B's own change in momentum "
+                "only: A's equal and opposite change is the other half of the pair, on A."),
+        Mistake("multiplied by the time", dp_b * contact,
+                "You multiplied by the contact time. Force is the rate of change of momentum: F = Δp / Δt.",
+                see="second-law"),
+        Mistake("the force on A", force_b,
+                "That is the direction of the force on A. The force on B is in the direction of B's change in "
+                "momentum: to the right.", direction="to the left", see="third-law"),
+    ]
+    if speed_b:
+        f_mistakes.append(
+            Mistake("B's final momentum ÷ time", average_force(momentum(mass_b, v_b), contact),
+                    "You used B's momentum after the collision. The force comes from B's change in momentum: "
+                    "it was moving before.", see="momentum"))
+    return Question(
+        key="collision-third-law",
+        text=(f"Trolley A, of mass {ma} kg, moves at {ua} {PER_S} to the right along a straight, level track "
+              f"towards trolley B, of mass {mb} kg, which is {b_before}. The trolleys collide and are in contact "
+              f"for {t} s. After the collision A {a_after}.\n\n"
+              "(a) Calculate the change in momentum of B and give its direction.\n\n"
+              "(b) Calculate the speed of B just after the collision.\n\n"
+              "(c) Calculate the average force on B during the collision and give its direction."),
+        givens=tuple(givens),
+        parts=(
+            Part("change in momentum of B", dp_b, "N s", "change in momentum", units=N_S, shown_sig_figs=2,
+                 direction="choice", choices=ways, answer_direction="to the right",
+                 direction_hint="A loses momentum to the right; B gains what A loses (Newton's third law).",
+                 revisit=third_law, mistakes=tuple(a_mistakes), see="third-law"),
+            Part("speed of B just after the collision", v_b, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
+                 ecf=Ecf(a_answer / mass_b_third - speed_b_third,
+                         {"mass_b_third": mass_b, "speed_b_third": speed_b}),
+                 revisit="B's change in momentum is m(v − u), with B's velocity before negative if it moved "
+                         "to the left: v = u + Δp / m.",
+                 mistakes=tuple(b_mistakes), see="conservation"),
+            Part("average force on B", force_b, "N", "force", shown_sig_figs=2,
+                 direction="choice", choices=ways, answer_direction="to the right",
+                 ecf=Ecf(a_answer / contact_third, {"contact_third": contact}),
+                 direction_hint="The force on B is in the direction of B's change in momentum.",
+                 revisit="The force on one body is its own change in momentum ÷ the contact time.",
+                 mistakes=tuple(f_mistakes), see="second-law"),
+        ),
+        mark_scheme=(
+            Mark(f"Δp of A = {ma} × ({va} − {ua}) = {w(dp_a)} N s", "C1", "a"),
+            Mark(f"Equal and opposite forces for the same time (Newton's third law): Δp of B = {n(dp_b, 2)} N s",
+                 "A1", "a"),
+            Mark("to the right (opposite to A's change)", "B1", "a", earns="direction"),
+            Mark(f"v = u + Δp / m = {'0' if not speed_b else '−' + ub} + {w(dp_b)} / {mb}", "C1", "b"),
+            Mark(f"= {n(v_b, 2)} {PER_S}", "A1", "b"),
+            Mark(f"F = Δp / Δt = {w(dp_b)} / {t}", "C1", "c"),
+            Mark(f"= {n(force_b, 2)} N", "A1", "c"),
+            Mark("to the right (the direction of B's change in momentum)", "B1", "c", earns="direction"),
+        ),
+    )
+
+
+
 TEMPLATES = (
     Template("quick-check-2", "momentum-line", ("numeric",), "Quick check 2", rifle_recoil,
              {"rifle": Draw(4.0, 3.0, 6.0, 0.5), "bullet": Draw(0.010, 0.008, 0.020, 0.001),
@@ -332,4 +463,8 @@ TEMPLATES = (
     Template("stick-choice", "momentum-line", ("mcq",), "Trolleys stick: which speed?", stick_choice,
              {"m1": Draw(3.0, 2.0, 5.0, 0.5), "u1": Draw(4.0, 3.0, 6.0, 0.5),
               "m2": Draw(2.0, 0.5, 2.0, 0.5), "speed2": Draw(1.0, 0.5, 2.0, 0.5)}),
+    Template("collision-third-law", "momentum-line", ("numeric",), "Third law in a collision", collision_third_law,
+             {"mass_a": Draw(0.60, 0.40, 1.00, 0.05), "speed_a": Draw(2.5, 1.5, 4.0, 0.5),
+              "mass_b": Draw(0.40, 0.20, 1.00, 0.05), "speed_b": Draw(0.0, 0.0, 1.5, 0.5),
+              "after_a": Draw(0.50, 0.0, 1.5, 0.1), "contact": Draw(0.050, 0.020, 0.080, 0.005)}),
 )

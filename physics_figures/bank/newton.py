@@ -8,8 +8,11 @@ import sympy
 from ..constants import G_EARTH
 from ..models import (
     acceleration,
+    acceleration_from_distance,
+    kinetic_energy,
     lift_contact_force,
     mass_from_weight,
+    momentum,
     thrust_for_acceleration,
     towing,
     weight,
@@ -30,7 +33,7 @@ from ..questions import (
     choices_in_order,
 )
 from ..variants import Draw, Template
-from ._common import M_S2, PER_S2, enough_figures, w
+from ._common import M_S2, PER_S, PER_S2, enough_figures, w
 
 a_answer, trailer_mass_symbol, trailer_resistance_symbol = sympy.symbols("a trailer_mass trailer_resistance")
 hanging_mass_symbol, gravity_symbol = sympy.symbols("hanging_mass gravity")
@@ -620,6 +623,72 @@ def third_law_pair_explained(situation: float = 0) -> Question:
     )
 
 
+car_mass_symbol = sympy.Symbol("car_mass")
+#: About the largest deceleration a car's tyres give on a dry, level road (m s^-2).
+_HARDEST_BRAKING = 6.5
+
+
+def stopping_force_from_distance(mass: float = 1500.0, speed: float = 20.0, distance: float = 50.0) -> Question:
+    """The stopping force from a distance: the deceleration from v² = u² + 2as, then F = ma
+    (notes, How to do it 1., "Stopping distance with a constant force"; 9702/21/M/J/24 Q3 asks
+    for a stopping force). The scheme's lines follow 9702/21/M/J/16 Q2(b) ("v² = u² + 2as and
+    v = 0 C1 … A1") and, for the force worked from the student's own a, 9702/21/M/J/18 Q2(b)(iii)
+    (C1 for F = ma with the candidate's own a, then A1)."""
+    deceleration = -acceleration_from_distance(speed, 0.0, distance)
+    if deceleration > _HARDEST_BRAKING:
+        raise ValueError(f"distance must let the car stop at no more than {_HARDEST_BRAKING} m s^-2, as hard as "
+                         f"tyres brake on a dry road (got distance={distance!r} m: {n(deceleration, 2)} m s^-2)")
+    force = mass * deceleration  # F = ma with the car's mass: the resultant (braking) force
+    m, u, s = n(mass, 2), n(speed, 2), n(distance, 2)
+    return Question(
+        key="stopping-force-distance",
+        text=(f"A car of mass {m} kg is travelling at {u} {PER_S} along a straight, level road. The "
+              f"driver brakes and the car stops in a distance of {s} m, with a constant deceleration. "
+              "Calculate (a) the deceleration of the car and (b) the average braking force on it "
+              "(the resultant force)."),
+        givens=(Given("mass", mass, "kg", 2), Given("speed", speed, "m s^-1", 2),
+                Given("stopping distance", distance, "m", 2)),
+        parts=(
+            Part("deceleration of the car", deceleration, "m s^-2", "acceleration", units=M_S2,
+                 shown_sig_figs=2, sign_means="the acceleration is against the motion: the car slows down",
+                 revisit="The car stops, so v = 0: v² = u² + 2as gives a = −u² / 2s. The deceleration is "
+                         "its size.",
+                 mistakes=(
+                     Mistake("forgot to square the speed", speed / (2 * distance),
+                             f"You used u instead of u². The equation is v² = u² + 2as: "
+                             f"0 = {u}² − 2 × a × {s}."),
+                     Mistake("time taken as distance ÷ speed", speed**2 / distance,
+                             f"You took the time to stop as {s} / {u}, as if the car kept its speed "
+                             "(or left out the 2 in 2as). It slows down all the way: use v² = u² + 2as, "
+                             "a = u² / 2s."),
+                 ), see="second-law"),
+            Part("average braking force", force, "N", "force", shown_sig_figs=2,
+                 working=(Step("deceleration", deceleration, "m s^-2", 2),),
+                 answer_from=lambda a: mass * a,
+                 ecf=Ecf(car_mass_symbol * a_answer, {"car_mass": mass}),
+                 revisit="The braking force is the resultant force: F = ma, with the car's mass and its "
+                         "deceleration (or, by work done, F s = ½mu²).",
+                 mistakes=(
+                     Mistake("the ½ left out of the kinetic energy", mass * speed**2 / distance,
+                             f"You used F s = mu². The kinetic energy the brakes remove is ½mu²: "
+                             f"F × {s} = ½ × {m} × {u}²."),
+                     Mistake("momentum ÷ distance", momentum(mass, speed) / distance,
+                             f"You divided the momentum, {m} × {u}, by the distance. Force is momentum "
+                             "÷ time; with a distance, use F = ma (or F s = ½mu²).", see="momentum"),
+                     Mistake("kinetic energy given", kinetic_energy(mass, speed),
+                             "That is the car's kinetic energy, ½mu², in J. The force is that energy ÷ "
+                             "the distance, or ma.", unit="J", see="kinetic-energy"),
+                 ), see="second-law"),
+        ),
+        mark_scheme=(
+            Mark(f"v² = u² + 2as with v = 0: 0 = {u}<sup>2</sup> − 2 × a × {s}", "C1", "a"),
+            Mark(f"a = {u}<sup>2</sup> / (2 × {s}) = {n(deceleration, 2)} {PER_S2}", "A1", "a"),
+            Mark(f"F = ma = {m} × {w(deceleration)}", "C1", "b"),
+            Mark(f"= {n(force, 2)} N", "A1", "b"),
+        ),
+    )
+
+
 TEMPLATES = (
     Template("practice-car-slowing", "newton", ("numeric",), "Car slowing down", car_slowing,
              {"mass": Draw(800.0, 600.0, 1500.0, 100.0), "driving": Draw(1500.0, 1000.0, 3000.0, 100.0),
@@ -655,4 +724,8 @@ TEMPLATES = (
     Template("third-law-pair-explained", "newton", ("explain",), "Why the pair does not cancel",
              third_law_pair_explained, {"situation": Draw(0, 0, len(_PAIRS_THAT_MOVE) - 1, 1)},
              variant_count=len(_PAIRS_THAT_MOVE)),
+    Template("stopping-force-distance", "newton", ("numeric",), "Braking force from a stopping distance",
+             stopping_force_from_distance,
+             {"mass": Draw(1500.0, 800.0, 1500.0, 100.0), "speed": Draw(20.0, 10.0, 30.0, 1.0),
+              "distance": Draw(50.0, 20.0, 90.0, 5.0)}),
 )

@@ -180,3 +180,26 @@ def jet_force(density, area, speed):
     density = check.positive("density", density, unit="kg m^-3")
     area = check.positive("area", area, unit="m^2")
     return density * area * check.non_negative("speed", speed, unit="m s^-1") ** 2
+
+
+def mass_from_momentum_change(change_in_momentum, u, v):
+    """Mass from a change in momentum and the change in velocity it made: m = Δp / (v - u).
+
+    From Δp = m v - m u with constant mass (a constant force F for Δt gives Δp = F Δt).
+    change_in_momentum: N s, signed; u, v: initial and final velocity, m s^-1, signed along
+    one line (a body that turns round has u and v of opposite signs). Returns m in kg (> 0).
+    Raises ValueError for equal velocities (no change in velocity: any mass would do), a
+    change in momentum that is zero or opposite to the change in velocity (the mass would
+    not be positive), or a value that is not finite.
+    """
+    change_in_momentum = check.number("change_in_momentum", change_in_momentum, unit="N s")
+    u = check.number("u", u, unit="m s^-1")
+    v = check.number("v", v, unit="m s^-1")
+    if v == u:
+        check.fail("v", v, f"must differ from u={u!r} m s^-1: with no change in velocity any mass fits",
+                   unit="m s^-1")
+    if change_in_momentum * (v - u) <= 0:
+        check.fail("change_in_momentum", change_in_momentum,
+                   f"must be in the direction of the change in velocity v - u = {v - u!r} m s^-1 "
+                   "(a mass is positive)", unit="N s")
+    return change_in_momentum / (v - u)

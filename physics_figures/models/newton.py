@@ -125,3 +125,19 @@ def towing(driving_force, masses, resistive_forces):
     # Everything behind link i: bodies i+1 .. end (reverse cumulative sums).
     pulled = np.cumsum((masses * a + resistive_forces)[::-1])[::-1][1:]
     return Towing(float(a), float(resultant), tuple(float(t) for t in pulled))
+
+
+def acceleration_from_distance(u, v, distance):
+    """Constant acceleration that changes the speed from u to v over a distance: v² = u² + 2 a s.
+
+    a = (v² - u²) / (2 s): negative when the body slows down (a deceleration of size
+    (u² - v²) / 2s; a car stopping from u in s has a = -u² / 2s). Then F = m a gives the
+    resultant (e.g. braking) force (Notes, How to do it 1., "Stopping distance with a
+    constant force"). u, v: speeds, m s^-1 (>= 0, along the motion); distance: m (> 0).
+    Returns a in m s^-2, signed (positive along the motion).
+    Raises ValueError for a negative speed, a distance <= 0 or a value that is not finite.
+    """
+    u = check.non_negative("u", u, unit="m s^-1")
+    v = check.non_negative("v", v, unit="m s^-1")
+    distance = check.positive("distance", distance, unit="m")
+    return (v**2 - u**2) / (2 * distance)

@@ -318,7 +318,7 @@ class Part:
     @property
     def answer_text(self) -> str:
         """The answer as the key prints it (plain text), e.g. "11.6 m s⁻² upwards"."""
-        space = "" if self.unit == "°" else " "
+        space = "" if self.unit in ("°", "") else " "  # a ratio ("") has no unit
         text = f"{format_number(self.value, self.shown_sig_figs)}{space}{unit_text(self.unit)}"
         if self.direction == "choice":
             text += f" {self.answer_direction}"

@@ -91,7 +91,7 @@ def _unit(unit: str) -> str:
 
 
 def _value_with_unit(value: float, sig_figs: int, unit: str) -> str:
-    space = "" if unit == "°" else " "
+    space = "" if unit in ("°", "") else " "  # a ratio ("") has no unit
     return f"{format_number(value, sig_figs)}{space}{unit_text(unit)}"
 
 

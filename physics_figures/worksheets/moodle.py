@@ -255,6 +255,12 @@ class _Export:
             # the key as it prints ("-1.0", not "-1"): Moodle shows it as the right answer
             text = printed if float(printed) == value else _number(value)
             self._answer(element, points, value, width, f"<p>{_escape(feedback)}</p>", text=text)
+        if not part.unit:  # a ratio: a pure number, with no unit to type or to grade
+            _plain(element, "unitgradingtype", "0")
+            _plain(element, "unitpenalty", "0")
+            _plain(element, "showunits", "3")  # Moodle's "no units" (qtype_numerical::UNITNONE)
+            _plain(element, "unitsleft", "0")
+            return
         units = ET.SubElement(element, "units")
         for form, multiplier in _units(part.unit, part.units):
             unit = ET.SubElement(units, "unit")
@@ -454,8 +460,9 @@ def _part(out: _Export, template: Template, index: int, question: Question, part
                       f"{_escape(unit_text(part.unit))} and choose the direction.</p>" + ecf,
                       marks, general, files, question, part_index)
         else:
-            out.numerical(name, idnumber, stem + ask + f"{how}.{sign} Type the number and its unit "
-                          f"({_escape(unit_text(part.unit))}).</p>" + ecf, marks, general, files,
+            typing = (f"Type the number and its unit ({_escape(unit_text(part.unit))})" if part.unit
+                      else "Type the number as a decimal (it has no unit)")
+            out.numerical(name, idnumber, stem + ask + f"{how}.{sign} {typing}.</p>" + ecf, marks, general, files,
                           question, part_index)
 
 

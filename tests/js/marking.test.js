@@ -242,6 +242,27 @@ test("a missing unit is asked for", () => {
   assert.match(r.message, /N s or kg m s⁻¹/);
 });
 
+test("a ratio has no unit: a bare number is whole, a percentage with % is read as its fraction", () => {
+  // Notes, "Elastic and inelastic collisions": 6.0 J of 24 J lost, a fraction 0.25 (25 %).
+  const fraction = {
+    value: 0.25,
+    unit: "",
+    units: "no unit (a fraction), or a percentage with %",
+    quantity: "fraction",
+    minSf: 2,
+    checkSf: 3,
+    direction: "none",
+    revisit: "fraction lost = (E before − E after) / E before",
+    mistakes: [{ name: "percentage without %", value: 25, feedback: "Write 25 % or 0.25." }],
+  };
+  assert.equal(code(fraction, "0.25", ""), "correct");
+  assert.equal(code(fraction, "25", "%"), "correct");
+  assert.equal(code(fraction, "25 %", ""), "correct");
+  assert.equal(mark(fraction, { value: "25", unit: "" }).mistake, "percentage without %");
+  assert.equal(code(fraction, "0.25", "J"), "wrong-unit"); // a fraction has no unit of energy
+  assert.equal(code(fraction, "0.75", ""), "wrong");
+});
+
 test("default rule: 2 or more significant figures; fewer is wrong", () => {
   assert.equal(code(drag, "690", "N"), "correct"); // 2 s.f. (the zero may not count)
   assert.equal(code(drag, "687", "N"), "correct");

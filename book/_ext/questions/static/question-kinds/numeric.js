@@ -100,7 +100,9 @@
     var number = parseNumber(valueText);
     if (!number.ok) return outcome("unreadable-number", number.message);
     var unit = parseUnit(unitText);
-    var expected = parseUnit(part.unit).readings[0];
+    // A ratio or a fraction has no unit (part.unit ""): a bare number is whole, and "25 %" reads as 0.25.
+    var dimensionless = !normalise(part.unit);
+    var expected = dimensionless ? { scale: 1, dims: [0, 0, 0, 0] } : parseUnit(part.unit).readings[0];
     // A unit in the wrong case: say so, and mark the answer as if it were written right.
     var fits =
       unit.ok &&
@@ -225,7 +227,8 @@
     var directionRight = mode !== "choice" || direction === part.answerDirection;
 
     if (result.match && !sign && directionRight) {
-      if (unit.empty) return out("missing-unit", "The number is right. Now give the unit: " + units + ".");
+      if (unit.empty && !dimensionless)
+        return out("missing-unit", "The number is right. Now give the unit: " + units + ".");
       if (alternative) return out("alternative", "Accepted: " + alternative.why + ".");
       if (signIgnored)
         return out("ignore-sign", "Correct: the minus sign is ignored, as the direction is given separately.");

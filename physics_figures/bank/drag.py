@@ -12,7 +12,9 @@ from ..models import (
     drag_constant_for_terminal_velocity,
     drag_force,
     falling_acceleration,
+    power_law_constant,
     terminal_velocity,
+    terminal_velocity_ratio,
     upthrust,
     velocity_from_rest,
     weight,
@@ -657,6 +659,167 @@ def ball_acceleration_from_graph(terminal: float = 20.0, moment: float = 2.0, ma
     )
 
 
+# ---------------------------------------------------------------- a drag law given in the question
+
+#: The drag laws the papers give, by the power of v (6πηrv is a law of the first kind, ½CρAv²
+#: one of the second): how the question writes it, in plain text (feedback), and the unit of its
+#: constant k (as typed, in the text format, and its usual forms).
+_DRAG_LAWS = {
+    1: ("<em>F</em> = <em>kv</em>", "F = kv", "kg s^-1", "kg s<sup>−1</sup>", "kg s^-1 (N s m^-1)"),
+    2: ("<em>F</em> = <em>kv</em><sup>2</sup>", "F = kv²", "kg m^-1", "kg m<sup>−1</sup>", "kg m^-1 (N s^2 m^-2)"),
+}
+speed_symbol = sympy.Symbol("speed")
+
+
+def _speed_power(speed_text: str, power: int) -> str:
+    """v or v² as a scheme writes it with the speed's number: "12" or "12<sup>2</sup>"."""
+    return speed_text if power == 1 else f"{speed_text}<sup>{power}</sup>"
+
+
+def drag_law_constant(power: float = 2, grams: float = 45.0, speed: float = 12.0) -> Question:
+    """A drag law given in the question (issue 25): the constant k of F = kvⁿ from a terminal
+    speed. At terminal speed the resultant force is zero, so kvₜⁿ = mg and k = mg / vₜⁿ (notes:
+    "with a given drag formula ... set it equal to W and solve for v or the constant"). The law
+    is F = kv or F = kv² by the variant: the same step, with its own power and unit.
+
+    Marks: 9702/02/M/J/06 gives the drag law (F = crv) and credits "mg = crv_T"; 9702/21/M/J/16
+    Q3(a)(i) gives "force (= mg = 0.15 × 9.81) = 1.5 N" one mark on its own (B1 here), and Q3(b)(ii)
+    a C1 for the equation with its numbers before the A1 for the answer."""
+    power = int(power)
+    law, plain_law, k_unit, k_unit_text, k_units = _DRAG_LAWS[power]
+    mass = grams / 1000
+    drag = weight(mass)  # at terminal speed the resultant force is zero
+    k = power_law_constant(drag, speed, power=power)
+    gr, v = n(grams, 2), n(speed, 2)
+    other = 3 - power  # the other law's power: the speed squared when it should not be, or not
+    return Question(
+        key="drag-law-constant",
+        text=(f"A small ball of mass {gr} g falls vertically through still air. In a model of its fall, the "
+              f"air resistance on it is {law}, where <em>v</em> is its speed and <em>k</em> is a constant. "
+              f"The ball reaches a terminal speed of {v} {PER_S}. (a) State the air resistance on the ball "
+              "at its terminal speed. (b) Calculate <em>k</em>."),
+        givens=(Given("mass", grams, "g", 2), Given("terminal speed", speed, "m s^-1", 2)),
+        parts=(
+            Part("air resistance at the terminal speed", drag, "N", "force", shown_sig_figs=3, asks="state",
+                 answer_for_g=lambda g: weight(mass, g=g),
+                 revisit="At terminal speed the resultant force is zero, so the air resistance equals the "
+                         "weight, mg (with the mass in kg).",
+                 mistakes=(
+                     Mistake("mass given as the force", mass,
+                             f"{n(mass, 2)} kg is the ball's mass. The air resistance equals its weight, mg."),
+                     Mistake("mass left in grams", weight(grams),
+                             f"You used the mass in g. Convert it to kg first: {gr} g = {n(mass, 2)} kg.",
+                             kind="slip"),
+                     Mistake("air resistance is zero", 0.0,
+                             "At terminal speed the resultant force is zero, not the air resistance: it has "
+                             "grown to equal the weight."),
+                 ), see="skydiver"),
+            Part("value of k", k, k_unit, "drag constant", units=k_units, shown_sig_figs=2,
+                 # no g = 10 here: a g slip is made, and named, in (a), and (b) carries it forward
+                 ecf=Ecf(a_answer / speed_symbol**power, {"speed": speed}),
+                 revisit=f"At terminal speed {plain_law} equals the weight mg, so k = mg / "
+                         f"{'v' if power == 1 else 'v²'}.",
+                 mistakes=(
+                     Mistake("speed not squared" if power == 2 else "speed squared",
+                             power_law_constant(drag, speed, power=other),
+                             "You divided by v. The law is F = kv², so k = mg / v²." if power == 2 else
+                             "You divided by v². The law is F = kv, so k = mg / v."),
+                     Mistake("mass used, not the weight", power_law_constant(mass, speed, power=power),
+                             "You used the mass. The air resistance equals the weight, mg, in N."),
+                     Mistake("mass left in grams", power_law_constant(weight(grams), speed, power=power),
+                             f"You used the mass in g. Convert it to kg first: {gr} g = {n(mass, 2)} kg.",
+                             kind="slip"),
+                 ), see="skydiver"),
+        ),
+        mark_scheme=(
+            Mark(f"At terminal speed the resultant force is zero: F = mg = {n(mass, 2)} × {n(G_EARTH, 3)} "
+                 f"= {n(drag, 3)} N", "B1", "a"),
+            Mark(f"k = mg / {_speed_power('v', power)} = {working(drag)} / {_speed_power(v, power)}", "C1", "b"),
+            Mark(f"= {n(k, 2)} {k_unit_text}", "A1", "b"),
+        ),
+    )
+
+
+def drag_law_terminal_ratio(power: float = 2, grams_a: float = 20.0, grams_b: float = 80.0,
+                            speed_a: float = 15.0) -> Question:
+    """A ratio from a drag law given in the question (issue 25): two balls of one size and shape
+    (one k), F = kvⁿ. At terminal speed kvⁿ = mg, so vₜ ∝ m^(1/n): four times the mass falls
+    twice as fast with F = kv², four times as fast with F = kv (notes: same size and shape,
+    heavier one -> higher terminal velocity). Then the heavier ball's acceleration as it passes
+    the lighter one's terminal speed: the drag there is the lighter ball's weight, so
+    a = (m_B g − m_A g) / m_B, whichever the law.
+
+    Marks: 9702/02/M/J/06 sets the given drag law equal to the weight (mg = crv_T); 9702/21/M/J/16
+    Q3(b)(ii) gives C1 for the working with its numbers, then A1 for the answer."""
+    power = int(power)
+    if grams_b <= grams_a:
+        raise ValueError(f"grams_b must be more than grams_a: B is the heavier ball, which passes A's "
+                         f"terminal speed on its way to its own (got grams_a={grams_a!r}, grams_b={grams_b!r})")
+    law = _DRAG_LAWS[power][0]
+    m_a, m_b = grams_a / 1000, grams_b / 1000
+    ratio = grams_b / grams_a
+    speed_b = speed_a * terminal_velocity_ratio(ratio, power=power)
+    w_a, w_b = weight(m_a), weight(m_b)
+    a = falling_acceleration(m_b, w_a)  # at A's terminal speed the drag on B is A's weight
+    ga, gb, va = n(grams_a, 2), n(grams_b, 2), n(speed_a, 2)
+    root = f"√({gb} / {ga})" if power == 2 else f"({gb} / {ga})"
+    forgot_root = "square root forgotten" if power == 2 else "square root taken"
+    return Question(
+        key="drag-law-terminal-ratio",
+        text=(f"Two balls A and B have the same size and shape, so the air resistance on each is {law}, "
+              "where <em>v</em> is its speed, with the same constant <em>k</em>. Ball A has mass "
+              f"{ga} g and falls vertically at a terminal speed of {va} {PER_S}. Ball B has mass {gb} g and "
+              "is dropped from rest. Calculate (a) the terminal speed of B and (b) the size of B's "
+              f"acceleration at the moment its speed is {va} {PER_S}."),
+        givens=(Given("mass of A", grams_a, "g", 2), Given("mass of B", grams_b, "g", 2),
+                Given("terminal speed of A", speed_a, "m s^-1", 2)),
+        parts=(
+            Part("terminal speed of B", speed_b, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
+                 revisit=(f"At terminal speed {'kv²' if power == 2 else 'kv'} = mg, so "
+                          f"{'v²' if power == 2 else 'v'} is proportional to the mass: "
+                          f"{'v_B = v_A √(m_B / m_A)' if power == 2 else 'v_B = v_A × m_B / m_A'}."),
+                 mistakes=(
+                     Mistake(forgot_root, speed_a * terminal_velocity_ratio(ratio, power=3 - power),
+                             "The law is F = kv², so v² is proportional to the mass: take the square root "
+                             "of the ratio of the masses." if power == 2 else
+                             "The law is F = kv, so v itself is proportional to the mass: no square root."),
+                     Mistake("masses the wrong way up", speed_a * terminal_velocity_ratio(1 / ratio, power=power),
+                             "You divided B's terminal speed by the ratio. B is heavier, so it needs more "
+                             "air resistance, and so a higher speed, to balance its weight."),
+                     Mistake("same terminal speed as A", speed_a,
+                             "Without air resistance both would fall alike. With it, the heavier ball "
+                             "needs a larger drag, so a higher speed, before the drag equals its weight."),
+                 ), see="skydiver"),
+            Part(f"size of B's acceleration at {va} m s⁻¹", a, "m s^-2", "acceleration", units=M_S2,
+                 shown_sig_figs=2,
+                 working=(Step("air resistance on B (A's weight)", w_a, "N"),),
+                 answer_from=lambda drag_: falling_acceleration(m_b, drag_),
+                 answer_for_g=lambda g: falling_acceleration(m_b, weight(m_a, g=g), g=g),
+                 revisit=f"At {va} m s⁻¹ the air resistance on B is what it is on A at that speed: A's "
+                         "weight. Resultant force = B's weight − air resistance; a = F / m.",
+                 mistakes=(
+                     Mistake("air resistance left out", G_EARTH,
+                             "That is g, the acceleration with no air resistance. At this speed the air "
+                             "resistance on B equals A's weight."),
+                     Mistake("A's weight used as the resultant force", acceleration(w_a, m_b),
+                             "You used the air resistance as the resultant force. B's weight still acts: "
+                             "resultant = B's weight − air resistance."),
+                     Mistake("air resistance added to the weight", acceleration(w_b + w_a, m_b),
+                             "The weight acts downwards and the air resistance upwards: subtract them."),
+                 ), see="skydiver"),
+        ),
+        mark_scheme=(
+            Mark(f"At terminal speed {'kv<sup>2</sup>' if power == 2 else 'kv'} = mg, so "
+                 f"{_speed_power('v', power)} is proportional to m", "C1", "a"),
+            Mark(f"v<sub>B</sub> = {va} × {root} = {n(speed_b, 2)} {PER_S}", "A1", "a"),
+            Mark(f"At {va} {PER_S} the air resistance on B equals A's weight, {n(m_a, 2)} × {n(G_EARTH, 3)} "
+                 f"= {working(w_a)} N", "C1", "b"),
+            Mark(f"a = ({working(w_b)} − {working(w_a)}) / {n(m_b, 2)}", "C1", "b"),
+            Mark(f"= {n(a, 2)} {PER_S2} (downwards)", "A1", "b"),
+        ),
+    )
+
+
 TEMPLATES = (
     Template("quick-check-3", "drag", ("numeric",), "Quick check 3", skydiver_parachute_opens,
              {"mass": Draw(70.0, 50.0, 99.0, 1.0), "open_drag": Draw(1500.0, 1000.0, 2500.0, 100.0)}),
@@ -685,4 +848,11 @@ TEMPLATES = (
              ball_acceleration_from_graph,
              {"terminal": Draw(20.0, 10.0, 25.0, 0.5), "moment": Draw(2.0, 0.5, 3.0, 0.5),
               "mass": Draw(0.050, 0.020, 0.080, 0.005)}),
+    Template("drag-law-constant", "drag", ("numeric",), "A drag law: find k", drag_law_constant,
+             {"power": Draw(2, 1, 2, 1), "grams": Draw(45.0, 20.0, 95.0, 5.0),
+              "speed": Draw(12.0, 4.0, 40.0, 1.0)}),
+    Template("drag-law-terminal-ratio", "drag", ("numeric",), "A drag law: heavier, faster",
+             drag_law_terminal_ratio,
+             {"power": Draw(2, 1, 2, 1), "grams_a": Draw(20.0, 10.0, 50.0, 5.0),
+              "grams_b": Draw(80.0, 30.0, 95.0, 5.0), "speed_a": Draw(15.0, 5.0, 30.0, 1.0)}),
 )

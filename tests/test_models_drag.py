@@ -20,11 +20,11 @@ from physics_figures.models import (
     power_law_terminal_velocity,
     skydive,
     terminal_velocity,
+    terminal_velocity_ratio,
     thrown_upwards,
     time_to_slow_to_terminal,
     time_to_terminal_velocity,
     velocity_from_rest,
-    terminal_velocity_ratio,
     velocity_slowing_to_terminal,
     weight,
 )
@@ -483,7 +483,7 @@ def test_falling_acceleration_refuses_bad_inputs_with_the_rule(call, message):
 
 # --- a drag law given in a question: F = k vⁿ (issue 25) ---------------------------------------
 
-powers = st.sampled_from((1, 2))  # the laws papers give: kv (and 6πηrv), kv² (and ½CρAv²)
+powers = st.sampled_from((1, 2))  # the laws papers give: kv (and 6 pi eta r v), kv² (and C rho A v² / 2)
 
 
 @FAST
@@ -513,12 +513,12 @@ def test_the_ratio_of_terminal_speeds_is_that_of_two_bodies_with_one_law(mass, r
 
 
 def test_four_times_the_mass_falls_twice_as_fast_with_kv2_and_four_times_with_kv():
-    # issue 25's example: with F = kv² a body of 4 × the mass has 2 × the terminal speed
+    # issue 25's example: with F = kv² a body of 4 times the mass has twice the terminal speed
     assert terminal_velocity_ratio(4.0, power=2) == pytest.approx(2.0)
     assert terminal_velocity_ratio(4.0, power=1) == pytest.approx(4.0)
-    # F = kv: a 0.20 kg ball with k = 0.050 kg s⁻¹ falls at 0.20 × 9.81 / 0.050 = 39.24 m s⁻¹
+    # F = kv: a 0.20 kg ball with k = 0.050 kg s⁻¹ falls at 0.20 * 9.81 / 0.050 = 39.24 m s⁻¹
     assert power_law_terminal_velocity(0.20, 0.050, power=1) == pytest.approx(39.24)
-    # in a liquid the upthrust helps the drag: k v_t = mg − U
+    # in a liquid the upthrust helps the drag: k v_t = mg - U
     assert power_law_terminal_velocity(0.20, 0.050, power=1, upthrust=0.962) == pytest.approx(20.0)
 
 

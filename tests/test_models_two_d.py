@@ -1,3 +1,4 @@
+# ruff: noqa: RUF003  (comments write the working as typeset: true minus)
 """A moving body that splits into two pieces at an angle (Notes, "Momentum in two dimensions":
 momentum is conserved along and across the original line separately; issue 25)."""
 

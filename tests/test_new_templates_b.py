@@ -1,4 +1,4 @@
-# ruff: noqa: RUF001, RUF002, RUF003  (question text is typeset: true minus, times, Greek letters)
+# ruff: noqa: RUF002, RUF003  (question text is typeset: true minus, times, Greek letters)
 """The drag-law and two-dimensional templates of issue 25, checked against formulas worked by
 hand from each variant's printed text: never through the template's own physics (the models).
 

@@ -661,8 +661,8 @@ def ball_acceleration_from_graph(terminal: float = 20.0, moment: float = 2.0, ma
 
 # ---------------------------------------------------------------- a drag law given in the question
 
-#: The drag laws the papers give, by the power of v (6πηrv is a law of the first kind, ½CρAv²
-#: one of the second): how the question writes it, in plain text (feedback), and the unit of its
+#: The drag laws the papers give, by the power of v (6 pi eta r v is a law of the first kind,
+#: (1/2) C rho A v² one of the second): how the question writes it, in plain text (feedback), and the unit of its
 #: constant k (as typed, in the text format, and its usual forms).
 _DRAG_LAWS = {
     1: ("<em>F</em> = <em>kv</em>", "F = kv", "kg s^-1", "kg s<sup>−1</sup>", "kg s^-1 (N s m^-1)"),
@@ -849,7 +849,8 @@ TEMPLATES = (
              {"terminal": Draw(20.0, 10.0, 25.0, 0.5), "moment": Draw(2.0, 0.5, 3.0, 0.5),
               "mass": Draw(0.050, 0.020, 0.080, 0.005)}),
     Template("drag-law-constant", "drag", ("numeric",), "A drag law: find k", drag_law_constant,
-             {"power": Draw(2, 1, 2, 1), "grams": Draw(45.0, 20.0, 95.0, 5.0),
+             # in 3 g steps: 50 g would weigh 0.4905 N, a tie at 3 s.f. that g = 9.8 (0.490 N) sits on
+             {"power": Draw(2, 1, 2, 1), "grams": Draw(45.0, 21.0, 96.0, 3.0),
               "speed": Draw(12.0, 4.0, 40.0, 1.0)}),
     Template("drag-law-terminal-ratio", "drag", ("numeric",), "A drag law: heavier, faster",
              drag_law_terminal_ratio,

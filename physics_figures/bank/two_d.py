@@ -508,7 +508,7 @@ def explosion_two_pieces(mass: float = 2.0, speed: float = 5.0, piece: float = 0
     """An explosion into two pieces at an angle (issue 25): a shell moving due east splits in two;
     one piece's velocity is given at an angle north or south of east. Conserve momentum east and
     north separately (notes, "Momentum in two dimensions"): the other piece's eastward momentum
-    is M u − m₁v₁ cos θ (negative: it moves west) and its north–south momentum cancels the
+    is M u - m₁v₁ cos θ (negative: it moves west) and its north-south momentum cancels the
     first piece's. Named mistakes: sin and cos swapped, momentum added as scalars, a component
     forgotten, the momentum before forgotten.
 
@@ -516,12 +516,12 @@ def explosion_two_pieces(mass: float = 2.0, speed: float = 5.0, piece: float = 0
     A1 for Pythagoras on the components; Q3(b)(ii) gives C1 then A1, and the direction its own B1."""
     north = int(side) == 0
     split = split_in_two(mass, speed, piece, piece_speed, angle)
-    if abs(split.along) < 0.05 * split.magnitude:  # almost due north or south: no angle to east–west to ask
+    if abs(split.along) < 0.05 * split.magnitude:  # almost due north or south: no angle to east-west to ask
         raise ValueError(f"the other piece must not move almost due north or south (eastward momentum "
                          f"{n(split.along, 2)} N s; got angle={angle!r})")
     p_before, p_piece = momentum(mass, speed), momentum(piece, piece_speed)
     east, across = split.along, abs(split.across)
-    angle_other = math.degrees(math.atan2(across, abs(east)))  # from the east–west line
+    angle_other = math.degrees(math.atan2(across, abs(east)))  # from the east-west line
     first = "north" if north else "south"
     other = "south" if north else "north"
     answer = f"{other} of {'east' if east > 0 else 'west'}"

@@ -40,11 +40,11 @@ from .drag import (
     power_law_terminal_velocity,
     skydive,
     terminal_velocity,
+    terminal_velocity_ratio,
     thrown_upwards,
     time_to_slow_to_terminal,
     time_to_terminal_velocity,
     velocity_from_rest,
-    terminal_velocity_ratio,
     velocity_slowing_to_terminal,
 )
 from .fluids import drag_at_terminal_velocity, upthrust

@@ -618,8 +618,8 @@ def falling_acceleration(mass, drag, *, g=G_EARTH, upthrust=0.0):
 # ---------------------------------------------------------------- a drag law given in a question
 
 def _drag_power(power):
-    """The power n of a drag law F = k vⁿ: papers give n = 1 (F = kv, 6πηrv) or n = 2 (F = kv²,
-    ½CρAv²); any positive n is accepted."""
+    """The power n of a drag law F = k vⁿ: papers give n = 1 (F = kv, 6 pi eta r v) or n = 2 (F = kv²,
+    (1/2) C rho A v²); any positive n is accepted."""
     return check.positive("power", power)
 
 

@@ -19,6 +19,8 @@ from physics_figures.models import (
     power_law_drag,
     power_law_terminal_velocity,
     skydive,
+    sphere_volume,
+    stokes_constant,
     terminal_velocity,
     terminal_velocity_ratio,
     thrown_upwards,
@@ -535,3 +537,13 @@ def test_four_times_the_mass_falls_twice_as_fast_with_kv2_and_four_times_with_kv
 def test_a_drag_law_refuses_impossible_input_naming_the_argument(call, message):
     with pytest.raises(ValueError, match=message):
         call()
+
+
+def test_stokes_law_is_a_kv_law_with_k_6_pi_eta_r():
+    # a 2.0 mm ball in a liquid with eta = 1.4 Pa s: k = 6 pi 1.4 2.0e-3 = 0.0528 kg s^-1
+    assert stokes_constant(1.4, 2.0e-3) == pytest.approx(6 * np.pi * 1.4 * 2.0e-3)
+    assert sphere_volume(2.0e-3) == pytest.approx(4 / 3 * np.pi * 8.0e-9)
+    with pytest.raises(ValueError, match=r"viscosity must be positive \(got viscosity=0.0 Pa s"):
+        stokes_constant(0.0, 1e-3)
+    with pytest.raises(ValueError, match=r"radius must be positive \(got radius=-0.001 m"):
+        sphere_volume(-1e-3)

@@ -1,4 +1,4 @@
-# ruff: noqa: RUF002, RUF003  (question text is typeset: true minus, times, Greek letters)
+# ruff: noqa: RUF001, RUF002, RUF003  (question text is typeset: true minus, times, Greek letters)
 """The drag-law and two-dimensional templates of issue 25, checked against formulas worked by
 hand from each variant's printed text: never through the template's own physics (the models).
 
@@ -71,6 +71,20 @@ def test_a_heavier_ball_falls_faster_by_the_root_of_the_mass_ratio_for_kv2_and_t
     _same(accel, G * (given["mass of B"] - given["mass of A"]) / given["mass of B"])
 
 
+@pytest.mark.parametrize(("index", "question"), _variants("stokes-terminal-speed"))
+def test_stokes_terminal_speed_is_the_weight_less_the_upthrust_over_6_pi_eta_r(index, question):
+    given = _printed(question)
+    r = given["radius"] / 1000  # printed in mm
+    volume = 4 / 3 * math.pi * r**3
+    lift = given["density of the liquid"] * G * volume  # upthrust ρgV
+    upthrust, speed = question.parts
+    _same(upthrust, lift)
+    # weight = 6πηrv + upthrust at terminal speed
+    _same(speed, (given["mass"] / 1000 * G - lift) / (6 * math.pi * given["viscosity"] * r))
+    forgot = {m.name: m.value for m in speed.mistakes}["upthrust forgotten"]
+    assert forgot == pytest.approx(given["mass"] / 1000 * G / (6 * math.pi * given["viscosity"] * r))
+
+
 @pytest.mark.parametrize(("index", "question"), _variants("puck-components"))
 def test_puck_components_conserve_momentum_along_and_across_x(index, question):
     given = _printed(question)
@@ -132,6 +146,10 @@ def test_the_printed_variants_match_the_worked_numbers():
     10 − 6.0 cos 40° = 5.4 N s east, 6.0 sin 40° = 3.9 N s south, 4.4 m s⁻¹ at 35.5° south of east."""
     assert [p.answer_text for p in TEMPLATES["drag-law-constant"].variant(0).parts] == ["0.441 N", "0.0031 kg m⁻¹"]
     assert TEMPLATES["drag-law-terminal-ratio"].variant(0).parts[0].answer_text == "30 m s⁻¹"
+    # 0.26 g, r = 2.0 mm in a liquid of 1260 kg m⁻³, η = 1.4 Pa s: U = 1260 × 9.81 × 3.35 × 10⁻⁸ N,
+    # v = (2.55 × 10⁻³ − 4.14 × 10⁻⁴) / (6π × 1.4 × 2.0 × 10⁻³) = 0.040 m s⁻¹
+    stokes = [p.answer_text for p in TEMPLATES["stokes-terminal-speed"].variant(0).parts]
+    assert stokes == ["4.14 × 10⁻⁴ N", "0.040 m s⁻¹"]
     assert TEMPLATES["puck-components"].variant(0).parts[0].answer_text == "0.46 N s"
     shell = [p.answer_text for p in TEMPLATES["explosion-two-pieces"].variant(0).parts]
     assert shell == ["5.4 N s (positive: east)", "3.9 N s", "4.4 m s⁻¹", "35.5° south of east"]
@@ -139,6 +157,7 @@ def test_the_printed_variants_match_the_worked_numbers():
 
 @pytest.mark.parametrize(("key", "values", "message"), [
     ("drag-law-terminal-ratio", {"grams_a": 50.0, "grams_b": 50.0}, r"grams_b must be more than grams_a"),
+    ("stokes-terminal-speed", {"grams": 0.90, "radius_mm": 1.5}, r"grams and radius_mm must give a ball of glass to lead"),
     ("puck-components", {"speed_after": 2.5}, r"speed_after must be less than speed_before=2\.5"),
     ("puck-components", {"m2": 0.20, "speed_after": 2.4, "angle": 70.0}, r"would create kinetic energy"),
     ("explosion-two-pieces", {"piece": 2.0}, r"mass_piece must be less than mass=2\.0 kg"),

@@ -302,7 +302,8 @@ ECF_PARTS = {("quick-check-1", "b"), ("quick-check-3", "b"), ("practice-wall-bou
              ("graph-skydiver-terminal", "c"), ("graph-ball-acceleration", "c"),
              ("graph-trolley-collision", "c"), ("practice-spring-apart", "b"),
              # a drag law given in the question; components and an explosion in two dimensions
-             ("drag-law-constant", "b"), ("puck-components", "c"), ("puck-components", "d"),
+             ("drag-law-constant", "b"), ("stokes-terminal-speed", "b"), ("puck-components", "c"),
+             ("puck-components", "d"),
              ("explosion-two-pieces", "c"), ("explosion-two-pieces", "d")}
 
 

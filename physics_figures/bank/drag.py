@@ -13,6 +13,9 @@ from ..models import (
     drag_force,
     falling_acceleration,
     power_law_constant,
+    power_law_terminal_velocity,
+    sphere_volume,
+    stokes_constant,
     terminal_velocity,
     terminal_velocity_ratio,
     upthrust,
@@ -820,6 +823,85 @@ def drag_law_terminal_ratio(power: float = 2, grams_a: float = 20.0, grams_b: fl
     )
 
 
+#: Densities a ball that sinks in the drag-law questions may have, kg m^-3 (glass to lead).
+_BALL_DENSITY = (2500.0, 11300.0)
+viscosity_symbol, radius_symbol = sympy.symbols("viscosity radius")
+
+
+def stokes_terminal_speed(grams: float = 0.26, radius_mm: float = 2.0, density: float = 1260.0,
+                          viscosity: float = 1.4) -> Question:
+    """A terminal speed from a drag law given in the question (issue 25): Stokes' law
+    F = 6πηrv for a small ball sinking through a viscous liquid. At terminal speed
+    weight = drag + upthrust, so v = (mg − U) / (6πηr), with U = ρgV and V = 4/3 πr³ (notes:
+    "with a given drag formula such as F = 6πηrv, set it equal to W − U and solve for v").
+
+    Marks: 9702/02/M/J/06 gives the law (F = crv) and credits the weight set equal to it with
+    the terminal speed (mg = crv_T); 9702/21/M/J/16 Q3(b)(ii) gives a C1 for the working with
+    its numbers, then the A1; the upthrust follows sphere-in-liquid (a)."""
+    radius, mass = radius_mm / 1000, grams / 1000
+    volume = sphere_volume(radius)
+    if not _BALL_DENSITY[0] <= mass / volume <= _BALL_DENSITY[1]:
+        raise ValueError(f"grams and radius_mm must give a ball of glass to lead, {_BALL_DENSITY[0]:g} to "
+                         f"{_BALL_DENSITY[1]:g} kg m^-3 (got grams={grams!r}, radius_mm={radius_mm!r})")
+    u = upthrust(density, volume)
+    k = stokes_constant(viscosity, radius)
+    v_t = power_law_terminal_velocity(mass, k, power=1, upthrust=u)
+    w_ = weight(mass)
+    gr, r, rho, eta = n(grams, 2), n(radius_mm, 2), n(density, 3), n(viscosity, 2)
+    return Question(
+        key="stokes-terminal-speed",
+        text=(f"A small ball of mass {gr} g and radius {r} mm is released in a tall tube of a liquid of "
+              f"density {rho} kg m<sup>−3</sup>. The viscous drag on the ball is <em>F</em> = 6π<em>ηrv</em>, "
+              f"where <em>r</em> is its radius, <em>v</em> its speed and <em>η</em> = {eta} Pa s. The volume of "
+              "a sphere is 4/3 π<em>r</em><sup>3</sup>. Calculate (a) the upthrust on the ball and (b) its "
+              "terminal speed."),
+        givens=(Given("mass", grams, "g", 2), Given("radius", radius_mm, "mm", 2),
+                Given("density of the liquid", density, "kg m^-3", 3), Given("viscosity", viscosity, "Pa s", 2)),
+        parts=(
+            Part("upthrust on the ball", u, "N", "force", shown_sig_figs=3,
+                 answer_for_g=lambda g: upthrust(density, volume, g=g),
+                 revisit="Upthrust = ρgV, with the density of the liquid and V = 4/3 πr³ (r in m).",
+                 mistakes=(
+                     Mistake("radius left in mm", upthrust(density, sphere_volume(radius_mm)),
+                             f"You used the radius in mm. Convert it to m first: {r} mm = {r} × 10⁻³ m.",
+                             kind="slip"),
+                     Mistake("diameter used for the radius", upthrust(density, sphere_volume(2 * radius)),
+                             f"You used 2 × {r} mm, the diameter. V = 4/3 πr³ with the radius."),
+                     Mistake("the ball's weight", w_,
+                             "That is the ball's weight. The upthrust uses the density of the liquid: ρgV."),
+                 ), see="skydiver"),
+            Part("terminal speed of the ball", v_t, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
+                 # no g = 10 here: a g slip is named in (a), and (b) carries (a) forward
+                 ecf=Ecf((mass_symbol * g_symbol - a_answer) / (6 * sympy.pi * viscosity_symbol * radius_symbol),
+                         {"mass": mass, "g_earth": G_EARTH, "viscosity": viscosity, "radius": radius}),
+                 revisit="At terminal speed the resultant force is zero: mg = 6πηrv + U, so "
+                         "v = (mg − U) / (6πηr), with r in m.",
+                 mistakes=(
+                     Mistake("upthrust forgotten", power_law_terminal_velocity(mass, k, power=1),
+                             "You set the drag equal to the weight. In a liquid the upthrust helps to hold "
+                             "the ball up: weight = drag + upthrust."),
+                     Mistake("upthrust added to the weight", (w_ + u) / k,
+                             "The upthrust acts upwards, with the drag: weight = drag + upthrust, so subtract "
+                             "it from the weight."),
+                     Mistake("radius left in mm", (w_ - u) / stokes_constant(viscosity, radius_mm),
+                             f"You used the radius in mm in 6πηr. Convert it to m first: {r} mm = {r} × 10⁻³ m.",
+                             kind="slip"),
+                     Mistake("diameter used for the radius", (w_ - u) / stokes_constant(viscosity, 2 * radius),
+                             f"You used 2 × {r} mm, the diameter. Stokes' law uses the radius."),
+                 ), see="skydiver"),
+        ),
+        mark_scheme=(
+            Mark(f"V = 4/3 π × ({r} × 10<sup>−3</sup>)<sup>3</sup> = {n(volume, 3)} m<sup>3</sup>; U = ρgV = "
+                 f"{rho} × {n(G_EARTH, 3)} × {n(volume, 3)}", "C1", "a"),
+            Mark(f"= {n(u, 3)} N", "A1", "a"),
+            Mark("At terminal speed weight = drag + upthrust: mg = 6πηrv + U", "C1", "b"),
+            Mark(f"v = ({n(mass, 2)} × {n(G_EARTH, 3)} − {n(u, 3)}) / (6π × {eta} × {r} × 10<sup>−3</sup>)",
+                 "C1", "b"),
+            Mark(f"= {n(v_t, 2)} {PER_S}", "A1", "b"),
+        ),
+    )
+
+
 TEMPLATES = (
     Template("quick-check-3", "drag", ("numeric",), "Quick check 3", skydiver_parachute_opens,
              {"mass": Draw(70.0, 50.0, 99.0, 1.0), "open_drag": Draw(1500.0, 1000.0, 2500.0, 100.0)}),
@@ -856,4 +938,7 @@ TEMPLATES = (
              drag_law_terminal_ratio,
              {"power": Draw(2, 1, 2, 1), "grams_a": Draw(20.0, 10.0, 50.0, 5.0),
               "grams_b": Draw(80.0, 30.0, 95.0, 5.0), "speed_a": Draw(15.0, 5.0, 30.0, 1.0)}),
+    Template("stokes-terminal-speed", "drag", ("numeric",), "A drag law: Stokes' law", stokes_terminal_speed,
+             {"grams": Draw(0.26, 0.10, 0.90, 0.01), "radius_mm": Draw(2.0, 1.5, 3.0, 0.1),
+              "density": Draw(1260.0, 900.0, 1260.0, 10.0), "viscosity": Draw(1.4, 0.6, 1.5, 0.1)}),
 )

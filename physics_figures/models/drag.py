@@ -670,3 +670,24 @@ def terminal_velocity_ratio(mass_ratio, *, power):
     """
     ratio = check.positive("mass_ratio", mass_ratio)
     return float(ratio ** (1 / _drag_power(power)))
+
+
+def sphere_volume(radius):
+    """Volume of a sphere, V = (4/3) pi r³ (for the upthrust on a ball in a liquid).
+
+    radius: m (> 0; scalar or array). Returns V in m^3. Raises ValueError for a radius
+    <= 0 or not finite.
+    """
+    return 4 / 3 * np.pi * check.positive("radius", radius, unit="m") ** 3
+
+
+def stokes_constant(viscosity, radius):
+    """The constant of Stokes' law F = 6 pi eta r v, as a law F = k v: k = 6 pi eta r.
+
+    A small sphere moving slowly through a viscous fluid (papers give the law; the notes need
+    no coefficient of viscosity). viscosity eta: Pa s = N s m^-2 (> 0); radius r: m (> 0).
+    Returns k in kg s^-1 (= N s m^-1), for power_law_drag and power_law_terminal_velocity
+    with power=1. Raises ValueError for a value <= 0 or not finite.
+    """
+    viscosity = check.positive("viscosity", viscosity, unit="Pa s")
+    return 6 * np.pi * viscosity * check.positive("radius", radius, unit="m")

@@ -15,8 +15,14 @@ from physics_figures.models import (
     earliest_opening,
     falling_acceleration,
     open_canopy,
+    power_law_constant,
+    power_law_drag,
+    power_law_terminal_velocity,
     skydive,
+    sphere_volume,
+    stokes_constant,
     terminal_velocity,
+    terminal_velocity_ratio,
     thrown_upwards,
     time_to_slow_to_terminal,
     time_to_terminal_velocity,
@@ -475,3 +481,69 @@ def test_falling_acceleration_is_the_resultant_force_over_the_mass():
 def test_falling_acceleration_refuses_bad_inputs_with_the_rule(call, message):
     with pytest.raises(ValueError, match=message):
         call()
+
+
+# --- a drag law given in a question: F = k vⁿ (issue 25) ---------------------------------------
+
+powers = st.sampled_from((1, 2))  # the laws papers give: kv (and 6 pi eta r v), kv² (and C rho A v² / 2)
+
+
+@FAST
+@given(mass=masses, k=st.floats(0.001, 50.0), power=powers)
+def test_at_the_terminal_velocity_of_a_given_law_the_drag_equals_the_weight(mass, k, power):
+    v_t = power_law_terminal_velocity(mass, k, power=power)
+    assert power_law_drag(k, v_t, power=power) == pytest.approx(weight(mass), rel=1e-9)
+    # and the constant found from that terminal velocity is the law's own (k = mg / v_tⁿ)
+    assert power_law_constant(weight(mass), v_t, power=power) == pytest.approx(k, rel=1e-9)
+
+
+@FAST
+@given(mass=masses, v_t=terminal_speeds)
+def test_the_square_law_is_the_quadratic_drag_of_the_other_models(mass, v_t):
+    k = drag_constant_for_terminal_velocity(mass, v_t)
+    assert power_law_constant(weight(mass), v_t, power=2) == pytest.approx(k, rel=1e-12)
+    assert power_law_terminal_velocity(mass, k, power=2) == pytest.approx(terminal_velocity(mass, k), rel=1e-12)
+    assert power_law_drag(k, v_t, power=2) == pytest.approx(drag_force(k, v_t), rel=1e-12)
+
+
+@FAST
+@given(mass=masses, ratio=st.floats(0.05, 20.0), k=st.floats(0.001, 50.0), power=powers)
+def test_the_ratio_of_terminal_speeds_is_that_of_two_bodies_with_one_law(mass, ratio, k, power):
+    slow = power_law_terminal_velocity(mass, k, power=power)
+    fast = power_law_terminal_velocity(mass * ratio, k, power=power)
+    assert terminal_velocity_ratio(ratio, power=power) == pytest.approx(fast / slow, rel=1e-9)
+
+
+def test_four_times_the_mass_falls_twice_as_fast_with_kv2_and_four_times_with_kv():
+    # issue 25's example: with F = kv² a body of 4 times the mass has twice the terminal speed
+    assert terminal_velocity_ratio(4.0, power=2) == pytest.approx(2.0)
+    assert terminal_velocity_ratio(4.0, power=1) == pytest.approx(4.0)
+    # F = kv: a 0.20 kg ball with k = 0.050 kg s⁻¹ falls at 0.20 * 9.81 / 0.050 = 39.24 m s⁻¹
+    assert power_law_terminal_velocity(0.20, 0.050, power=1) == pytest.approx(39.24)
+    # in a liquid the upthrust helps the drag: k v_t = mg - U
+    assert power_law_terminal_velocity(0.20, 0.050, power=1, upthrust=0.962) == pytest.approx(20.0)
+
+
+@pytest.mark.parametrize(("call", "message"), [
+    (lambda: power_law_drag(0.0, 3.0, power=2), r"k must be positive \(got k=0.0"),
+    (lambda: power_law_drag(0.1, -3.0, power=2), r"speed must not be negative \(got speed=-3.0"),
+    (lambda: power_law_drag(0.1, 3.0, power=0), r"power must be positive \(got power=0"),
+    (lambda: power_law_constant(5.0, 0.0, power=1), r"speed must be positive \(got speed=0.0"),
+    (lambda: power_law_constant(-5.0, 2.0, power=1), r"drag must be positive \(got drag=-5.0"),
+    (lambda: power_law_terminal_velocity(0.2, 0.05, power=1, upthrust=5.0), "upthrust must be less than the weight"),
+    (lambda: power_law_terminal_velocity(0.2, 0.05, power=-1), r"power must be positive \(got power=-1"),
+    (lambda: terminal_velocity_ratio(0.0, power=2), r"mass_ratio must be positive \(got mass_ratio=0.0"),
+])
+def test_a_drag_law_refuses_impossible_input_naming_the_argument(call, message):
+    with pytest.raises(ValueError, match=message):
+        call()
+
+
+def test_stokes_law_is_a_kv_law_with_k_6_pi_eta_r():
+    # a 2.0 mm ball in a liquid with eta = 1.4 Pa s: k = 6 pi 1.4 2.0e-3 = 0.0528 kg s^-1
+    assert stokes_constant(1.4, 2.0e-3) == pytest.approx(6 * np.pi * 1.4 * 2.0e-3)
+    assert sphere_volume(2.0e-3) == pytest.approx(4 / 3 * np.pi * 8.0e-9)
+    with pytest.raises(ValueError, match=r"viscosity must be positive \(got viscosity=0.0 Pa s"):
+        stokes_constant(0.0, 1e-3)
+    with pytest.raises(ValueError, match=r"radius must be positive \(got radius=-0.001 m"):
+        sphere_volume(-1e-3)

@@ -304,7 +304,11 @@ ECF_PARTS = {("quick-check-1", "b"), ("quick-check-3", "b"), ("practice-wall-bou
              # the papers' gaps (issue 25): worked on from an earlier part
              ("stopping-force-distance", "b"), ("mass-from-momentum-change", "b"),
              ("collision-third-law", "b"), ("collision-third-law", "c"),
-             ("sticking-fraction-lost", "b"), ("bounce-energy-ratio", "b")}
+             ("sticking-fraction-lost", "b"), ("bounce-energy-ratio", "b"),
+             # a drag law given in the question; components and an explosion in two dimensions
+             ("drag-law-constant", "b"), ("stokes-terminal-speed", "b"), ("puck-components", "c"),
+             ("puck-components", "d"),
+             ("explosion-two-pieces", "c"), ("explosion-two-pieces", "d")}
 
 
 def test_every_part_that_uses_an_earlier_answer_carries_it_forward():

@@ -12,7 +12,12 @@ from ..models import (
     drag_constant_for_terminal_velocity,
     drag_force,
     falling_acceleration,
+    power_law_constant,
+    power_law_terminal_velocity,
+    sphere_volume,
+    stokes_constant,
     terminal_velocity,
+    terminal_velocity_ratio,
     upthrust,
     velocity_from_rest,
     weight,
@@ -659,6 +664,246 @@ def ball_acceleration_from_graph(terminal: float = 20.0, moment: float = 2.0, ma
     )
 
 
+# ---------------------------------------------------------------- a drag law given in the question
+
+#: The drag laws the papers give, by the power of v (6 pi eta r v is a law of the first kind,
+#: (1/2) C rho A v² one of the second): how the question writes it, in plain text (feedback), and the unit of its
+#: constant k (as typed, in the text format, and its usual forms).
+_DRAG_LAWS = {
+    1: ("<em>F</em> = <em>kv</em>", "F = kv", "kg s^-1", "kg s<sup>−1</sup>", "kg s^-1 (N s m^-1)"),
+    2: ("<em>F</em> = <em>kv</em><sup>2</sup>", "F = kv²", "kg m^-1", "kg m<sup>−1</sup>", "kg m^-1 (N s^2 m^-2)"),
+}
+speed_symbol = sympy.Symbol("speed")
+
+
+def _speed_power(speed_text: str, power: int) -> str:
+    """v or v² as a scheme writes it with the speed's number: "12" or "12<sup>2</sup>"."""
+    return speed_text if power == 1 else f"{speed_text}<sup>{power}</sup>"
+
+
+def drag_law_constant(power: float = 2, grams: float = 45.0, speed: float = 12.0) -> Question:
+    """A drag law given in the question (issue 25): the constant k of F = kvⁿ from a terminal
+    speed. At terminal speed the resultant force is zero, so kvₜⁿ = mg and k = mg / vₜⁿ (notes:
+    "with a given drag formula ... set it equal to W and solve for v or the constant"). The law
+    is F = kv or F = kv² by the variant: the same step, with its own power and unit.
+
+    Marks: 9702/02/M/J/06 gives the drag law (F = crv) and credits "mg = crv_T"; 9702/21/M/J/16
+    Q3(a)(i) gives "force (= mg = 0.15 × 9.81) = 1.5 N" one mark on its own (B1 here), and Q3(b)(ii)
+    a C1 for the equation with its numbers before the A1 for the answer."""
+    power = int(power)
+    law, plain_law, k_unit, k_unit_text, k_units = _DRAG_LAWS[power]
+    mass = grams / 1000
+    drag = weight(mass)  # at terminal speed the resultant force is zero
+    k = power_law_constant(drag, speed, power=power)
+    gr, v = n(grams, 2), n(speed, 2)
+    other = 3 - power  # the other law's power: the speed squared when it should not be, or not
+    return Question(
+        key="drag-law-constant",
+        text=(f"A small ball of mass {gr} g falls vertically through still air. In a model of its fall, the "
+              f"air resistance on it is {law}, where <em>v</em> is its speed and <em>k</em> is a constant. "
+              f"The ball reaches a terminal speed of {v} {PER_S}. (a) State the air resistance on the ball "
+              "at its terminal speed. (b) Calculate <em>k</em>."),
+        givens=(Given("mass", grams, "g", 2), Given("terminal speed", speed, "m s^-1", 2)),
+        parts=(
+            Part("air resistance at the terminal speed", drag, "N", "force", shown_sig_figs=3, asks="state",
+                 answer_for_g=lambda g: weight(mass, g=g),
+                 revisit="At terminal speed the resultant force is zero, so the air resistance equals the "
+                         "weight, mg (with the mass in kg).",
+                 mistakes=(
+                     Mistake("mass given as the force", mass,
+                             f"{n(mass, 2)} kg is the ball's mass. The air resistance equals its weight, mg."),
+                     Mistake("mass left in grams", weight(grams),
+                             f"You used the mass in g. Convert it to kg first: {gr} g = {n(mass, 2)} kg.",
+                             kind="slip"),
+                     Mistake("air resistance is zero", 0.0,
+                             "At terminal speed the resultant force is zero, not the air resistance: it has "
+                             "grown to equal the weight."),
+                 ), see="skydiver"),
+            Part("value of k", k, k_unit, "drag constant", units=k_units, shown_sig_figs=2,
+                 # no g = 10 here: a g slip is made, and named, in (a), and (b) carries it forward
+                 ecf=Ecf(a_answer / speed_symbol**power, {"speed": speed}),
+                 revisit=f"At terminal speed {plain_law} equals the weight mg, so k = mg / "
+                         f"{'v' if power == 1 else 'v²'}.",
+                 mistakes=(
+                     Mistake("speed not squared" if power == 2 else "speed squared",
+                             power_law_constant(drag, speed, power=other),
+                             "You divided by v. The law is F = kv², so k = mg / v²." if power == 2 else
+                             "You divided by v². The law is F = kv, so k = mg / v."),
+                     Mistake("mass used, not the weight", power_law_constant(mass, speed, power=power),
+                             "You used the mass. The air resistance equals the weight, mg, in N."),
+                     Mistake("mass left in grams", power_law_constant(weight(grams), speed, power=power),
+                             f"You used the mass in g. Convert it to kg first: {gr} g = {n(mass, 2)} kg.",
+                             kind="slip"),
+                 ), see="skydiver"),
+        ),
+        mark_scheme=(
+            Mark(f"At terminal speed the resultant force is zero: F = mg = {n(mass, 2)} × {n(G_EARTH, 3)} "
+                 f"= {n(drag, 3)} N", "B1", "a"),
+            Mark(f"k = mg / {_speed_power('v', power)} = {working(drag)} / {_speed_power(v, power)}", "C1", "b"),
+            Mark(f"= {n(k, 2)} {k_unit_text}", "A1", "b"),
+        ),
+    )
+
+
+def drag_law_terminal_ratio(power: float = 2, grams_a: float = 20.0, grams_b: float = 80.0,
+                            speed_a: float = 15.0) -> Question:
+    """A ratio from a drag law given in the question (issue 25): two balls of one size and shape
+    (one k), F = kvⁿ. At terminal speed kvⁿ = mg, so vₜ ∝ m^(1/n): four times the mass falls
+    twice as fast with F = kv², four times as fast with F = kv (notes: same size and shape,
+    heavier one -> higher terminal velocity). Then the heavier ball's acceleration as it passes
+    the lighter one's terminal speed: the drag there is the lighter ball's weight, so
+    a = (m_B g − m_A g) / m_B, whichever the law.
+
+    Marks: 9702/02/M/J/06 sets the given drag law equal to the weight (mg = crv_T); 9702/21/M/J/16
+    Q3(b)(ii) gives C1 for the working with its numbers, then A1 for the answer."""
+    power = int(power)
+    if grams_b <= grams_a:
+        raise ValueError(f"grams_b must be more than grams_a: B is the heavier ball, which passes A's "
+                         f"terminal speed on its way to its own (got grams_a={grams_a!r}, grams_b={grams_b!r})")
+    law = _DRAG_LAWS[power][0]
+    m_a, m_b = grams_a / 1000, grams_b / 1000
+    ratio = grams_b / grams_a
+    speed_b = speed_a * terminal_velocity_ratio(ratio, power=power)
+    w_a, w_b = weight(m_a), weight(m_b)
+    a = falling_acceleration(m_b, w_a)  # at A's terminal speed the drag on B is A's weight
+    ga, gb, va = n(grams_a, 2), n(grams_b, 2), n(speed_a, 2)
+    root = f"√({gb} / {ga})" if power == 2 else f"({gb} / {ga})"
+    forgot_root = "square root forgotten" if power == 2 else "square root taken"
+    return Question(
+        key="drag-law-terminal-ratio",
+        text=(f"Two balls A and B have the same size and shape, so the air resistance on each is {law}, "
+              "where <em>v</em> is its speed, with the same constant <em>k</em>. Ball A has mass "
+              f"{ga} g and falls vertically at a terminal speed of {va} {PER_S}. Ball B has mass {gb} g and "
+              "is dropped from rest. Calculate (a) the terminal speed of B and (b) the size of B's "
+              f"acceleration at the moment its speed is {va} {PER_S}."),
+        givens=(Given("mass of A", grams_a, "g", 2), Given("mass of B", grams_b, "g", 2),
+                Given("terminal speed of A", speed_a, "m s^-1", 2)),
+        parts=(
+            Part("terminal speed of B", speed_b, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
+                 revisit=(f"At terminal speed {'kv²' if power == 2 else 'kv'} = mg, so "
+                          f"{'v²' if power == 2 else 'v'} is proportional to the mass: "
+                          f"{'v_B = v_A √(m_B / m_A)' if power == 2 else 'v_B = v_A × m_B / m_A'}."),
+                 mistakes=(
+                     Mistake(forgot_root, speed_a * terminal_velocity_ratio(ratio, power=3 - power),
+                             "The law is F = kv², so v² is proportional to the mass: take the square root "
+                             "of the ratio of the masses." if power == 2 else
+                             "The law is F = kv, so v itself is proportional to the mass: no square root."),
+                     Mistake("masses the wrong way up", speed_a * terminal_velocity_ratio(1 / ratio, power=power),
+                             "You divided B's terminal speed by the ratio. B is heavier, so it needs more "
+                             "air resistance, and so a higher speed, to balance its weight."),
+                     Mistake("same terminal speed as A", speed_a,
+                             "Without air resistance both would fall alike. With it, the heavier ball "
+                             "needs a larger drag, so a higher speed, before the drag equals its weight."),
+                 ), see="skydiver"),
+            Part(f"size of B's acceleration at {va} m s⁻¹", a, "m s^-2", "acceleration", units=M_S2,
+                 shown_sig_figs=2,
+                 working=(Step("air resistance on B (A's weight)", w_a, "N"),),
+                 answer_from=lambda drag_: falling_acceleration(m_b, drag_),
+                 answer_for_g=lambda g: falling_acceleration(m_b, weight(m_a, g=g), g=g),
+                 revisit=f"At {va} m s⁻¹ the air resistance on B is what it is on A at that speed: A's "
+                         "weight. Resultant force = B's weight − air resistance; a = F / m.",
+                 mistakes=(
+                     Mistake("air resistance left out", G_EARTH,
+                             "That is g, the acceleration with no air resistance. At this speed the air "
+                             "resistance on B equals A's weight."),
+                     Mistake("A's weight used as the resultant force", acceleration(w_a, m_b),
+                             "You used the air resistance as the resultant force. B's weight still acts: "
+                             "resultant = B's weight − air resistance."),
+                     Mistake("air resistance added to the weight", acceleration(w_b + w_a, m_b),
+                             "The weight acts downwards and the air resistance upwards: subtract them."),
+                 ), see="skydiver"),
+        ),
+        mark_scheme=(
+            Mark(f"At terminal speed {'kv<sup>2</sup>' if power == 2 else 'kv'} = mg, so "
+                 f"{_speed_power('v', power)} is proportional to m", "C1", "a"),
+            Mark(f"v<sub>B</sub> = {va} × {root} = {n(speed_b, 2)} {PER_S}", "A1", "a"),
+            Mark(f"At {va} {PER_S} the air resistance on B equals A's weight, {n(m_a, 2)} × {n(G_EARTH, 3)} "
+                 f"= {working(w_a)} N", "C1", "b"),
+            Mark(f"a = ({working(w_b)} − {working(w_a)}) / {n(m_b, 2)}", "C1", "b"),
+            Mark(f"= {n(a, 2)} {PER_S2} (downwards)", "A1", "b"),
+        ),
+    )
+
+
+#: Densities a ball that sinks in the drag-law questions may have, kg m^-3 (glass to lead).
+_BALL_DENSITY = (2500.0, 11300.0)
+viscosity_symbol, radius_symbol = sympy.symbols("viscosity radius")
+
+
+def stokes_terminal_speed(grams: float = 0.26, radius_mm: float = 2.0, density: float = 1260.0,
+                          viscosity: float = 1.4) -> Question:
+    """A terminal speed from a drag law given in the question (issue 25): Stokes' law
+    F = 6πηrv for a small ball sinking through a viscous liquid. At terminal speed
+    weight = drag + upthrust, so v = (mg − U) / (6πηr), with U = ρgV and V = 4/3 πr³ (notes:
+    "with a given drag formula such as F = 6πηrv, set it equal to W − U and solve for v").
+
+    Marks: 9702/02/M/J/06 gives the law (F = crv) and credits the weight set equal to it with
+    the terminal speed (mg = crv_T); 9702/21/M/J/16 Q3(b)(ii) gives a C1 for the working with
+    its numbers, then the A1; the upthrust follows sphere-in-liquid (a)."""
+    radius, mass = radius_mm / 1000, grams / 1000
+    volume = sphere_volume(radius)
+    if not _BALL_DENSITY[0] <= mass / volume <= _BALL_DENSITY[1]:
+        raise ValueError(f"grams and radius_mm must give a ball of glass to lead, {_BALL_DENSITY[0]:g} to "
+                         f"{_BALL_DENSITY[1]:g} kg m^-3 (got grams={grams!r}, radius_mm={radius_mm!r})")
+    u = upthrust(density, volume)
+    k = stokes_constant(viscosity, radius)
+    v_t = power_law_terminal_velocity(mass, k, power=1, upthrust=u)
+    w_ = weight(mass)
+    gr, r, rho, eta = n(grams, 2), n(radius_mm, 2), n(density, 3), n(viscosity, 2)
+    return Question(
+        key="stokes-terminal-speed",
+        text=(f"A small ball of mass {gr} g and radius {r} mm is released in a tall tube of a liquid of "
+              f"density {rho} kg m<sup>−3</sup>. The viscous drag on the ball is <em>F</em> = 6π<em>ηrv</em>, "
+              f"where <em>r</em> is its radius, <em>v</em> its speed and <em>η</em> = {eta} Pa s. The volume of "
+              "a sphere is 4/3 π<em>r</em><sup>3</sup>. Calculate (a) the upthrust on the ball and (b) its "
+              "terminal speed."),
+        givens=(Given("mass", grams, "g", 2), Given("radius", radius_mm, "mm", 2),
+                Given("density of the liquid", density, "kg m^-3", 3), Given("viscosity", viscosity, "Pa s", 2)),
+        parts=(
+            Part("upthrust on the ball", u, "N", "force", shown_sig_figs=3,
+                 answer_for_g=lambda g: upthrust(density, volume, g=g),
+                 revisit="Upthrust = ρgV, with the density of the liquid and V = 4/3 πr³ (r in m).",
+                 mistakes=(
+                     Mistake("radius left in mm", upthrust(density, sphere_volume(radius_mm)),
+                             f"You used the radius in mm. Convert it to m first: {r} mm = {r} × 10⁻³ m.",
+                             kind="slip"),
+                     Mistake("diameter used for the radius", upthrust(density, sphere_volume(2 * radius)),
+                             f"You used 2 × {r} mm, the diameter. V = 4/3 πr³ with the radius."),
+                     Mistake("the ball's weight", w_,
+                             "That is the ball's weight. The upthrust uses the density of the liquid: ρgV."),
+                 ), see="skydiver"),
+            Part("terminal speed of the ball", v_t, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
+                 # no g = 10 here: a g slip is named in (a), and (b) carries (a) forward
+                 ecf=Ecf((mass_symbol * g_symbol - a_answer) / (6 * sympy.pi * viscosity_symbol * radius_symbol),
+                         {"mass": mass, "g_earth": G_EARTH, "viscosity": viscosity, "radius": radius}),
+                 revisit="At terminal speed the resultant force is zero: mg = 6πηrv + U, so "
+                         "v = (mg − U) / (6πηr), with r in m.",
+                 mistakes=(
+                     Mistake("upthrust forgotten", power_law_terminal_velocity(mass, k, power=1),
+                             "You set the drag equal to the weight. In a liquid the upthrust helps to hold "
+                             "the ball up: weight = drag + upthrust."),
+                     Mistake("upthrust added to the weight", (w_ + u) / k,
+                             "The upthrust acts upwards, with the drag: weight = drag + upthrust, so subtract "
+                             "it from the weight."),
+                     Mistake("radius left in mm", (w_ - u) / stokes_constant(viscosity, radius_mm),
+                             f"You used the radius in mm in 6πηr. Convert it to m first: {r} mm = {r} × 10⁻³ m.",
+                             kind="slip"),
+                     Mistake("diameter used for the radius", (w_ - u) / stokes_constant(viscosity, 2 * radius),
+                             f"You used 2 × {r} mm, the diameter. Stokes' law uses the radius."),
+                 ), see="skydiver"),
+        ),
+        mark_scheme=(
+            Mark(f"V = 4/3 π × ({r} × 10<sup>−3</sup>)<sup>3</sup> = {n(volume, 3)} m<sup>3</sup>; U = ρgV = "
+                 f"{rho} × {n(G_EARTH, 3)} × {n(volume, 3)}", "C1", "a"),
+            Mark(f"= {n(u, 3)} N", "A1", "a"),
+            Mark("At terminal speed weight = drag + upthrust: mg = 6πηrv + U", "C1", "b"),
+            Mark(f"v = ({n(mass, 2)} × {n(G_EARTH, 3)} − {n(u, 3)}) / (6π × {eta} × {r} × 10<sup>−3</sup>)",
+                 "C1", "b"),
+            Mark(f"= {n(v_t, 2)} {PER_S}", "A1", "b"),
+        ),
+    )
+
+
 TEMPLATES = (
     Template("quick-check-3", "drag", ("numeric",), "Quick check 3", skydiver_parachute_opens,
              {"mass": Draw(70.0, 50.0, 99.0, 1.0), "open_drag": Draw(1500.0, 1000.0, 2500.0, 100.0)}),
@@ -687,4 +932,15 @@ TEMPLATES = (
              ball_acceleration_from_graph,
              {"terminal": Draw(20.0, 10.0, 25.0, 0.5), "moment": Draw(2.0, 0.5, 3.0, 0.5),
               "mass": Draw(0.050, 0.020, 0.080, 0.005)}),
+    Template("drag-law-constant", "drag", ("numeric",), "A drag law: find k", drag_law_constant,
+             # in 3 g steps: 50 g would weigh 0.4905 N, a tie at 3 s.f. that g = 9.8 (0.490 N) sits on
+             {"power": Draw(2, 1, 2, 1), "grams": Draw(45.0, 21.0, 96.0, 3.0),
+              "speed": Draw(12.0, 4.0, 40.0, 1.0)}),
+    Template("drag-law-terminal-ratio", "drag", ("numeric",), "A drag law: heavier, faster",
+             drag_law_terminal_ratio,
+             {"power": Draw(2, 1, 2, 1), "grams_a": Draw(20.0, 10.0, 50.0, 5.0),
+              "grams_b": Draw(80.0, 30.0, 95.0, 5.0), "speed_a": Draw(15.0, 5.0, 30.0, 1.0)}),
+    Template("stokes-terminal-speed", "drag", ("numeric",), "A drag law: Stokes' law", stokes_terminal_speed,
+             {"grams": Draw(0.26, 0.10, 0.90, 0.01), "radius_mm": Draw(2.0, 1.5, 3.0, 0.1),
+              "density": Draw(1260.0, 900.0, 1260.0, 10.0), "viscosity": Draw(1.4, 0.6, 1.5, 0.1)}),
 )

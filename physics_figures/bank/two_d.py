@@ -16,6 +16,7 @@ from ..models import (
     missing_momentum,
     momentum,
     oblique_bounce_momentum_change,
+    split_in_two,
     stick_together,
     total_kinetic_energy,
     velocity_after_collision,
@@ -391,6 +392,257 @@ def oblique_wall_bounce(mass: float = 0.060, speed: float = 20.0, angle: float =
     )
 
 
+#: Which side of the x-direction the struck puck moves to, against the moving one's side.
+_SIDES = ("on the other side of the x-direction from A", "on the same side of the x-direction as A")
+
+
+def puck_components(m1: float = 0.40, speed_before: float = 2.5, m2: float = 0.60, speed_after: float = 1.5,
+                    angle: float = 40.0) -> Question:
+    """Components of momentum before and after (issue 25): A, moving along x, hits B at rest and
+    moves off at an angle. Resolve A's momentum after (p cos θ along x, p sin θ across it), then
+    conserve each component to find B's velocity (notes, "Momentum in two dimensions" and
+    Example 4). Named mistakes: sin and cos swapped, momentum treated as a scalar, a component
+    forgotten.
+
+    Marks: 9702/21/M/J/16 Q2(a) credits each component on its own ("12 cos 50°", "12 sin 50°"),
+    and Q2(c) a C1 for each step then the A1 for Pythagoras on the components; Q3(b)(ii) gives
+    a direction its own B1."""
+    if speed_after >= speed_before:
+        raise ValueError(f"speed_after must be less than speed_before={speed_before!r} m s^-1: puck A "
+                         f"cannot speed up by hitting a puck at rest (got speed_after={speed_after!r})")
+    p_before, p_after = momentum(m1, speed_before), momentum(m1, speed_after)
+    hit = glancing_collision(p_before, p_after, angle, mass_moving=m1, mass_struck=m2)
+    if hit.kinetic_energy_transferred < 0:
+        raise ValueError(f"these speeds would create kinetic energy ({n(-hit.kinetic_energy_transferred, 3)} J): "
+                         f"lower speed_after={speed_after!r} or raise m2={m2!r}")
+    if hit.missing.along <= 0:  # the push on B is along the line of centres, which points forwards
+        raise ValueError(f"B must move forwards: A's x-component after, {n(hit.known_vector[0], 3)} N s, must be "
+                         f"less than its momentum before, {n(p_before, 3)} N s (got angle={angle!r})")
+    a_x, a_y = hit.known_vector
+    b = hit.missing
+    swapped = missing_momentum(p_before, p_after, 90.0 - angle)
+    ma, mb, u, v, theta = n(m1, 2), n(m2, 2), n(speed_before, 2), n(speed_after, 2), n(angle, 2)
+    sym_a, sym_b, sym_p, sym_m2 = sympy.symbols("a b p_before m_b")
+    # B's components with the figures that the speed and the angle need, from (a) and (b) as printed
+    b_x_text = n(b.along, 3)
+    (a_x_carried,) = enough_figures((a_x,), lambda x: p_before - x, b_x_text)
+    b_x, b_y = enough_figures((b.along, b.across), lambda x, y: math.hypot(x, y), n(b.magnitude, 3))
+    b_x_t, b_y_t = enough_figures((b.along, b.across), lambda x, y: math.degrees(math.atan2(y, x)),
+                                  n(b.angle_deg, 3))
+    return Question(
+        key="puck-components",
+        text=(f"On a frictionless air table, puck A of mass {ma} kg moves in the x-direction at {u} {PER_S} "
+              f"and hits puck B of mass {mb} kg, which is at rest. After the collision A moves at {v} {PER_S} "
+              f"at {theta}° to the x-direction. Calculate (a) the x-component and (b) the size of the "
+              "y-component of A's momentum after the collision. For B after the collision, calculate (c) its "
+              "speed and (d) the angle between its velocity and the x-direction, and state on which side of "
+              "the x-direction it moves."),
+        givens=(Given("mass of A", m1, "kg", 2), Given("speed of A before", speed_before, "m s^-1", 2),
+                Given("mass of B", m2, "kg", 2), Given("speed of A after", speed_after, "m s^-1", 2),
+                Given("angle", angle, "°", 2)),
+        parts=(
+            Part("x-component of A's momentum after", a_x, "N s", "momentum", units=N_S, shown_sig_figs=2,
+                 revisit=f"Resolve A's momentum after: the angle is from the x-direction, so the x-component "
+                         f"is p cos {theta}°.",
+                 mistakes=(
+                     Mistake("sin and cos swapped", a_y,
+                             f"You used sin. The angle {theta}° is measured from the x-direction, so the "
+                             "x-component is p cos θ and the y-component p sin θ."),
+                     Mistake("not resolved", p_after,
+                             "That is the whole of A's momentum after. Its x-component is p cos θ."),
+                 ), see="two-d"),
+            Part("size of the y-component of A's momentum after", a_y, "N s", "momentum", units=N_S,
+                 shown_sig_figs=2,
+                 revisit="The y-component is at right angles to the x-direction: p sin θ.",
+                 mistakes=(
+                     Mistake("sin and cos swapped", a_x,
+                             f"You used cos. The angle {theta}° is measured from the x-direction, so the "
+                             "y-component is p sin θ."),
+                     Mistake("not resolved", p_after,
+                             "That is the whole of A's momentum after. Its y-component is p sin θ."),
+                 ), see="two-d"),
+            Part("speed of B after the collision", b.magnitude / m2, "m s^-1", "speed", units=M_S,
+                 shown_sig_figs=2,
+                 ecf=Ecf(sympy.sqrt((sym_p - sym_a) ** 2 + sym_b**2) / sym_m2, {"p_before": p_before, "m_b": m2}),
+                 revisit="Conserve each component: B's x-component = A's momentum before − A's x-component "
+                         "after; B's y-component cancels A's. Combine them with Pythagoras, then divide by "
+                         "B's mass.",
+                 mistakes=(
+                     Mistake("momentum treated as a scalar", velocity_after_collision(m1, speed_before, m2, 0.0,
+                                                                                      speed_after),
+                             "You subtracted the sizes of A's momenta as if A carried straight on. Momentum "
+                             "is a vector: conserve the x- and y-components separately.", see="conservation"),
+                     Mistake("sin and cos swapped", velocity_from_momentum(swapped.magnitude, m2),
+                             f"You swapped sin and cos. The angle is from the x-direction, so A's x-component "
+                             f"is p cos {theta}° and its y-component p sin {theta}°."),
+                     Mistake("y-component forgotten", velocity_from_momentum(b.along, m2),
+                             "That uses only B's x-component. B also has a y-component, equal and opposite to "
+                             "A's: combine them with Pythagoras."),
+                     Mistake("components added", velocity_from_momentum(b.along + b.across, m2),
+                             "You added B's two components. They are at right angles: p = √(x² + y²)."),
+                     Mistake("divided by A's mass", velocity_from_momentum(b.magnitude, m1),
+                             f"You divided B's momentum by A's mass. v = p / m with B's own mass, {mb} kg.",
+                             see="momentum"),
+                 ), see="two-d"),
+            Part("angle between B's velocity and the x-direction", b.angle_deg, "°", "angle", units="° (degrees)",
+                 shown_sig_figs=3, direction="choice", choices=_SIDES, answer_direction=_SIDES[0],
+                 ecf=Ecf(sympy.atan(sym_b / (sym_p - sym_a)) * 180 / sympy.pi, {"p_before": p_before}),
+                 direction_hint="Before the collision there is no y-momentum, so after it B's y-component "
+                                "cancels A's: B moves to the other side.",
+                 revisit="tan θ = (B's y-component) / (B's x-component), on the other side of the "
+                         "x-direction from A.",
+                 mistakes=(
+                     Mistake("tan the wrong way up", 90.0 - b.angle_deg,
+                             "You measured the angle from the y-direction. tan θ = y-component / "
+                             "x-component gives it from the x-direction."),
+                     Mistake("same angle as A", angle,
+                             "B need not move at A's angle. Work out B's components and use tan θ = y / x."),
+                     Mistake("sin and cos swapped", swapped.angle_deg,
+                             "You swapped sin and cos in resolving A's momentum: its x-component is p cos θ, "
+                             "its y-component p sin θ."),
+                     Mistake("same side as A", b.angle_deg,
+                             "The y-momentum is zero before, so B's y-component is opposite to A's: B moves "
+                             "to the other side of the x-direction.", direction=_SIDES[1]),
+                 ), see="two-d"),
+        ),
+        mark_scheme=(
+            Mark(f"p<sub>A</sub> after = {ma} × {v} = {w(p_after)} N s; x-component = {w(p_after)} cos {theta}°",
+                 "C1", "a"),
+            Mark(f"= {n(a_x, 2)} N s", "A1", "a"),
+            Mark(f"y-component = {w(p_after)} sin {theta}°", "C1", "b"),
+            Mark(f"= {n(a_y, 2)} N s", "A1", "b"),
+            Mark(f"B, x: {ma} × {u} = {w(p_before)} = {a_x_carried} + p<sub>x</sub>, so p<sub>x</sub> = "
+                 f"{b_x_text} N s; y: p<sub>y</sub> = {n(b.across, 3)} N s, opposite to A's", "C1", "c"),
+            Mark(f"p<sub>B</sub> = √({b_x}<sup>2</sup> + {b_y}<sup>2</sup>) = {n(b.magnitude, 3)} N s", "C1", "c"),
+            Mark(f"v = {n(b.magnitude, 3)} / {mb} = {n(b.magnitude / m2, 2)} {PER_S}", "A1", "c"),
+            Mark(f"tan θ = {b_y_t} / {b_x_t}", "C1", "d"),
+            Mark(f"θ = {n(b.angle_deg, 3)}°", "A1", "d"),
+            Mark("on the other side of the x-direction from A (the y-components cancel)", "B1", "d",
+                 earns="direction"),
+        ),
+    )
+
+
+def explosion_two_pieces(mass: float = 2.0, speed: float = 5.0, piece: float = 0.50, piece_speed: float = 12.0,
+                         angle: float = 40.0, side: float = 0) -> Question:
+    """An explosion into two pieces at an angle (issue 25): a shell moving due east splits in two;
+    one piece's velocity is given at an angle north or south of east. Conserve momentum east and
+    north separately (notes, "Momentum in two dimensions"): the other piece's eastward momentum
+    is M u - m₁v₁ cos θ (negative: it moves west) and its north-south momentum cancels the
+    first piece's. Named mistakes: sin and cos swapped, momentum added as scalars, a component
+    forgotten, the momentum before forgotten.
+
+    Marks: 9702/21/M/J/16 Q2(a) credits each resolved component, Q2(c) a C1 for each step and the
+    A1 for Pythagoras on the components; Q3(b)(ii) gives C1 then A1, and the direction its own B1."""
+    north = int(side) == 0
+    split = split_in_two(mass, speed, piece, piece_speed, angle)
+    if abs(split.along) < 0.05 * split.magnitude:  # almost due north or south: no angle to east-west to ask
+        raise ValueError(f"the other piece must not move almost due north or south (eastward momentum "
+                         f"{n(split.along, 2)} N s; got angle={angle!r})")
+    p_before, p_piece = momentum(mass, speed), momentum(piece, piece_speed)
+    east, across = split.along, abs(split.across)
+    angle_other = math.degrees(math.atan2(across, abs(east)))  # from the east-west line
+    first = "north" if north else "south"
+    other = "south" if north else "north"
+    answer = f"{other} of {'east' if east > 0 else 'west'}"
+    wrong_side = f"{first} of {'east' if east > 0 else 'west'}"
+    swapped = split_in_two(mass, speed, piece, piece_speed, 90.0 - angle)
+    sym_a, sym_b, sym_m = sympy.symbols("a b m_rest")
+    mm, uu, m1, v1, theta, rest = n(mass, 2), n(speed, 2), n(piece, 2), n(piece_speed, 2), n(angle, 2), n(split.mass, 2)
+    (east_c, across_c) = enough_figures((abs(east), across), lambda x, y: math.hypot(x, y), n(split.magnitude, 3))
+    (east_d, across_d) = enough_figures((abs(east), across), lambda x, y: math.degrees(math.atan2(y, x)),
+                                        n(angle_other, 3))
+    return Question(
+        key="explosion-two-pieces",
+        text=(f"A firework shell of mass {mm} kg is moving horizontally due east at {uu} {PER_S} when it explodes "
+              f"into two pieces. Just after the explosion, a piece of mass {m1} kg moves horizontally at {v1} "
+              f"{PER_S} at {theta}° {first} of east. For the other piece, calculate (a) its momentum due east "
+              "(negative if it moves west), (b) the size of its momentum due north or south, (c) its speed and "
+              "(d) the angle between its direction and the east–west line, and give the direction."),
+        givens=(Given("mass of the shell", mass, "kg", 2), Given("speed of the shell", speed, "m s^-1", 2),
+                Given("mass of the piece", piece, "kg", 2), Given("speed of the piece", piece_speed, "m s^-1", 2),
+                Given("angle", angle, "°", 2)),
+        parts=(
+            Part("momentum of the other piece due east", east, "N s", "momentum", units=N_S, shown_sig_figs=2,
+                 direction="signed", positive="east",
+                 revisit=f"Eastward momentum is conserved: {mm} × {uu} = (the piece's p cos {theta}°) + (the "
+                         "other piece's eastward momentum).",
+                 mistakes=(
+                     Mistake("sin and cos swapped", p_before - p_piece * math.sin(math.radians(angle)),
+                             f"You used sin. The angle {theta}° is measured from east, so the piece's eastward "
+                             "component is p cos θ."),
+                     Mistake("momentum before forgotten", -p_piece * math.cos(math.radians(angle)),
+                             f"The shell was moving before it exploded: the total eastward momentum is "
+                             f"{mm} × {uu} N s, not zero.", see="explosions"),
+                 ), see="two-d"),
+            Part("size of the other piece's momentum due north or south", across, "N s", "momentum", units=N_S,
+                 shown_sig_figs=2,
+                 revisit="There is no north–south momentum before, so the other piece's north–south component "
+                         f"cancels the piece's, p sin {theta}°.",
+                 mistakes=(
+                     Mistake("sin and cos swapped", p_piece * math.cos(math.radians(angle)),
+                             f"You used cos. The angle {theta}° is measured from east, so the north–south "
+                             "component is p sin θ."),
+                     Mistake("mass left out", piece_speed * math.sin(math.radians(angle)),
+                             "That is a component of the velocity. Momentum = mass × velocity: multiply by "
+                             f"the piece's mass, {m1} kg.", see="momentum"),
+                 ), see="two-d"),
+            Part("speed of the other piece", split.speed, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
+                 ecf=Ecf(sympy.sqrt(sym_a**2 + sym_b**2) / sym_m, {"m_rest": split.mass}),
+                 revisit=f"Combine the two components with Pythagoras, then divide by the other piece's mass, "
+                         f"{mm} − {m1} = {rest} kg.",
+                 mistakes=(
+                     Mistake("momentum added as scalars", abs(p_before - p_piece) / split.mass,
+                             "You subtracted the sizes of the momenta as if both moved along one line. "
+                             "Momentum is a vector: conserve the east and north components separately.",
+                             see="conservation"),
+                     Mistake("sin and cos swapped", swapped.speed,
+                             "You swapped sin and cos: the angle is from east, so the piece's eastward "
+                             "component is p cos θ and its north–south one p sin θ."),
+                     Mistake("north–south component forgotten", abs(east) / split.mass,
+                             "That uses only the eastward component. The other piece also has a north–south "
+                             "component: combine them with Pythagoras."),
+                     Mistake("divided by the shell's mass", split.magnitude / mass,
+                             f"You divided by the whole shell's mass. The other piece's mass is {mm} − {m1} = "
+                             f"{rest} kg.", see="momentum"),
+                 ), see="two-d"),
+            Part("angle between the other piece's direction and the east–west line", angle_other, "°", "angle",
+                 units="° (degrees)", shown_sig_figs=3, direction="choice", choices=_COMPASS,
+                 answer_direction=answer,
+                 ecf=Ecf(sympy.atan(sym_b / sympy.Abs(sym_a)) * 180 / sympy.pi, {}),
+                 direction_hint=f"The north–south momentum cancels, so the other piece moves {other}; its "
+                                f"eastward momentum in (a) says east or west.",
+                 revisit="tan θ = (north–south momentum) / (east–west momentum); the north–south component "
+                         "is opposite to the first piece's.",
+                 mistakes=(
+                     Mistake("tan the wrong way up", 90.0 - angle_other,
+                             "You measured the angle from north–south. tan θ = (north–south momentum) / "
+                             "(east–west momentum) gives it from the east–west line."),
+                     Mistake("sin and cos swapped", math.degrees(math.atan2(abs(swapped.across), abs(swapped.along))),
+                             "You swapped sin and cos in resolving the piece's momentum: eastward p cos θ, "
+                             "north–south p sin θ."),
+                     Mistake("same angle as the first piece", angle,
+                             "The other piece need not move at the first piece's angle. Work out its "
+                             "components and use tan θ = (north–south) / (east–west)."),
+                     Mistake("same side as the first piece", angle_other,
+                             f"The north–south momentum is zero before, so the other piece moves {other}, "
+                             "opposite to the first piece.", direction=wrong_side),
+                 ), see="two-d"),
+        ),
+        mark_scheme=(
+            Mark(f"East: {mm} × {uu} = {m1} × {v1} cos {theta}° + p<sub>E</sub>", "C1", "a"),
+            Mark(f"p<sub>E</sub> = {w(p_before)} − {w(p_piece)} cos {theta}° = {n(east, 2)} N s", "A1", "a"),
+            Mark(f"North–south: 0 = {w(p_piece)} sin {theta}° − p<sub>N</sub>", "C1", "b"),
+            Mark(f"p<sub>N</sub> = {n(across, 2)} N s", "A1", "b"),
+            Mark(f"p = √({east_c}<sup>2</sup> + {across_c}<sup>2</sup>) = {n(split.magnitude, 3)} N s", "C1", "c"),
+            Mark(f"v = {n(split.magnitude, 3)} / ({mm} − {m1}) = {n(split.speed, 2)} {PER_S}", "A1", "c"),
+            Mark(f"tan θ = {across_d} / {east_d}", "C1", "d"),
+            Mark(f"θ = {n(angle_other, 3)}°", "A1", "d"),
+            Mark(f"{answer} (the north–south momentum cancels the first piece's)", "B1", "d", earns="direction"),
+        ),
+    )
+
+
 TEMPLATES = (
     Template("practice-pucks", "two-d", ("numeric",), "Pucks on an air table", pucks_glancing,
              {"mass": Draw(0.40, 0.20, 0.80, 0.05), "speed_before": Draw(2.5, 1.0, 4.0, 0.1),
@@ -412,4 +664,13 @@ TEMPLATES = (
              oblique_wall_bounce,
              {"mass": Draw(0.060, 0.050, 0.200, 0.010), "speed": Draw(20.0, 10.0, 30.0, 1.0),
               "angle": Draw(40.0, 20.0, 70.0, 5.0), "contact_ms": Draw(5.0, 2.0, 10.0, 0.5)}),
+    Template("puck-components", "two-d", ("numeric",), "Components before and after", puck_components,
+             {"m1": Draw(0.40, 0.20, 0.80, 0.05), "speed_before": Draw(2.5, 1.5, 4.0, 0.1),
+              "m2": Draw(0.60, 0.20, 0.80, 0.05), "speed_after": Draw(1.5, 0.5, 3.0, 0.1),
+              "angle": Draw(40.0, 20.0, 70.0, 5.0)}),
+    Template("explosion-two-pieces", "two-d", ("numeric",), "An explosion into two pieces at an angle",
+             explosion_two_pieces,
+             {"mass": Draw(2.0, 2.0, 4.0, 0.5), "speed": Draw(5.0, 2.0, 9.0, 1.0),
+              "piece": Draw(0.50, 0.20, 0.90, 0.10), "piece_speed": Draw(12.0, 8.0, 30.0, 1.0),
+              "angle": Draw(40.0, 20.0, 70.0, 5.0), "side": Draw(0, 0, 1, 1)}),
 )

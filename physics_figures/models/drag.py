@@ -619,3 +619,81 @@ def falling_acceleration(mass, drag, *, g=G_EARTH, upthrust=0.0):
     upthrust = check.non_negative("upthrust", upthrust, unit="N")
     g = check.positive("g", g, unit="m s^-2")
     return float((mass * g - upthrust - drag) / mass)
+
+
+# ---------------------------------------------------------------- a drag law given in a question
+
+def _drag_power(power):
+    """The power n of a drag law F = k vⁿ: papers give n = 1 (F = kv, 6 pi eta r v) or n = 2 (F = kv²,
+    (1/2) C rho A v²); any positive n is accepted."""
+    return check.positive("power", power)
+
+
+def power_law_drag(k, speed, *, power):
+    """A drag law as a question gives it: D = k vⁿ.
+
+    k: the law's constant, N (m s^-1)^-n (> 0: kg s^-1 for n = 1, kg m^-1 for n = 2);
+    speed: m s^-1 (>= 0; scalar or array); power n: > 0. Returns D in N, against the velocity.
+    Raises ValueError for k or n <= 0, a negative speed, or a value that is not finite.
+    """
+    k = check.positive("k", k, unit="N (m s^-1)^-n")
+    n = _drag_power(power)
+    return k * check.non_negative("speed", speed, unit="m s^-1") ** n
+
+
+def power_law_constant(drag, speed, *, power):
+    """The constant of a drag law D = k vⁿ from one drag and its speed: k = D / vⁿ.
+
+    At a terminal speed the drag is the weight (less any upthrust), so k = (m g - U) / v_tⁿ.
+    drag: N (> 0); speed: m s^-1 (> 0); power n: > 0. Returns k in N (m s^-1)^-n.
+    Raises ValueError for a drag, speed or n <= 0, or a value that is not finite.
+    """
+    drag = check.positive("drag", drag, unit="N")
+    speed = check.positive("speed", speed, unit="m s^-1")
+    return drag / speed ** _drag_power(power)
+
+
+def power_law_terminal_velocity(mass, k, *, power, g=G_EARTH, upthrust=0.0):
+    """Terminal velocity for a drag law D = k vⁿ: k v_tⁿ = m g - U, so v_t = ((m g - U) / k)^(1/n).
+
+    mass: kg (> 0); k: N (m s^-1)^-n (> 0); power n: > 0; g: m s^-2 (> 0); upthrust: N
+    (>= 0 and less than the weight). Returns v_t in m s^-1. With n = 2 it is terminal_velocity.
+    Raises ValueError for a mass, k, n or g <= 0, an upthrust that is negative or not less
+    than the weight, or a value that is not finite.
+    """
+    net = _net_downward_force(mass, g, upthrust)
+    k = check.positive("k", k, unit="N (m s^-1)^-n")
+    return float((net / k) ** (1 / _drag_power(power)))
+
+
+def terminal_velocity_ratio(mass_ratio, *, power):
+    """How terminal speeds compare for bodies of one size and shape (one k, no upthrust):
+    k v_tⁿ = m g, so v_t ∝ m^(1/n) and v_B / v_A = (m_B / m_A)^(1/n).
+
+    With F = kv² a body of four times the mass falls twice as fast; with F = kv, four times.
+    mass_ratio: m_B / m_A (> 0); power n: > 0. Returns v_B / v_A (no unit).
+    Raises ValueError for a ratio or n <= 0, or a value that is not finite.
+    """
+    ratio = check.positive("mass_ratio", mass_ratio)
+    return float(ratio ** (1 / _drag_power(power)))
+
+
+def sphere_volume(radius):
+    """Volume of a sphere, V = (4/3) pi r³ (for the upthrust on a ball in a liquid).
+
+    radius: m (> 0; scalar or array). Returns V in m^3. Raises ValueError for a radius
+    <= 0 or not finite.
+    """
+    return 4 / 3 * np.pi * check.positive("radius", radius, unit="m") ** 3
+
+
+def stokes_constant(viscosity, radius):
+    """The constant of Stokes' law F = 6 pi eta r v, as a law F = k v: k = 6 pi eta r.
+
+    A small sphere moving slowly through a viscous fluid (papers give the law; the notes need
+    no coefficient of viscosity). viscosity eta: Pa s = N s m^-2 (> 0); radius r: m (> 0).
+    Returns k in kg s^-1 (= N s m^-1), for power_law_drag and power_law_terminal_velocity
+    with power=1. Raises ValueError for a value <= 0 or not finite.
+    """
+    viscosity = check.positive("viscosity", viscosity, unit="Pa s")
+    return 6 * np.pi * viscosity * check.positive("radius", radius, unit="m")

@@ -177,3 +177,53 @@ def glancing_collision(p_before, p_known, angle_known_deg, *, mass_moving=None,
         mass_struck = check.positive("mass_struck", mass_struck, unit="kg")
     return GlancingCollision(float(p_before), float(p_known), float(angle_known_deg), missing,
                              mass_moving, mass_struck)
+
+
+class SplitInTwo(NamedTuple):
+    """The other piece of a moving body that splits in two (explosion, separation).
+
+    mass: kg; along: its momentum along the body's original direction, N s (signed: negative
+    means backwards); across: its momentum at right angles, N s (signed: positive on the known
+    piece's side, so usually negative); magnitude: N s; speed: m s^-1; angle_deg: its direction
+    from the original direction, degrees (-180 to 180, positive on the known piece's side);
+    kinetic_energy_released: the kinetic energy after less before, J (never negative).
+    """
+
+    mass: float
+    along: float
+    across: float
+    magnitude: float
+    speed: float
+    angle_deg: float
+    kinetic_energy_released: float
+
+
+def split_in_two(mass, speed, mass_piece, speed_piece, angle_piece_deg):
+    """A body moving along a line splits into two pieces; one piece's velocity is known.
+
+    Before: mass M at speed u along the line. After: the known piece (mass m₁) at v₁ at θ to the
+    line, the other (M - m₁) with momentum conserved in each direction separately:
+      along:  M u = m₁ v₁ cos θ + p_along   ->  p_along = M u - m₁ v₁ cos θ
+      across: 0 = m₁ v₁ sin θ + p_across    ->  p_across = -m₁ v₁ sin θ
+    mass: kg (> 0); speed: m s^-1 (>= 0; 0 is an explosion from rest); mass_piece: kg
+    (> 0, less than mass); speed_piece: m s^-1 (>= 0); angle_piece_deg: degrees (0 to 180).
+    Returns SplitInTwo. Raises ValueError for values outside those ranges.
+    """
+    mass = check.positive("mass", mass, unit="kg")
+    speed = check.non_negative("speed", speed, unit="m s^-1")
+    mass_piece = check.positive("mass_piece", mass_piece, unit="kg")
+    check.require("mass_piece", mass_piece, mass_piece < mass,
+                  f"must be less than mass={mass!r} kg (the other piece needs some)", unit="kg")
+    speed_piece = check.non_negative("speed_piece", speed_piece, unit="m s^-1")
+    angle = check.between("angle_piece_deg", angle_piece_deg, 0, 180, unit="degrees")
+    known_along, known_across = components(mass_piece * speed_piece, angle)
+    along = mass * speed - float(known_along)
+    across = -float(known_across)
+    magnitude, angle_deg = from_components(along, across)
+    rest = mass - mass_piece
+    released = (0.5 * mass_piece * speed_piece**2 + float(magnitude) ** 2 / (2 * rest)
+                - 0.5 * mass * speed**2)
+    # released is never negative (the kinetic energy of the motion relative to the centre of
+    # mass is added); rounding can leave -1e-16 J
+    return SplitInTwo(rest, along, across, float(magnitude), float(magnitude) / rest, float(angle_deg),
+                      max(0.0, released))

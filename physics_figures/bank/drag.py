@@ -726,7 +726,7 @@ def _opening_sketches() -> dict[str, Sketch]:
         "velocity": sketch(before + after),
         "upwards": sketch(before + [(opens, at_opening), (opens, -at_opening)] + [(t, -v) for t, v in after[1:]]),
         "stops": sketch(before + [(t, v - slow) for t, v in after]),
-        "at once": sketch(before + [(opens, at_opening), (opens, slow), (float(times[-1]), slow)]),
+        "at once": sketch([*before, (opens, at_opening), (opens, slow), (float(times[-1]), slow)]),
     }
 
 
@@ -737,8 +737,8 @@ def _skydiver_story(index: int):
     if index == 0:
         return (_FREEFALL, "Which graph shows how her acceleration varies with time?", free["acceleration"], (
             ("acceleration constant while the drag grows",
-             "Her acceleration is g only at the start, when there is no drag. As her speed rises the drag "
-             "rises, so the resultant force and her acceleration decrease, to zero at terminal velocity.",
+             ("Her acceleration is g only at the start, when there is no drag. As her speed rises the drag "
+             "rises, so the resultant force and her acceleration decrease, to zero at terminal velocity."),
              free["no drag, acceleration"]),
             ("the velocity graph, not the acceleration",
              graph_instead.format(other="velocity", this="acceleration",
@@ -753,35 +753,35 @@ def _skydiver_story(index: int):
     if index == 1:
         return (_FREEFALL, "Which graph shows how her velocity varies with time?", free["velocity"], (
             ("air resistance left out: v = gt",
-             "A straight line means a constant acceleration g, with no drag. The drag grows with her speed, "
-             "so the gradient falls and the curve levels off at her terminal velocity.", free["no drag, velocity"]),
+             ("A straight line means a constant acceleration g, with no drag. The drag grows with her speed, "
+             "so the gradient falls and the curve levels off at her terminal velocity."), free["no drag, velocity"]),
             ("the acceleration graph, not the velocity",
              graph_instead.format(other="acceleration", this="velocity",
                                   why="it starts at zero and rises, ever more slowly, to her terminal velocity."),
              _relabel(free["acceleration"], "velocity", "v")),
             ("terminal velocity from the start",
-             "She starts from rest, so her velocity starts at zero. Only when the drag has grown to equal "
-             "her weight does her velocity stop changing.", free["terminal at once"]),
+             ("She starts from rest, so her velocity starts at zero. Only when the drag has grown to equal "
+             "her weight does her velocity stop changing."), free["terminal at once"]),
         ))
     if index == 2:
         return (_FREEFALL, "Which graph shows how the air resistance on her varies with time?", free["drag"], (
             ("drag constant while the speed changes",
-             "Drag depends on speed: it is zero at the start, when she is at rest, and grows as she speeds up "
-             "until it equals her weight. A force that stays the same while the speed changes is not drag.",
+             ("Drag depends on speed: it is zero at the start, when she is at rest, and grows as she speeds up "
+             "until it equals her weight. A force that stays the same while the speed changes is not drag."),
              _relabel(free["no drag, force"], "air resistance", "D")),
             ("drag falls as she speeds up",
-             "That is the shape of her acceleration or the resultant force. The drag grows with her speed, "
-             "from zero to her weight at terminal velocity.", _relabel(free["resultant force"], "air resistance", "D")),
+             ("That is the shape of her acceleration or the resultant force. The drag grows with her speed, "
+             "from zero to her weight at terminal velocity."), _relabel(free["resultant force"], "air resistance", "D")),
             ("drag grows steadily without limit",
-             "The drag stops growing when her speed stops growing: at terminal velocity it equals her weight, "
-             "so the graph levels off.", _relabel(free["no drag, velocity"], "air resistance", "D")),
+             ("The drag stops growing when her speed stops growing: at terminal velocity it equals her weight, "
+             "so the graph levels off."), _relabel(free["no drag, velocity"], "air resistance", "D")),
         ))
     if index == 3:
         return (_FREEFALL, "Which graph shows how the resultant force on her varies with time?",
                 free["resultant force"], (
             ("weight only: the drag left out",
-             "The weight is the resultant force only at the start. The drag grows with her speed, so the "
-             "resultant force W − D falls to zero at terminal velocity.", free["no drag, force"]),
+             ("The weight is the resultant force only at the start. The drag grows with her speed, so the "
+             "resultant force W − D falls to zero at terminal velocity."), free["no drag, force"]),
             ("the drag, not the resultant force",
              graph_instead.format(other="air resistance", this="resultant force",
                                   why="it is the weight minus the drag, so it falls as the drag grows."),
@@ -795,14 +795,14 @@ def _skydiver_story(index: int):
     opening = _opening_sketches()
     return (_OPENS, "Which graph shows how her velocity varies with time?", opening["velocity"], (
         ("she moves upwards when the parachute opens",
-         "Her acceleration is upwards just after the parachute opens, but her velocity is still downwards: "
-         "she slows down while still falling, to the lower terminal velocity.", opening["upwards"]),
+         ("Her acceleration is upwards just after the parachute opens, but her velocity is still downwards: "
+         "she slows down while still falling, to the lower terminal velocity."), opening["upwards"]),
         ("she stops when the parachute opens",
-         "She slows down only until the drag equals her weight again, at the new terminal velocity. Her "
-         "velocity never reaches zero.", opening["stops"]),
+         ("She slows down only until the drag equals her weight again, at the new terminal velocity. Her "
+         "velocity never reaches zero."), opening["stops"]),
         ("her speed drops at once",
-         "A change of velocity takes time: the drag is larger than her weight, so she decelerates, most at "
-         "the start, and her velocity falls along a curve to the new terminal velocity.", opening["at once"]),
+         ("A change of velocity takes time: the drag is larger than her weight, so she decelerates, most at "
+         "the start, and her velocity falls along a curve to the new terminal velocity."), opening["at once"]),
     ))
 
 
@@ -823,7 +823,7 @@ def falling_graph_choice(story: float = 0) -> Question:
     letter = OPTION_LETTERS[place]
     return Question(
         key="falling-graph-choice",
-        text=text,
+        text=f"{text} Each option is a sketch of {key.quantity} against time t, without a scale.",
         givens=(),
         parts=(ChoicePart(prompt, tuple(rows), letter,
                           revisit="The drag grows with the speed, so the resultant force and the acceleration "

@@ -1,4 +1,4 @@
-# ruff: noqa: RUF001  (question text is typeset: true minus, times, Greek letters)
+# ruff: noqa: RUF001, RUF002, RUF003  (question text is typeset: true minus, times, Greek letters, dashes)
 """Force as the rate of change of momentum: F = Δp/Δt, impulse, streams and bounces."""
 
 from __future__ import annotations
@@ -434,8 +434,8 @@ _MOMENTUM_STORIES = (
      ((0.0, 0.0), (4.0, 12000.0), (10.0, 12000.0), (16.0, 0.0)), 0.5),
     ("a trolley", "as it is pushed from rest and then rolls freely along a level, frictionless track",
      "its direction of motion", ((0.0, 0.0), (1.5, 2.4), (6.0, 2.4)), 0.1),
-    ("a ball thrown vertically upwards", "from the moment it leaves the hand until it is back at the "
-     "same height (air resistance is negligible)", "upwards", ((0.0, 3.0), (4.0, -3.0)), 0.1),
+    ("a ball thrown vertically upwards", ("from the moment it leaves the hand until it is back at the "
+     "same height (air resistance is negligible)"), "upwards", ((0.0, 3.0), (4.0, -3.0)), 0.1),
     ("a ball", "as it hits a wall at right angles and bounces straight back", "towards the wall",
      ((0.0, 2.4), (0.02, 2.4), (0.05, -1.6), (0.1, -1.6)), 0.002),
     ("a lorry", "as it brakes to rest on a straight road", "its direction of motion",

@@ -125,7 +125,7 @@ _MOST_SQUARES = 50
 def value_axis(high: float, low: float = 0.0) -> tuple[float, float, float]:
     """(value_min, value_max, value_division) of a graph's value axis that holds ``low`` to
     ``high`` with a little room above (and below a negative ``low``): small squares of 1, 2 or
-    5 × 10ⁿ, at most 50 of them, the ends on a labelled line (every 5 squares). So a
+    5 x 10^n, at most 50 of them, the ends on a labelled line (every 5 squares). So a
     cyclist's 900 N s gets 0 to 1000 in squares of 20, a lorry's 60 000 N s 0 to 70 000 in
     squares of 2000: the axis grows with the momentum instead of stopping at 1000 N s."""
     _require(math.isfinite(high) and math.isfinite(low) and high > 0 and low <= 0, "high", (low, high),

@@ -1,4 +1,4 @@
-# ruff: noqa: RUF001, RUF002  (typeset text: en dashes, times)
+# ruff: noqa: RUF002  (typeset text: en dashes)
 """"Which graph?" items (issue 25: choosing the right graph or sketch) and momentum–time graphs
 beyond the gradient: the key's sketch is the shape the physics gives (worked here apart from
 the template), every option is named by its shape without saying which is right, the site,

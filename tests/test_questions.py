@@ -300,7 +300,8 @@ ECF_PARTS = {("quick-check-1", "b"), ("quick-check-3", "b"), ("practice-wall-bou
              ("graph-kick-force-time", "b"), ("graph-kick-force-time", "c"),
              ("graph-cyclist-momentum-time", "c"), ("graph-bounce-momentum-time", "c"),
              ("graph-skydiver-terminal", "c"), ("graph-ball-acceleration", "c"),
-             ("graph-trolley-collision", "c"), ("practice-spring-apart", "b")}
+             ("graph-trolley-collision", "c"), ("practice-spring-apart", "b"),
+             ("graph-lorry-speed-momentum-time", "c"), ("graph-lorry-speed-momentum-time", "d")}
 
 
 def test_every_part_that_uses_an_earlier_answer_carries_it_forward():

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from html import escape
 
+from ..notation import format_number, plain_number
 from ..style import colour
 
 #: The roles of figures.style (MAIN, FRAME, INK, PAPER), by their tokens.
@@ -42,8 +43,10 @@ def _layout(sketch) -> tuple[list[tuple[float, float]], float]:
     return [place(t, y) for t, y in sketch.points], place(0.0, 0.0)[1]
 
 
-def _n(value: float) -> str:
-    return f"{value:.1f}".rstrip("0").rstrip(".")
+def _n(value: float, places: int = 1) -> str:
+    """A coordinate as SVG and TikZ read it: plain digits, a hyphen-minus, no trailing zeros."""
+    text = plain_number(format_number(value, decimals=places))
+    return text.rstrip("0").rstrip(".") if "." in text else text
 
 
 def sketch_svg(sketch) -> str:
@@ -78,7 +81,7 @@ def sketch_tikz(sketch) -> str:
     line, axis = _layout(sketch)
 
     def cm(x: float, y: float) -> str:  # SVG units (y down) to TikZ centimetres (y up)
-        return f"({x * CM_PER_UNIT:.3f},{(HEIGHT - y) * CM_PER_UNIT:.3f})"
+        return f"({_n(x * CM_PER_UNIT, 3)},{_n((HEIGHT - y) * CM_PER_UNIT, 3)})"
 
     coordinates = " -- ".join(cm(x, y) for x, y in line)
     return (

@@ -46,6 +46,7 @@ from .parts import (  # the part kinds, one module each (physics_figures/parts/)
     Mistake,
     Option,
     Part,
+    Sketch,
     Step,
     choices_in_order,
     reading_places,
@@ -68,7 +69,7 @@ from .parts.common import (
 __all__ = ["ASKS", "DEFAULT_CHECK_SIG_FIGS", "DEFAULT_MIN_SIG_FIGS", "DIRECTION_MODES", "G_NINE_EIGHT", "G_TEN",
            "KINDS", "MARK_CODES", "OPTION_LETTERS", "PART_IDS", "PART_WAY_SIG_FIGS", "Alternative", "ChoicePart",
            "Ecf", "ExplainPart", "Given", "Graph", "GraphPart", "Mark", "Mistake", "Option", "Part", "Question",
-           "Step", "choices_in_order", "number", "reading_places", "unit_text"]
+           "Sketch", "Step", "choices_in_order", "number", "reading_places", "unit_text"]
 
 
 @dataclass(frozen=True)
@@ -131,7 +132,9 @@ class Question:
 
     def __post_init__(self):
         readings = [p for p in self.parts if p.kind == "graph"]
-        _require(bool(readings) == (self.graph is not None), "graph", self.graph,
+        # a "which graph?" item shows its graph too: its options are sketches drawn from it
+        sketches = any(p.kind == "mcq" and p.sketches for p in self.parts)
+        _require(bool(readings) == (self.graph is not None) or (sketches and not readings), "graph", self.graph,
                  f"goes with a part read from it (GraphPart) in {self.key}: both or neither")
         if self.graph is not None:
             halves = (self.graph.time_division / 2, self.graph.value_division / 2)

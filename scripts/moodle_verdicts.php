@@ -173,7 +173,12 @@ class mv_input_error extends Exception {
 
 /** Option text as the inputs give it: HTML stripped, trimmed. */
 function mv_option_text(string $html): string {
-    return trim(strip_tags($html));
+    $text = trim(strip_tags($html));
+    // a sketch-graph option is an image: it reads as its alt text (the shape in words)
+    if ($text === '' && preg_match('/<img[^>]*\balt="([^"]*)"/', $html, $m)) {
+        return trim(html_entity_decode($m[1], ENT_QUOTES | ENT_HTML5, 'UTF-8'));
+    }
+    return $text;
 }
 
 /** A looser form of the same text: entities decoded, white space (and non-breaking spaces) collapsed. */

@@ -18,8 +18,8 @@ What it checks, question by question:
   Moodle's, one right option per MULTICHOICE, and the weights add up to the default grade;
 - multichoice: single answer, one 100 % option, feedback on every option;
 - essay: grader information with the mark codes;
-- images: every @@PLUGINFILE@@ file named in a text is embedded in that text's <file>
-  (base64 that decodes to a PNG or SVG), and every image has alt text.
+- images: every @@PLUGINFILE@@ file named in a text is embedded in that text's <file> (an
+  option's in its <answer>), base64 that decodes to a PNG or SVG, and every image has alt text.
 """
 
 from __future__ import annotations
@@ -121,21 +121,7 @@ def check_question(question: ET.Element, where: str) -> list[str]:
         say(f"{where}: no positive defaultgrade")
     html_problems, images = check_html(text)
     problems += [f"{where}: question text: {p}" for p in html_problems]
-    files = {f.get("name"): f.text or "" for f in text_element.findall("file")}
-    for image in images:
-        source = image.get("src", "")
-        if not image.get("alt"):
-            say(f"{where}: an image without alt text")
-        if not source.startswith("@@PLUGINFILE@@/"):
-            say(f"{where}: image {source!r} is not embedded (@@PLUGINFILE@@)")
-            continue
-        data = files.get(source.removeprefix("@@PLUGINFILE@@/"))
-        if data is None:
-            say(f"{where}: image {source!r} has no <file> in the question text")
-            continue
-        raw = base64.b64decode(data, validate=True)
-        if not (raw.startswith(b"\x89PNG\r\n\x1a\n") or b"<svg" in raw[:400]):
-            say(f"{where}: image {source!r} is neither PNG nor SVG")
+    problems += _check_images(images, text_element, f"{where}: question text")
     general = _text(question, "generalfeedback")
     if general:
         problems += [f"{where}: general feedback: {p}" for p in check_html(general)[0]]
@@ -149,6 +135,28 @@ def check_question(question: ET.Element, where: str) -> list[str]:
         grader = _text(question, "graderinfo")
         if not grader or not re.search(r"\b[ABCM]1\b", grader):
             say(f"{where}: essay without grader information with the mark codes")
+    return problems
+
+
+def _check_images(images: list[dict], holder: ET.Element, where: str) -> list[str]:
+    """Each image has alt text and its @@PLUGINFILE@@ file among ``holder``'s <file>s (the
+    question text's, or an answer's own), a PNG or an SVG."""
+    problems = []
+    files = {f.get("name"): f.text or "" for f in holder.findall("file")}
+    for image in images:
+        source = image.get("src", "")
+        if not image.get("alt"):
+            problems.append(f"{where}: an image without alt text")
+        if not source.startswith("@@PLUGINFILE@@/"):
+            problems.append(f"{where}: image {source!r} is not embedded (@@PLUGINFILE@@)")
+            continue
+        data = files.get(source.removeprefix("@@PLUGINFILE@@/"))
+        if data is None:
+            problems.append(f"{where}: image {source!r} has no <file> beside it")
+            continue
+        raw = base64.b64decode(data, validate=True)
+        if not (raw.startswith(b"\x89PNG\r\n\x1a\n") or b"<svg" in raw[:400]):
+            problems.append(f"{where}: image {source!r} is neither PNG nor SVG")
     return problems
 
 
@@ -231,7 +239,9 @@ def _check_multichoice(question, where) -> list[str]:
     if fractions.count(100) != 1:
         problems.append(f"{where}: {fractions.count(100)} options at 100 %, not 1")
     for answer in question.findall("answer"):
-        problems += [f"{where}: option: {p}" for p in check_html(answer.findtext("text") or "")[0]]
+        html_problems, images = check_html(answer.findtext("text") or "")
+        problems += [f"{where}: option: {p}" for p in html_problems]
+        problems += _check_images(images, answer, f"{where}: option")  # a sketch graph's own file
     return problems
 
 

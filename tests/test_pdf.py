@@ -245,7 +245,10 @@ def test_book_and_answer_key_give_each_answer_with_its_unit(question):
 def test_question_sheet_asks_each_question_with_space_to_answer(question):
     sheet = squashed(SHEET)
     for part in question.parts:
-        if part.kind == "mcq":  # the options, then a box for the letter
+        if part.kind == "mcq" and part.sketches:  # four drawings (TikZ) under A to D, then the box
+            start = sheet.index(squash(part.prompt))
+            assert sheet.index("Answer(A,B,CorD):", start) > start, question.key
+        elif part.kind == "mcq":  # the options, then a box for the letter
             options = "".join(f"{letter}." + squash(textformat.to_plain(option.text))
                               for letter, option in zip("ABCD", part.options, strict=True))
             assert squash(part.prompt) + options + "Answer(A,B,CorD):" in sheet, question.key

@@ -308,7 +308,8 @@ ECF_PARTS = {("quick-check-1", "b"), ("quick-check-3", "b"), ("practice-wall-bou
              # a drag law given in the question; components and an explosion in two dimensions
              ("drag-law-constant", "b"), ("stokes-terminal-speed", "b"), ("puck-components", "c"),
              ("puck-components", "d"),
-             ("explosion-two-pieces", "c"), ("explosion-two-pieces", "d")}
+             ("explosion-two-pieces", "c"), ("explosion-two-pieces", "d"),
+             ("graph-lorry-speed-momentum-time", "c"), ("graph-lorry-speed-momentum-time", "d")}
 
 
 def test_every_part_that_uses_an_earlier_answer_carries_it_forward():

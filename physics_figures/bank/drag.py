@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import numpy
 import sympy
 
 from ..constants import G_EARTH
@@ -14,6 +15,7 @@ from ..models import (
     falling_acceleration,
     power_law_constant,
     power_law_terminal_velocity,
+    skydive,
     sphere_volume,
     stokes_constant,
     terminal_velocity,
@@ -37,6 +39,7 @@ from ..questions import (
     Option,
     Part,
     Question,
+    Sketch,
     Step,
     choices_in_order,
 )
@@ -904,6 +907,178 @@ def stokes_terminal_speed(grams: float = 0.26, radius_mm: float = 2.0, density: 
     )
 
 
+# ---------------------------------------------------------------------- which graph?
+
+#: The skydiver of the notes: 80 kg, a terminal velocity of 50 m s^-1 in freefall, 5.0 m s^-1
+#: with the parachute open (opened at 25 s, over 2.0 s), down positive.
+_SKYDIVER = {"mass": 80.0, "terminal_velocity_freefall": 50.0, "terminal_velocity_parachute": 5.0,
+             "parachute_opens_at": 25.0, "opening_duration": 2.0, "duration": 45.0}
+#: Points a sketch's curve is drawn through.
+_SKETCH_POINTS = 61
+_FREEFALL = ("A skydiver jumps from a hovering helicopter and falls vertically. The air resistance on her "
+             "increases as her speed increases. Take downwards as positive.")
+_OPENS = ("A skydiver falls vertically at her terminal velocity. She then opens her parachute, slows down, "
+          "and reaches a new, lower terminal velocity. Take downwards as positive.")
+
+
+def _freefall_sketches() -> dict[str, Sketch]:
+    """The freefall from rest, from the models: v = v_t tanh(g t / v_t), the drag that gives that
+    terminal velocity, a = (W − D) / m and the resultant force W − D; and the misconceptions'
+    shapes drawn from the same numbers."""
+    mass, v_t = _SKYDIVER["mass"], _SKYDIVER["terminal_velocity_freefall"]
+    times = numpy.linspace(0.0, 5 * v_t / G_EARTH, _SKETCH_POINTS)  # five time constants: levelled off
+    speeds = velocity_from_rest(times, v_t)
+    drags = drag_force(drag_constant_for_terminal_velocity(mass, v_t), speeds)
+    accelerations = [falling_acceleration(mass, d) for d in drags]
+    end = float(times[-1])
+
+    def sketch(quantity: str, symbol: str, values) -> Sketch:
+        return Sketch(quantity, symbol, tuple(zip(times, values, strict=True)))
+
+    return {
+        "velocity": sketch("velocity", "v", speeds),
+        "acceleration": sketch("acceleration", "a", accelerations),
+        "drag": sketch("air resistance", "D", drags),
+        "resultant force": sketch("resultant force", "F", weight(mass) - drags),
+        # what a student draws who leaves the drag out: a = g throughout, v = g t
+        "no drag, acceleration": Sketch("acceleration", "a", ((0.0, G_EARTH), (end, G_EARTH))),
+        "no drag, velocity": Sketch("velocity", "v", ((0.0, 0.0), (end, G_EARTH * end))),
+        "no drag, force": Sketch("resultant force", "F", ((0.0, weight(mass)), (end, weight(mass)))),
+        "terminal at once": Sketch("velocity", "v", ((0.0, v_t), (end, v_t))),
+    }
+
+
+def _relabel(sketch: Sketch, quantity: str, symbol: str, scale: float = 1.0) -> Sketch:
+    """Another quantity's shape drawn on this quantity's axes (a graph mistaken for another)."""
+    return Sketch(quantity, symbol, tuple((t, scale * y) for t, y in sketch.points))
+
+
+def _opening_sketches() -> dict[str, Sketch]:
+    """Velocity before and after the parachute opens (models.skydive), and the misconceptions:
+    she moves upwards, she stops, her speed drops at once."""
+    dive = skydive(**_SKYDIVER)
+    opens = dive.parachute_opens_at
+    times = numpy.linspace(0.0, dive.duration, _SKETCH_POINTS)
+    speeds = dive.velocity_at(times)
+    before = [(t, v) for t, v in zip(times, speeds, strict=True) if t < opens]
+    after = [(t, v) for t, v in zip(times, speeds, strict=True) if t >= opens]
+    at_opening = float(dive.velocity_at(opens))
+    slow = dive.terminal_velocity_parachute
+
+    def sketch(points) -> Sketch:
+        return Sketch("velocity", "v", tuple(points))
+
+    return {
+        "velocity": sketch(before + after),
+        "upwards": sketch(before + [(opens, at_opening), (opens, -at_opening)] + [(t, -v) for t, v in after[1:]]),
+        "stops": sketch(before + [(t, v - slow) for t, v in after]),
+        "at once": sketch([*before, (opens, at_opening), (opens, slow), (float(times[-1]), slow)]),
+    }
+
+
+def _skydiver_story(index: int):
+    """(text, prompt, key sketch, three (mistake, feedback, sketch)) of one story."""
+    free = _freefall_sketches() if index < 4 else {}
+    graph_instead = ("You chose the {other}–time graph. The {this} is a different quantity: {why}")
+    if index == 0:
+        return (_FREEFALL, "Which graph shows how her acceleration varies with time?", free["acceleration"], (
+            ("acceleration constant while the drag grows",
+             ("Her acceleration is g only at the start, when there is no drag. As her speed rises the drag "
+             "rises, so the resultant force and her acceleration decrease, to zero at terminal velocity."),
+             free["no drag, acceleration"]),
+            ("the velocity graph, not the acceleration",
+             graph_instead.format(other="velocity", this="acceleration",
+                                  why="it is the gradient of the velocity–time graph, largest at the start "
+                                      "and zero at terminal velocity."),
+             _relabel(free["velocity"], "acceleration", "a")),
+            ("the drag graph, not the acceleration",
+             graph_instead.format(other="air resistance", this="acceleration",
+                                  why="a = (W − D) / m, so as the drag grows the acceleration falls."),
+             _relabel(free["drag"], "acceleration", "a")),
+        ))
+    if index == 1:
+        return (_FREEFALL, "Which graph shows how her velocity varies with time?", free["velocity"], (
+            ("air resistance left out: v = gt",
+             ("A straight line means a constant acceleration g, with no drag. The drag grows with her speed, "
+             "so the gradient falls and the curve levels off at her terminal velocity."), free["no drag, velocity"]),
+            ("the acceleration graph, not the velocity",
+             graph_instead.format(other="acceleration", this="velocity",
+                                  why="it starts at zero and rises, ever more slowly, to her terminal velocity."),
+             _relabel(free["acceleration"], "velocity", "v")),
+            ("terminal velocity from the start",
+             ("She starts from rest, so her velocity starts at zero. Only when the drag has grown to equal "
+             "her weight does her velocity stop changing."), free["terminal at once"]),
+        ))
+    if index == 2:
+        return (_FREEFALL, "Which graph shows how the air resistance on her varies with time?", free["drag"], (
+            ("drag constant while the speed changes",
+             ("Drag depends on speed: it is zero at the start, when she is at rest, and grows as she speeds up "
+             "until it equals her weight. A force that stays the same while the speed changes is not drag."),
+             _relabel(free["no drag, force"], "air resistance", "D")),
+            ("drag falls as she speeds up",
+             ("That is the shape of her acceleration or the resultant force. The drag grows with her speed, "
+             "from zero to her weight at terminal velocity."), _relabel(free["resultant force"], "air resistance", "D")),
+            ("drag grows steadily without limit",
+             ("The drag stops growing when her speed stops growing: at terminal velocity it equals her weight, "
+             "so the graph levels off."), _relabel(free["no drag, velocity"], "air resistance", "D")),
+        ))
+    if index == 3:
+        return (_FREEFALL, "Which graph shows how the resultant force on her varies with time?",
+                free["resultant force"], (
+            ("weight only: the drag left out",
+             ("The weight is the resultant force only at the start. The drag grows with her speed, so the "
+             "resultant force W − D falls to zero at terminal velocity."), free["no drag, force"]),
+            ("the drag, not the resultant force",
+             graph_instead.format(other="air resistance", this="resultant force",
+                                  why="it is the weight minus the drag, so it falls as the drag grows."),
+             _relabel(free["drag"], "resultant force", "F")),
+            ("the velocity graph, not the resultant force",
+             graph_instead.format(other="velocity", this="resultant force",
+                                  why="by Newton's second law it is mass × acceleration, the gradient of "
+                                      "the velocity–time graph, not the velocity."),
+             _relabel(free["velocity"], "resultant force", "F")),
+        ))
+    opening = _opening_sketches()
+    return (_OPENS, "Which graph shows how her velocity varies with time?", opening["velocity"], (
+        ("she moves upwards when the parachute opens",
+         ("Her acceleration is upwards just after the parachute opens, but her velocity is still downwards: "
+         "she slows down while still falling, to the lower terminal velocity."), opening["upwards"]),
+        ("she stops when the parachute opens",
+         ("She slows down only until the drag equals her weight again, at the new terminal velocity. Her "
+         "velocity never reaches zero."), opening["stops"]),
+        ("her speed drops at once",
+         ("A change of velocity takes time: the drag is larger than her weight, so she decelerates, most at "
+         "the start, and her velocity falls along a curve to the new terminal velocity."), opening["at once"]),
+    ))
+
+
+def falling_graph_choice(story: float = 0) -> Question:
+    """Paper 1 style, "which graph?" for a body falling with air resistance: the velocity,
+    acceleration, drag or resultant force against time from the models (notes: "v–t is a curve
+    that starts with gradient g and levels off; a–t starts at g and curves down to zero"), or
+    the velocity when the parachute opens. The wrong options are the notes' misconceptions:
+    the acceleration constant while the drag grows, one graph taken for another, the skydiver
+    moving upwards when the parachute opens. As 9702/22/M/J/24 Q2 asks about a skydiver's
+    velocity–time graph; a Paper 1 item earns its one mark for the key alone (9702/11/M/J/16,
+    multiple choice: one mark an item)."""
+    index = int(story)
+    text, prompt, key, wrong = _skydiver_story(index)
+    place = index % len(OPTION_LETTERS)
+    rows = [Option("", name, feedback, sketch=sketch) for name, feedback, sketch in wrong]
+    rows.insert(place, Option("", sketch=key))
+    letter = OPTION_LETTERS[place]
+    return Question(
+        key="falling-graph-choice",
+        text=f"{text} Each option is a sketch of {key.quantity} against time t, without a scale.",
+        givens=(),
+        parts=(ChoicePart(prompt, tuple(rows), letter,
+                          revisit="The drag grows with the speed, so the resultant force and the acceleration "
+                                  "fall as she speeds up, to zero at terminal velocity: the velocity–time "
+                                  "graph is a curve that levels off.", see="skydiver"),),
+        mark_scheme=(Mark(f"{letter}: {rows[place].text[0].lower()}{rows[place].text[1:]}", "B1"),),
+    )
+
+
 TEMPLATES = (
     Template("quick-check-3", "drag", ("numeric",), "Quick check 3", skydiver_parachute_opens,
              {"mass": Draw(70.0, 50.0, 99.0, 1.0), "open_drag": Draw(1500.0, 1000.0, 2500.0, 100.0)}),
@@ -943,4 +1118,6 @@ TEMPLATES = (
     Template("stokes-terminal-speed", "drag", ("numeric",), "A drag law: Stokes' law", stokes_terminal_speed,
              {"grams": Draw(0.26, 0.10, 0.90, 0.01), "radius_mm": Draw(2.0, 1.5, 3.0, 0.1),
               "density": Draw(1260.0, 900.0, 1260.0, 10.0), "viscosity": Draw(1.4, 0.6, 1.5, 0.1)}),
+    Template("falling-graph-choice", "drag", ("mcq",), "Which graph for a falling skydiver?",
+             falling_graph_choice, {"story": Draw(0, 0, 4, 1)}, variant_count=5),
 )

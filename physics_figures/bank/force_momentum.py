@@ -1,10 +1,11 @@
-# ruff: noqa: RUF001  (question text is typeset: true minus, times, Greek letters)
+# ruff: noqa: RUF001, RUF002, RUF003  (question text is typeset: true minus, times, Greek letters, dashes)
 """Force as the rate of change of momentum: F = Δp/Δt, impulse, streams and bounces."""
 
 from __future__ import annotations
 
 import math
 
+import numpy
 import sympy
 
 from ..models import (
@@ -23,7 +24,9 @@ from ..models import (
     weight,
 )
 from ..notation import format_number as n
+from ..parts.graph import value_axis
 from ..questions import (
+    OPTION_LETTERS,
     ChoicePart,
     Ecf,
     Given,
@@ -31,8 +34,10 @@ from ..questions import (
     GraphPart,
     Mark,
     Mistake,
+    Option,
     Part,
     Question,
+    Sketch,
     Step,
     choices_in_order,
 )
@@ -292,21 +297,22 @@ def cyclist_momentum_time(start: float = 240.0, end: float = 640.0, begins: floa
     reading a momentum-time graph)."""
     history = MomentumHistory((0.0, begins, begins + lasts, 20.0), (start, start, end, end))
     force = float(history.segment_forces[1])
+    _, top, division = value_axis(max(start, end))  # the axis grows with the momenta
     graph = Graph("momentum–time", "momentum", "N s", tuple(zip(history.times, history.momenta, strict=True)),
-                  time_division=0.5, value_division=20.0, time_max=20.0, value_max=1000.0)
+                  time_division=0.5, value_division=division, time_max=20.0, value_max=top)
     t0, t1 = n(begins, decimals=1), n(begins + lasts, decimals=1)
     return Question(
         key="graph-cyclist-momentum-time",
         text=("The graph shows how the momentum of a cyclist changes as she speeds up along a straight, "
-              f"level road. {reading_rule(10.0, 'N s')}"),
+              f"level road. {reading_rule(division / 2, 'N s')}"),
         givens=(),
         graph=graph,
         parts=(
             GraphPart("momentum before she speeds up", start, "N s", "momentum", units=_N_S,
-                      tolerance=10.0,
+                      tolerance=division / 2,
                       revisit="Read the flat part of the line at the start against the momentum axis.", see="momentum"),
             GraphPart("momentum after she speeds up", end, "N s", "momentum", units=_N_S,
-                      tolerance=10.0,
+                      tolerance=division / 2,
                       revisit="Read the flat part of the line at the end against the momentum axis.", see="momentum"),
             Part(f"resultant force on her between {t0} s and {t1} s", force, "N", "force",
                  shown_sig_figs=2,
@@ -322,9 +328,9 @@ def cyclist_momentum_time(start: float = 240.0, end: float = 640.0, begins: floa
                  ), see="momentum-time-graph"),
         ),
         mark_scheme=(
-            Mark(f"{reading(start, 10.0)} N s", "B1", "a"),
-            Mark(f"{reading(end, 10.0)} N s", "B1", "b"),
-            Mark(f"F = gradient = Δp / Δt = ({reading(end, 10.0)} − {reading(start, 10.0)}) / ({t1} − {t0})",
+            Mark(f"{reading(start, division / 2)} N s", "B1", "a"),
+            Mark(f"{reading(end, division / 2)} N s", "B1", "b"),
+            Mark(f"F = gradient = Δp / Δt = ({reading(end, division / 2)} − {reading(start, division / 2)}) / ({t1} − {t0})",
                  "C1", "c"),
             Mark(f"= {n(force, 2)} N", "A1", "c"),
         ),
@@ -554,6 +560,177 @@ def mass_from_velocity_change(force: float = 6.0, duration: float = 2.5, speed_b
     )
 
 
+# ------------------------------------------------- which graph? and speed from a graph
+
+
+#: Bodies whose momentum–time graph the "which graph?" item shows: (what it is, how it moves,
+#: the positive direction, its momentum-time corners (s, N s), the graph's small squares in
+#: time, s). Straight lines: the resultant force is constant in each piece (notes: "A straight
+#: line means a constant force").
+_MOMENTUM_STORIES = (
+    ("a car", "as it moves along a straight road", "its direction of motion",
+     ((0.0, 0.0), (4.0, 12000.0), (10.0, 12000.0), (16.0, 0.0)), 0.5),
+    ("a trolley", "as it is pushed from rest and then rolls freely along a level, frictionless track",
+     "its direction of motion", ((0.0, 0.0), (1.5, 2.4), (6.0, 2.4)), 0.1),
+    ("a ball thrown vertically upwards", ("from the moment it leaves the hand until it is back at the "
+     "same height (air resistance is negligible)"), "upwards", ((0.0, 3.0), (4.0, -3.0)), 0.1),
+    ("a ball", "as it hits a wall at right angles and bounces straight back", "towards the wall",
+     ((0.0, 2.4), (0.02, 2.4), (0.05, -1.6), (0.1, -1.6)), 0.002),
+    ("a lorry", "as it brakes to rest on a straight road", "its direction of motion",
+     ((0.0, 60000.0), (5.0, 60000.0), (15.0, 0.0), (20.0, 0.0)), 0.5),
+    ("a cyclist", "as she speeds up along a straight, level road", "her direction of motion",
+     ((0.0, 240.0), (4.0, 240.0), (12.0, 640.0), (20.0, 640.0)), 0.5),
+)
+
+
+def _force_sketch(history: MomentumHistory, sign: float = 1.0, *, size_only: bool = False) -> Sketch:
+    """The resultant force against time: each segment's gradient, a jump at each corner."""
+    points = []
+    for segment in history.segments:
+        force = abs(segment.force) if size_only else sign * segment.force
+        points += [(segment.t0, force), (segment.t1, force)]
+    return Sketch("resultant force", "F", points)
+
+
+def _area_sketch(history: MomentumHistory) -> Sketch:
+    """The area under the momentum–time graph so far (the misconception's "force")."""
+    times = numpy.linspace(history.times[0], history.times[-1], 41)
+    areas = [0.0] + [area_under_force_time(times[:k + 1], history.momentum_at(times[:k + 1]))
+                     for k in range(1, times.size)]
+    return Sketch("resultant force", "F", tuple(zip(times, areas, strict=True)))
+
+
+def force_from_momentum_graph_choice(story: float = 0) -> Question:
+    """Paper 1 style, "which graph?": the momentum–time graph is shown; the resultant force is
+    its gradient (F = Δp / Δt), so the key is a step graph, constant where the line is straight
+    and zero where it is flat. The wrong options are real misreadings: the momentum graph
+    itself, the area under it instead of its gradient, the sign of the force reversed, and the
+    size only. As 9702/21/M/J/23 Q3(c) asks a sketch of a force against time from a
+    momentum–time graph; a Paper 1 item earns its one mark for the key alone (9702/11/M/J/16,
+    multiple choice: one mark an item)."""
+    index = int(story)
+    what, how, positive, corners, time_division = _MOMENTUM_STORIES[index]
+    history = MomentumHistory(*zip(*corners, strict=True))
+    key = Option("", sketch=_force_sketch(history))
+    pool = (
+        Option("", "the momentum graph, not the force",
+               ("That graph has the shape of the momentum–time graph itself. The resultant force is its "
+                "gradient, F = Δp / Δt: constant where the line is straight, zero where it is flat."),
+               sketch=Sketch("resultant force", "F", corners)),
+        Option("", "the area under the graph, not its gradient",
+               ("That graph grows with the area under the momentum–time graph. The resultant force is "
+                "the gradient of a momentum–time graph; the area under a force–time graph is the change "
+                "in momentum."), sketch=_area_sketch(history)),
+        Option("", "the sign of the force reversed",
+               ("The sizes are right but the signs are reversed. Where the momentum increases the "
+                f"gradient is positive, so the force acts in the positive direction ({positive}); where "
+                "it decreases, the force is negative."), sketch=_force_sketch(history, -1.0)),
+        Option("", "the size of the force only",
+               ("You drew only the size of the force. Where the momentum decreases the gradient is "
+                "negative: the resultant force acts the other way, below the time axis."),
+               sketch=_force_sketch(history, size_only=True)),
+    )
+    wrong, seen = [], {key.text}
+    for option in pool:  # the first three that look different from the key and each other
+        if option.text not in seen and len(wrong) < len(OPTION_LETTERS) - 1:
+            wrong.append(option)
+            seen.add(option.text)
+    place = index % len(OPTION_LETTERS)
+    options = (*wrong[:place], key, *wrong[place:])
+    low, high = min(0.0, *history.momenta), max(history.momenta)
+    value_min, value_max, division = value_axis(high, low)
+    graph = Graph("momentum–time", "momentum", "N s", corners, time_division=time_division,
+                  value_division=division, time_max=corners[-1][0], value_min=value_min, value_max=value_max)
+    letter = OPTION_LETTERS[place]
+    return Question(
+        key="force-from-momentum-graph-choice",
+        text=(f"The graph shows how the momentum of {what} varies with time {how}. Momentum is positive "
+              f"in {positive}."),
+        givens=(),
+        graph=graph,
+        parts=(ChoicePart(f"Which graph shows how the resultant force on {what} varies "
+                          "with time?", options, letter,
+                          revisit="The resultant force is the gradient of the momentum–time graph, F = Δp / Δt: "
+                                  "a straight line gives a constant force, a flat line zero force, and a line "
+                                  "going down a negative force.", see="momentum-time-graph"),),
+        mark_scheme=(Mark(f"{letter}: F = gradient of the momentum–time graph: {key.text[0].lower()}"
+                          f"{key.text[1:]}", "B1"),),
+    )
+
+
+c_answer, d_answer, mass_given = sympy.symbols("c d mass_given")
+
+
+def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 8.0, speed_after: float = 20.0,
+                                    begins: float = 4.0, lasts: float = 8.0) -> Question:
+    """A momentum–time graph beyond its gradient (issue 25): read two momenta, then the speed is
+    p / m and the change in speed Δp / m (notes: "velocity = p / m, so its graph has the same
+    shape"). A lorry's momentum runs to tens of thousands of N s, so the axis grows with it
+    (parts.graph.value_axis). Readings earn B1 within half a small square; each calculation C1
+    A1, as 9702/21/M/J/23 Q3 reads a block's momentum off its graph, and 9702/21/M/J/16
+    Q3(b)(ii) marks a change in momentum C1 then its result A1."""
+    history = MomentumHistory((0.0, begins, begins + lasts, 20.0),
+                              (momentum(mass, speed_before),) * 2 + (momentum(mass, speed_after),) * 2)
+    before, after = (float(p) for p in history.momenta[1:3])
+    _, top, division = value_axis(after)
+    tolerance = division / 2
+    graph = Graph("momentum–time", "momentum", "N s", tuple(zip(history.times, history.momenta, strict=True)),
+                  time_division=0.5, value_division=division, time_max=20.0, value_max=top)
+    speed = velocity_from_momentum(after, mass)
+    gain = velocity_from_momentum(after - before, mass)
+    m, p1, p2 = n(mass, 2), reading(before, tolerance), reading(after, tolerance)
+    t_end = n(begins + lasts, decimals=1)
+    return Question(
+        key="graph-lorry-speed-momentum-time",
+        text=(f"A lorry of mass {m} kg speeds up along a straight, level road. The graph shows how its "
+              f"momentum varies with time. {reading_rule(tolerance, 'N s')}"),
+        givens=(Given("mass", mass, "kg", 2),),
+        graph=graph,
+        parts=(
+            GraphPart("momentum of the lorry at time 0", before, "N s", "momentum", units=_N_S,
+                      tolerance=tolerance, see="momentum",
+                      revisit="Read the flat part of the line at the start against the momentum axis."),
+            GraphPart(f"momentum of the lorry after {t_end} s", after, "N s", "momentum", units=_N_S,
+                      tolerance=tolerance, see="momentum",
+                      revisit="Read the flat part of the line at the end against the momentum axis."),
+            Part(f"speed of the lorry after {t_end} s", speed, "m s^-1", "speed", units=_M_S,
+                 shown_sig_figs=2, ecf=Ecf(b_answer / mass_given, {"mass_given": mass}),
+                 revisit="Momentum = mass × velocity, so the speed is v = p / m.",
+                 mistakes=(
+                     Mistake("the momentum at the start", velocity_from_momentum(before, mass),
+                             f"That is the speed at the start. Read the momentum after {t_end} s, where the "
+                             "line is flat again."),
+                     Mistake("divided by the weight", after / weight(mass),
+                             f"You divided by the weight, mg. Momentum = mass × velocity: divide by the mass, "
+                             f"{m} kg.", see="weight"),
+                     Mistake("the change in momentum ÷ mass", gain,
+                             "That is the gain in speed, Δp / m. The speed is the whole momentum ÷ the mass."),
+                 ), see="momentum"),
+            Part("increase in the speed of the lorry", gain, "m s^-1", "speed", units=_M_S, shown_sig_figs=2,
+                 ecf=Ecf((b_answer - a_answer) / mass_given, {"mass_given": mass}),
+                 revisit="The change in speed is the change in momentum ÷ the mass: Δv = Δp / m.",
+                 mistakes=(
+                     Mistake("the final speed, not the change", speed,
+                             "That is the speed at the end. Subtract the momentum at the start first: "
+                             "Δv = (p₂ − p₁) / m."),
+                     Mistake("the gradient: change in momentum ÷ time", average_force(after - before, lasts),
+                             "That is Δp / Δt, the gradient: the resultant force, in N. The change in speed is "
+                             "Δp / m.", see="momentum-time-graph"),
+                     Mistake("divided by the weight", (after - before) / weight(mass),
+                             f"You divided by the weight, mg. Δv = Δp / m, with the mass {m} kg.", see="weight"),
+                 ), see="momentum"),
+        ),
+        mark_scheme=(
+            Mark(f"{p1} N s", "B1", "a"),
+            Mark(f"{p2} N s", "B1", "b"),
+            Mark(f"v = p / m = {p2} / {m}", "C1", "c"),
+            Mark(f"= {n(speed, 2)} {PER_S}", "A1", "c"),
+            Mark(f"Δv = Δp / m = ({p2} − {p1}) / {m}", "C1", "d"),
+            Mark(f"= {n(gain, 2)} {PER_S}", "A1", "d"),
+        ),
+    )
+
+
 TEMPLATES = (
     Template("quick-check-1", "force-momentum", ("numeric",), "Quick check 1",
              trolley_pushed_from_rest,
@@ -594,4 +771,12 @@ TEMPLATES = (
              {"force": Draw(6.0, 2.0, 9.0, 0.5), "duration": Draw(2.5, 1.0, 5.0, 0.5),
               "speed_before": Draw(1.2, 0.5, 3.0, 0.1), "speed_after": Draw(4.2, 2.0, 6.0, 0.1),
               "turns": Draw(0, 0, 1, 1)}),
+    Template("force-from-momentum-graph-choice", "force-momentum", ("mcq",), "Which force–time graph?",
+             force_from_momentum_graph_choice, {"story": Draw(0, 0, len(_MOMENTUM_STORIES) - 1, 1)},
+             variant_count=len(_MOMENTUM_STORIES)),
+    Template("graph-lorry-speed-momentum-time", "force-momentum", ("graph", "numeric"),
+             "A lorry: speed from a momentum–time graph", lorry_speed_from_momentum_graph,
+             {"mass": Draw(4000.0, 2000.0, 9000.0, 500.0), "speed_before": Draw(8.0, 4.0, 12.0, 1.0),
+              "speed_after": Draw(20.0, 15.0, 28.0, 1.0), "begins": Draw(4.0, 2.0, 6.0, 0.5),
+              "lasts": Draw(8.0, 4.0, 12.0, 0.5)}),
 )

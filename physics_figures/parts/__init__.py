@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from .choice import OPTION_LETTERS, ChoicePart, Option, choices_in_order
+from .choice import OPTION_LETTERS, ChoicePart, Option, Sketch, choices_in_order
 from .explain import ExplainPart
 from .graph import Graph, GraphPart, reading_places
 from .numeric import Alternative, Ecf, Mistake, Part, Step
@@ -13,4 +13,4 @@ from .numeric import Alternative, Ecf, Mistake, Part, Step
 KINDS = {kind.kind: kind for kind in (Part, GraphPart, ChoicePart, ExplainPart)}
 
 __all__ = ["KINDS", "OPTION_LETTERS", "Alternative", "ChoicePart", "Ecf", "ExplainPart", "Graph", "GraphPart",
-           "Mistake", "Option", "Part", "Step", "choices_in_order", "reading_places"]
+           "Mistake", "Option", "Part", "Sketch", "Step", "choices_in_order", "reading_places"]

@@ -4,8 +4,10 @@ mistakes. Its browser twin is book/_ext/questions/static/question-kinds/choice.j
 
 from __future__ import annotations
 
+import itertools
+import math
 import zlib
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import ClassVar
 
 from .. import marking, textformat
@@ -15,18 +17,139 @@ from .common import NoValue, _require
 OPTION_LETTERS = ("A", "B", "C", "D")
 
 
+#: A piece of a sketch whose gradient is this small (in heights of the sketch per its
+#: duration) is drawn and described as flat.
+_FLAT = 0.03
+#: A curved piece whose gradient changes by less than this factor is "steady".
+_STEADY = 1.3
+#: A value this close to zero (a share of the sketch's height) is drawn, and read, as zero.
+_ZERO = 0.02
+
+
+@dataclass(frozen=True)
+class Sketch:
+    """A small sketch graph for a "which graph?" option (Paper 1 draws four, A to D): a line
+    through ``points`` (time, value) with no scale, only the shape. ``symbol`` labels the
+    value axis ("F", "a"), ``quantity`` names it in words ("resultant force"). Two points at
+    the same time draw a jump. The points come from the models, worked by the template;
+    physics_figures.figures.sketches draws them (SVG for the site and Moodle, TikZ for the
+    sheets), and ``describe`` puts the shape into words for the alt text, without saying
+    whether it is right."""
+
+    quantity: str
+    symbol: str
+    points: tuple[tuple[float, float], ...] = field(repr=False)
+
+    def __post_init__(self):
+        object.__setattr__(self, "points", tuple((float(t), float(y)) for t, y in self.points))
+        _require(len(self.points) >= 2, "points", self.points, "must hold at least two points")
+        _require(all(math.isfinite(t) and math.isfinite(y) for t, y in self.points), "points", self.points,
+                 "must be finite numbers")
+        times = [t for t, _ in self.points]
+        _require(times[0] >= 0 and all(b >= a for a, b in itertools.pairwise(times)), "points",
+                 times, "must start at a time of 0 or more and never go back in time")
+        _require(times[-1] > times[0], "points", times, "must span some time")
+        _require(bool(self.quantity.strip()) and bool(self.symbol.strip()), "quantity", self.quantity,
+                 "and symbol must name the value axis")
+
+    @property
+    def size(self) -> float:
+        """The largest size of a value (1 when the line lies on the time axis)."""
+        return max(abs(y) for _, y in self.points) or 1.0
+
+    def describe(self) -> str:
+        """The shape in words: where it starts, then each piece (rises, falls, stays constant,
+        jumps), how a curve bends, and each level's sign and size against the first."""
+        levels = _Levels(self.size)
+        words = [f"starts at {levels.word(self.points[0][1])}"]
+        for trend, piece in _pieces(self.points, self.size):
+            end = piece[-1][1]
+            if trend == "flat":
+                words.append("stays constant")
+            elif trend == "jump":
+                words.append(f"jumps to {levels.word(end)}")
+            else:
+                through = " through zero" if piece[0][1] * end < 0 and levels.word(end) != "zero" else ""
+                verb = "rises" if trend == "up" else "falls"
+                words.append(f"{verb} {_manner(piece)}{through} to {levels.word(end)}")
+        shape = ", ".join([words[0], ", then ".join(words[1:])]) if len(words) > 1 else words[0]
+        return f"{self.quantity[:1].upper()}{self.quantity[1:]} against time: {shape}."
+
+
+class _Levels:
+    """A value in words, its size told against the first non-zero value named."""
+
+    def __init__(self, size: float):
+        self.size, self.first = size, None
+
+    def word(self, value: float) -> str:
+        if abs(value) <= _ZERO * self.size:
+            return "zero"
+        sign = "positive" if value > 0 else "negative"
+        if self.first is None:
+            self.first = value
+            return f"a {sign} value"
+        ratio = abs(value) / abs(self.first)
+        same_sign = (value > 0) == (self.first > 0)
+        if math.isclose(ratio, 1, rel_tol=0.02):
+            return f"the same {sign} value" if same_sign else f"a {sign} value of the same size"
+        bigger = "larger" if ratio > 1 else "smaller"
+        return f"a {bigger} {sign} value" if same_sign else f"a {sign} value of {bigger} size"
+
+
+def _trend(a: tuple[float, float], b: tuple[float, float], size: float, duration: float) -> str:
+    (t0, y0), (t1, y1) = a, b
+    if t1 == t0:
+        return "jump"
+    if abs(y1 - y0) / (t1 - t0) * duration / size < _FLAT:
+        return "flat"
+    return "up" if y1 > y0 else "down"
+
+
+def _pieces(points, size: float) -> list[tuple[str, list[tuple[float, float]]]]:
+    """Runs of segments with the same trend, each with its points (a jump is its own piece)."""
+    duration = points[-1][0] - points[0][0]
+    pieces: list[tuple[str, list]] = []
+    for a, b in itertools.pairwise(points):
+        trend = _trend(a, b, size, duration)
+        if pieces and pieces[-1][0] == trend and trend != "jump":
+            pieces[-1][1].append(b)
+        else:
+            pieces.append((trend, [a, b]))
+    return pieces
+
+
+def _manner(piece: list[tuple[float, float]]) -> str:
+    """How a rising or falling piece bends: steadily (straight), ever more quickly or slowly."""
+    slopes = [abs((y1 - y0) / (t1 - t0)) for (t0, y0), (t1, y1) in itertools.pairwise(piece)]
+    steepest = max(range(len(slopes)), key=slopes.__getitem__)
+    quicker = slopes[steepest] > _STEADY * slopes[0]
+    slower = slopes[steepest] > _STEADY * slopes[-1]
+    if quicker and slower:
+        return "ever more quickly, then ever more slowly"
+    if quicker:
+        return "ever more quickly"
+    return "ever more slowly" if slower else "steadily"
+
+
 @dataclass(frozen=True)
 class Option:
     """One option of a multiple-choice part (text format). A wrong option names the mistake or
-    misconception it stands for, with the feedback a student gets for choosing it."""
+    misconception it stands for, with the feedback a student gets for choosing it. An option
+    that is a sketch graph has ``sketch``; its text is then the sketch's shape in words (its
+    alt text, and what the answer key and Your practice print)."""
 
     text: str
     mistake: str = ""
     feedback: str = ""
     #: The section that teaches the idea, where it is not the part's own (a bank section id).
     see: str | None = None
+    sketch: Sketch | None = None
 
     def __post_init__(self):
+        if self.sketch is not None:
+            _require(not self.text, "text", self.text, "must be empty for a sketch: its words come from the shape")
+            object.__setattr__(self, "text", self.sketch.describe())
         textformat.parse(self.text)
         _require(bool(self.mistake) == bool(self.feedback), "feedback", self.feedback,
                  "goes with a named mistake: a wrong option has both, the key has neither")
@@ -56,6 +179,8 @@ class ChoicePart(NoValue):
                      "must name a mistake for each wrong option and none for the key")
         texts = [textformat.to_plain(o.text) for o in self.options]
         _require(len(set(texts)) == len(texts), "options", texts, "must all differ")
+        kinds = {o.sketch is None for o in self.options}
+        _require(len(kinds) == 1, "options", texts, "must be all sketches or all words (none the odd one out)")
         _require(bool(self.revisit.strip()), "revisit", self.revisit, "must name the idea to revisit")
 
     @property
@@ -65,10 +190,25 @@ class ChoicePart(NoValue):
     def browser_data(self, part_id: str) -> dict:
         return {"id": part_id, "kind": self.kind, "prompt": self.prompt, "answer": self.answer,
                 "revisit": self.revisit, "see": self.see,
-                "options": [{"letter": letter, "html": textformat.to_html(o.text, paragraphs=False),
+                "options": [{"letter": letter, "html": _option_html(o),
                              "mistake": o.mistake, "feedback": o.feedback, "see": o.see,
+                             **({"sketch": True} if o.sketch else {}),
                              **({"loses": list(marking.mistake_losses("physics"))} if o.mistake else {})}
                             for letter, o in zip(OPTION_LETTERS, self.options, strict=True)]}
+
+    @property
+    def sketches(self) -> bool:
+        """The options are sketch graphs (a "which graph?" item)."""
+        return all(o.sketch is not None for o in self.options)
+
+
+def _option_html(option: Option) -> str:
+    """An option's words, or its sketch as a small inline SVG named by its shape in words."""
+    if option.sketch is None:
+        return textformat.to_html(option.text, paragraphs=False)
+    from ..figures.sketches import sketch_svg  # drawn only where a sketch is asked for
+
+    return sketch_svg(option.sketch)
 
 
 def choices_in_order(key: float, wrong: dict[str, tuple], *, sig_figs: int, unit: str, seed: int = 0

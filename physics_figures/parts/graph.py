@@ -116,3 +116,28 @@ class Graph:
         raise ValueError(f"time must lie on the drawn line, {self.points[0][0]} to "
                          f"{self.points[-1][0]} s (got time={time!r})")
 
+
+
+#: A value axis has at most this many small squares (Graph allows 60), labelled every 5 or 10.
+_MOST_SQUARES = 50
+
+
+def value_axis(high: float, low: float = 0.0) -> tuple[float, float, float]:
+    """(value_min, value_max, value_division) of a graph's value axis that holds ``low`` to
+    ``high`` with a little room above (and below a negative ``low``): small squares of 1, 2 or
+    5 x 10^n, at most 50 of them, the ends on a labelled line (every 5 squares). So a
+    cyclist's 900 N s gets 0 to 1000 in squares of 20, a lorry's 60 000 N s 0 to 70 000 in
+    squares of 2000: the axis grows with the momentum instead of stopping at 1000 N s."""
+    _require(math.isfinite(high) and math.isfinite(low) and high > 0 and low <= 0, "high", (low, high),
+             "must be a positive top above a low of 0 or below")
+    room = 0.05 * (high - low)
+    top, bottom = high + room, (low - room if low < 0 else 0.0)
+    wanted = (top - bottom) / _MOST_SQUARES
+    power = 10.0 ** math.floor(math.log10(wanted))
+    division = next(step * power for step in (1, 2, 5, 10) if step * power >= wanted * (1 - 1e-12))
+    label = 5 * division
+    value_max = math.ceil(top / label - 1e-9) * label
+    value_min = -math.ceil(-bottom / label - 1e-9) * label if bottom < 0 else 0.0
+    while (value_max - value_min) / division > 60:  # rounding both ends out can pass Graph's limit
+        division *= 2
+    return float(value_min), float(value_max), float(division)

@@ -42,6 +42,7 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \usepackage{enumitem}
 \usepackage{fancyhdr}
 \usepackage{xcolor}
+\usepackage{tikz} % the sketch graphs of a "which graph?" item
 \usepackage[hidelinks,pdfcreator={physics_figures.worksheets}]{hyperref}
 \tracinglostchars=3 % a character the font lacks is an error, not a silent gap
 \setlength{\parindent}{0pt}
@@ -193,6 +194,9 @@ def _answer_line(label: str, part, marks: int) -> str:
 
 def _part(question: Question, index: int, marks: int) -> str:
     part, label = question.parts[index], question.label(index)
+    if part.kind == "mcq" and part.sketches:
+        return ("\\par\\vspace{4pt}" + tex(f"{label}{part.prompt}") + "\n" + sketch_row(part)
+                + r"Answer (A, B, C or D): \gridbox \partmarks{" + str(marks) + "}\\par")
     if part.kind == "mcq":
         options = "\n".join(f"\\item {rich(option.text)}" for option in part.options)
         return ("\\par\\vspace{4pt}" + tex(f"{label}{part.prompt}") + "\n"
@@ -205,6 +209,16 @@ def _part(question: Question, index: int, marks: int) -> str:
     space = 0.6 if part.kind == "graph" else WORKING_CM_PER_MARK * marks
     return (f"\\par\\needspace{{{format_number(space + 1.2, decimals=1)}cm}}\\vspace{{{format_number(space, decimals=1)}cm}}\n"
             + _answer_line(label, part, marks) + "\\par")
+
+
+def sketch_row(part) -> str:
+    """The four sketch graphs of a "which graph?" item side by side, each under its letter."""
+    from ..figures.sketches import sketch_tikz  # TikZ text only: no matplotlib
+
+    cells = "\\hfill".join(f"\\begin{{minipage}}[t]{{0.24\\linewidth}}\\centering\\textbf{{{letter}}}\\par"
+                          f"{sketch_tikz(option.sketch)}\\end{{minipage}}"
+                          for letter, option in zip(OPTION_LETTERS, part.options, strict=True))
+    return "\\par\\needspace{4cm}\\noindent" + cells + "\\par\\vspace{6pt}\n"
 
 
 def question_sheet(sheet: Sheet, version: Version) -> str:

@@ -21,7 +21,9 @@ Moodle grades as the book grades wherever its core question types can: the same 
   (the direction's own B1, or the A1 that carries the direction). A minus sign on the size
   is ignored, as the schemes do.
 * A multiple-choice item is a **multichoice** question, options A to D in the printed
-  order, each wrong option with the feedback of the mistake it stands for.
+  order, each wrong option with the feedback of the mistake it stands for. A "which graph?"
+  item's options are its sketch graphs, each a small SVG file inside its answer, shown by an
+  image whose alt text is the shape in words.
 * A describe-and-explain part is an **essay** question, with the model answer and the
   marking points (with their codes) as information for the grader.
 * A multi-part question becomes one question per part, each with the question's text; a part
@@ -307,7 +309,8 @@ class _Export:
         _text(answer, "feedback", feedback)
 
     def multichoice(self, name, idnumber, html, marks, general, files,
-                    options: list[tuple[str, bool, str]], *, numbering: str = "ABCD") -> None:
+                    options: list[tuple[str, bool, str]], *, numbering: str = "ABCD",
+                    option_files: list[dict[str, bytes]] | None = None) -> None:
         question = self._question("multichoice", name, idnumber, html, marks, general, files)
         _plain(question, "single", "true")
         _plain(question, "shuffleanswers", "false")
@@ -316,9 +319,13 @@ class _Export:
         _text(question, "correctfeedback", "<p>Your answer is correct.</p>")
         _text(question, "partiallycorrectfeedback", "<p>Your answer is partially correct.</p>")
         _text(question, "incorrectfeedback", "<p>Your answer is incorrect.</p>")
-        for html_option, right, feedback in options:
+        for index, (html_option, right, feedback) in enumerate(options):
             answer = ET.SubElement(question, "answer", {"fraction": "100" if right else "0", "format": "html"})
             ET.SubElement(answer, "text").text = html_option
+            # an answer's own files sit inside <answer> (qformat_xml: import_answer with files)
+            for filename, data in (option_files[index] if option_files else {}).items():
+                file = ET.SubElement(answer, "file", {"name": filename, "path": "/", "encoding": "base64"})
+                file.text = base64.b64encode(data).decode("ascii")
             _text(answer, "feedback", feedback)
 
     def essay(self, name, idnumber, html, marks, general, files, grader: str) -> None:
@@ -442,11 +449,13 @@ def _part(out: _Export, template: Template, index: int, question: Question, part
     note = ecf_note(question, part_index)
     general = _scheme_html(question) + (f"<p><em>{_escape(note)}</em></p>" if note else "")
     if part.kind == "mcq":
-        options = [(textformat.to_html(option.text, paragraphs=False), letter == part.answer,
+        shown, option_files = _option_texts(part, idnumber)
+        options = [(text, letter == part.answer,
                     f"<p>{_escape(option.feedback)}</p>" if option.feedback
                     else f"<p>Right: {_escape(part.answer_text)}.</p>")
-                   for letter, option in zip(OPTION_LETTERS, part.options, strict=True)]
-        out.multichoice(name, idnumber, stem + ask + "</p>", marks, general, files, options)
+                   for letter, option, text in zip(OPTION_LETTERS, part.options, shown, strict=True)]
+        out.multichoice(name, idnumber, stem + ask + "</p>", marks, general, files, options,
+                        option_files=option_files)
     elif part.kind == "explain":
         grader = (f"<p><strong>Model answer</strong></p>{textformat.to_html(part.model_answer)}"
                   + _scheme_html(question))
@@ -464,6 +473,22 @@ def _part(out: _Export, template: Template, index: int, question: Question, part
                       else "Type the number as a decimal (it has no unit)")
             out.numerical(name, idnumber, stem + ask + f"{how}.{sign} {typing}.</p>" + ecf, marks, general, files,
                           question, part_index)
+
+
+def _option_texts(part, idnumber: str) -> tuple[list[str], list[dict[str, bytes]]]:
+    """Each option's HTML, and its files: a sketch graph is a small SVG file shown by an <img>
+    whose alt text is its shape in words (Moodle's HTML filter drops inline SVG)."""
+    if not part.sketches:
+        return [textformat.to_html(o.text, paragraphs=False) for o in part.options], []
+    from ..figures.sketches import HEIGHT, WIDTH, sketch_svg  # SVG text only: no matplotlib
+
+    texts, files = [], []
+    for letter, option in zip(OPTION_LETTERS, part.options, strict=True):
+        filename = f"{idnumber}-{letter}.svg"
+        texts.append(f'<img src="@@PLUGINFILE@@/{filename}" alt="{html.escape(option.text)}" '
+                     f'width="{WIDTH}" height="{HEIGHT}">')
+        files.append({filename: sketch_svg(option.sketch).encode()})
+    return texts, files
 
 
 def _decimal(value: float) -> str:

@@ -121,7 +121,7 @@ def answer_lines(label: str, part, marks: int) -> list[nodes.Node]:
     if part.kind == "mcq":
         options = nodes.enumerated_list(enumtype="upperalpha", classes=["q-options-print"])
         for option in part.options:
-            options += nodes.list_item("", *text_nodes(option.text))
+            options += nodes.list_item("", *(sketch_nodes(option.sketch) if option.sketch else text_nodes(option.text)))
         return [nodes.paragraph(text=f"{label}{part.prompt}"), options,
                 nodes.paragraph(text="Answer (A, B, C or D): " + "." * 8 + tail)]
     if part.kind == "explain":
@@ -133,6 +133,14 @@ def answer_lines(label: str, part, marks: int) -> list[nodes.Node]:
     # the question sheet draws its own line from this data (book/_latex/latex_question_sheets.py)
     return [nodes.paragraph(text=line + tail, classes=["q-answer-line"], prompt=f"{label}{part.prompt}",
                             marks=marks, direction=part.direction == "choice")]
+
+
+def sketch_nodes(sketch) -> list[nodes.Node]:
+    """A sketch option on paper and without JavaScript: the same drawing as SVG (HTML) and
+    TikZ (the PDF book, whose tcolorbox loads TikZ)."""
+    from physics_figures.figures.sketches import sketch_svg, sketch_tikz
+
+    return [nodes.raw("", sketch_svg(sketch), format="html"), nodes.raw("", sketch_tikz(sketch), format="latex")]
 
 
 def _template_data(template) -> dict:

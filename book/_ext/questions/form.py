@@ -124,7 +124,9 @@ def _options_html(base: str, part: dict) -> str:
         f'name="{base}" id="{base}-{o["letter"]}" value="{o["letter"]}" aria-describedby="{base}-feedback">'
         f'<span class="q-letter">{o["letter"]}</span> <span class="q-option-text">{o["html"]}</span></label>'
         for o in part["options"])
-    return f'<div class="q-options">{items}</div>'
+    # four sketch graphs sit side by side, two by two on a phone (questions.css)
+    sketches = " q-sketches" if any(o.get("sketch") for o in part["options"]) else ""
+    return f'<div class="q-options{sketches}">{items}</div>'
 
 
 def _explain_html(base: str, part: dict, data: dict) -> str:

@@ -240,7 +240,7 @@ def kick_force_time(peak: float = 200.0, rise: float = 0.01, hold: float = 0.03,
             *(Reading(f"time the line turns at {i}", t, graph.time_division / 2) for i, t in enumerate(times[1:], 1)))
 
     def impulse_read(top: float, *turns: float) -> float:
-        return area_under_force_time((0.0, *turns), forces[:1] + (top, top) + forces[-1:])
+        return area_under_force_time((0.0, *turns), (forces[0], top, top, forces[-1]))
 
     return Question(
         key="graph-kick-force-time",

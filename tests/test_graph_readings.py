@@ -22,6 +22,7 @@ from moodle_format import _first_match
 from test_marks_rules import mark_questions, typed
 
 from physics_figures import bank
+from physics_figures import questions as q
 from physics_figures.figures.question_graph import question_graph, question_graph_alt, small_square
 from physics_figures.models import area_under_force_time, velocity_from_momentum
 from physics_figures.notation import format_number
@@ -220,3 +221,54 @@ def test_the_small_square_the_view_zooms_by_is_the_drawn_grid_s(template):
 def test_small_square_refuses_an_svg_without_its_plot_area():
     with pytest.raises(ValueError, match="plot area"):
         small_square('<svg viewBox="0 0 300 200"></svg>', KICK.variant(0).graph)
+
+
+# ---------------------------------------------------------------- the band, refused when impossible
+
+
+def _worked_from_readings(**change) -> q.Question:
+    """A trolley-like question: (a) a reading, (b) worked from it and from a second reading."""
+    graph = q.Graph("momentum–time", "momentum", "N s", ((0.0, 1.2), (1.0, 1.2), (1.3, 0.4), (3.0, 0.4)),
+                    time_division=0.1, value_division=0.05, time_max=3.0, value_max=1.5)
+    fields = {"readings": (q.Reading("before", 1.2, 0.025), q.Reading("after", 0.4, 0.025)),
+              "answer_from_readings": lambda before, after: (before - after) / 0.5}
+    fields.update(change.pop("part", {}))
+    worked = q.Part("speed of B", 1.6, "m s^-1", "speed", revisit="B gains what A loses.", **fields)
+    reading = q.GraphPart("momentum before", 1.2, "N s", "momentum", tolerance=0.025, revisit="Read it.")
+    return q.Question("graph-band", (), (reading, worked), (q.Mark("1.20 N s", "B1", "a"), q.Mark("1.6", "B1", "b")),
+                      graph=change.pop("graph", graph))
+
+
+def test_a_part_s_band_is_what_its_readings_give_within_half_a_square():
+    part = _worked_from_readings().parts[1]
+    assert part.band == pytest.approx((1.5, 1.7))
+    assert part.browser_data("b")["band"] == pytest.approx([1.5, 1.7])
+    assert "band" not in bank.TEMPLATES["quick-check-1"].variant(0).parts[0].browser_data("a")
+    assert part.band_takes(1.7, 2) and part.band_takes(1.74, 3) is False and part.band_takes(1.4, 2) is False
+
+
+@pytest.mark.parametrize(("change", "message"), [
+    ({"part": {"answer_from_readings": None}}, "readings and answer_from_readings go together"),
+    ({"part": {"readings": ()}}, "readings and answer_from_readings go together"),
+    ({"part": {"answer_from_readings": lambda before, after: after - before}},
+     "answer_from_readings must give the part's value"),
+    ({"part": {"readings": (q.Reading("before", 1.2, 0.04), q.Reading("after", 0.4, 0.025))}},
+     "tolerance must be half a small square of the graph"),
+])
+def test_a_band_that_is_not_the_graph_s_is_refused_by_name(change, message):
+    with pytest.raises(ValueError, match=re.escape(message)):
+        _worked_from_readings(**change)
+
+
+def test_a_reading_needs_a_tolerance():
+    with pytest.raises(ValueError, match="tolerance must be positive"):
+        q.Reading("before", 1.2, 0.0)
+
+
+def test_a_named_mistake_inside_the_band_makes_the_variant_confusable():
+    from physics_figures.variants import confusable_mistakes
+
+    mistake = q.Mistake("read one square out", 1.52, "Read again.")
+    assert confusable_mistakes(_worked_from_readings(part={"mistakes": (mistake,)})) == ["speed of B: read one square out"]
+    far = q.Mistake("gave B A's momentum after", 0.8, "B gains what A loses.")
+    assert confusable_mistakes(_worked_from_readings(part={"mistakes": (far,)})) == []

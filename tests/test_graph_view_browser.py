@@ -40,7 +40,9 @@ SHOWN = f"""() => {{
   const dialog = document.querySelector('{VIEW}'), image = dialog.querySelector('img.q-graph-large');
   const pane = dialog.querySelector('.q-graph-pane'), box = image.getBoundingClientRect();
   return {{src: image.currentSrc, alt: image.alt, width: box.width, height: box.height,
-           dialog: dialog.getBoundingClientRect().width, pane: pane.clientWidth,
+           dialog: dialog.getBoundingClientRect().width,
+           pane: pane.clientWidth - parseFloat(getComputedStyle(pane).paddingLeft)
+                 - parseFloat(getComputedStyle(pane).paddingRight),
            touch: getComputedStyle(pane).touchAction, background: getComputedStyle(dialog).backgroundColor}};
 }}"""
 

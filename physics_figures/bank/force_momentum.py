@@ -236,8 +236,9 @@ def kick_force_time(peak: float = 200.0, rise: float = 0.01, hold: float = 0.03,
     f, m = reading(peak, 5.0), n(mass, 2)
     # the impulse is worked from the top and three times where the line turns, all read off the
     # graph: readings within half a small square give a range of right answers (Part.band)
+    turns = ("time the force reaches its top", "time it leaves the top", "time the boot leaves the ball")
     read = (Reading("largest force", peak, graph.value_division / 2),
-            *(Reading(f"time the line turns at {i}", t, graph.time_division / 2) for i, t in enumerate(times[1:], 1)))
+            *(Reading(name, t, graph.time_division / 2) for name, t in zip(turns, times[1:], strict=True)))
 
     def impulse_read(top: float, *turns: float) -> float:
         return area_under_force_time((0.0, *turns), (forces[0], top, top, forces[-1]))

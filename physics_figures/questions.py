@@ -46,6 +46,7 @@ from .parts import (  # the part kinds, one module each (physics_figures/parts/)
     Mistake,
     Option,
     Part,
+    Reading,
     Sketch,
     Step,
     choices_in_order,
@@ -69,7 +70,7 @@ from .parts.common import (
 __all__ = ["ASKS", "DEFAULT_CHECK_SIG_FIGS", "DEFAULT_MIN_SIG_FIGS", "DIRECTION_MODES", "G_NINE_EIGHT", "G_TEN",
            "KINDS", "MARK_CODES", "OPTION_LETTERS", "PART_IDS", "PART_WAY_SIG_FIGS", "Alternative", "ChoicePart",
            "Ecf", "ExplainPart", "Given", "Graph", "GraphPart", "Mark", "Mistake", "Option", "Part", "Question",
-           "Sketch", "Step", "choices_in_order", "number", "reading_places", "unit_text"]
+           "Reading", "Sketch", "Step", "choices_in_order", "number", "reading_places", "unit_text"]
 
 
 @dataclass(frozen=True)
@@ -136,9 +137,12 @@ class Question:
         sketches = any(p.kind == "mcq" and p.sketches for p in self.parts)
         _require(bool(readings) == (self.graph is not None) or (sketches and not readings), "graph", self.graph,
                  f"goes with a part read from it (GraphPart) in {self.key}: both or neither")
+        carried = [r for p in self.parts for r in getattr(p, "readings", ())]
+        _require(not carried or self.graph is not None, "readings", carried,
+                 f"are read off a graph, which {self.key} does not print")
         if self.graph is not None:
             halves = (self.graph.time_division / 2, self.graph.value_division / 2)
-            for part in readings:
+            for part in (*readings, *carried):
                 _require(any(math.isclose(part.tolerance, h, rel_tol=1e-9) for h in halves), "tolerance",
                          part.tolerance, f"must be half a small square of the graph, {halves} ({self.key})")
         _require(re.fullmatch(r"[a-z0-9]+(-[a-z0-9]+)*", self.key) is not None, "key", self.key,

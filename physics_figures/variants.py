@@ -76,11 +76,14 @@ def confusable_mistakes(question: Question) -> list[str]:
     for part in question.parts:
         if part.kind not in ("numeric", "graph"):  # a choice or an explanation has no band
             continue
-        # a reading from a graph is right within half a small square; a calculation at 2 s.f.
+        # a reading from a graph is right within half a small square; a calculation at 2 s.f.,
+        # and one worked from readings anywhere their half squares take it, written at 2 s.f.
         low, high = part.band if part.kind == "graph" else accepted_band(part.value)
         for mistake in part.mistakes:
             same_kind = mistake.unit is None and mistake.direction is None
-            if same_kind and low <= mistake.value <= high:
+            typed = float(round_number(mistake.value, 2)) if mistake.value else 0.0
+            if same_kind and (low <= mistake.value <= high
+                              or (part.kind == "numeric" and part.band_takes(typed, 2))):
                 found.append(f"{part.prompt}: {mistake.name}")
     return found
 

@@ -39,6 +39,7 @@ from ..questions import (
     Option,
     Part,
     Question,
+    Reading,
     Sketch,
     Step,
     choices_in_order,
@@ -598,6 +599,8 @@ def skydiver_velocity_time(terminal: float = 50.0, mass: float = 70.0) -> Questi
                  ), see="skydiver"),
             Part("value of k", k, "kg m^-1", "drag constant", units="kg m^-1", shown_sig_figs=2,
                  ecf=Ecf(b_answer / a_answer**2, {}),
+                 readings=(Reading("terminal velocity", terminal, graph.value_division / 2),),
+                 answer_from_readings=lambda v: drag_constant_for_terminal_velocity(mass, v),
                  revisit="At terminal velocity kv² = mg, so k = mg / v².",
                  mistakes=(
                      Mistake("speed not squared", drag / terminal,
@@ -645,6 +648,10 @@ def ball_acceleration_from_graph(terminal: float = 20.0, moment: float = 2.0, ma
             GraphPart(f"velocity at {t} s", speed, "m s^-1", "velocity", units=M_S, tolerance=0.25, revisit=f"Go up from {t} s on the time axis to the curve, then across."),
             Part(f"acceleration at {t} s", a, "m s^-2", "acceleration", units=M_S2, shown_sig_figs=2,
                  ecf=Ecf(gravity_symbol * (1 - b_answer**2 / a_answer**2), {"gravity": G_EARTH}),
+                 readings=(Reading("terminal velocity", terminal, graph.value_division / 2),
+                           Reading(f"velocity at {t} s", speed, graph.value_division / 2)),
+                 answer_from_readings=lambda top, now: acceleration(
+                     weight(mass) - drag_force(drag_constant_for_terminal_velocity(mass, top), now), mass),
                  revisit="Resultant force = weight − drag, with drag = kv² and k = mg / vₜ² (vₜ the "
                          "terminal velocity); so a = g(1 − v² / vₜ²).",
                  mistakes=(

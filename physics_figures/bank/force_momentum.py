@@ -37,6 +37,7 @@ from ..questions import (
     Option,
     Part,
     Question,
+    Reading,
     Sketch,
     Step,
     choices_in_order,
@@ -245,6 +246,15 @@ def kick_force_time(peak: float = 200.0, rise: float = 0.01, hold: float = 0.03,
     graph = Graph("force–time", "force", "N", tuple(zip(times, forces, strict=True)),
                   time_division=0.002, value_division=10.0, time_max=0.1, value_max=350.0, shaded=True)
     f, m = reading(peak, 5.0), n(mass, 2)
+    # the impulse is worked from the top and three times where the line turns, all read off the
+    # graph: readings within half a small square give a range of right answers (Part.band)
+    turns = ("time the force reaches its top", "time it leaves the top", "time the boot leaves the ball")
+    read = (Reading("largest force", peak, graph.value_division / 2),
+            *(Reading(name, t, graph.time_division / 2) for name, t in zip(turns, times[1:], strict=True)))
+
+    def impulse_read(top: float, *turns: float) -> float:
+        return area_under_force_time((0.0, *turns), (forces[0], top, top, forces[-1]))
+
     return Question(
         key="graph-kick-force-time",
         text=(f"A football of mass {m} kg is at rest. A player kicks it, and the graph shows how the "
@@ -258,6 +268,7 @@ def kick_force_time(peak: float = 200.0, rise: float = 0.01, hold: float = 0.03,
             Part("impulse on the ball", area, "N s", "impulse", units=_N_S, shown_sig_figs=2,
                  revisit="Impulse = change in momentum = the area under the force–time graph.",
                  ecf=Ecf(a_answer * widths_symbol / 2, {"widths": widths}),
+                 readings=read, answer_from_readings=impulse_read,
                  mistakes=(
                      Mistake("largest force × whole contact time", peak * contact,
                              "You took the area as a rectangle, largest force × contact time. The force "
@@ -271,6 +282,7 @@ def kick_force_time(peak: float = 200.0, rise: float = 0.01, hold: float = 0.03,
                  ), see="momentum-time-graph"),
             Part("speed of the ball as it leaves the boot", speed, "m s^-1", "speed", units=_M_S,
                  shown_sig_figs=2, ecf=Ecf(b_answer / mass_symbol, {"mass": mass}),
+                 readings=read, answer_from_readings=lambda *r: velocity_from_momentum(impulse_read(*r), mass),
                  revisit="The ball starts at rest, so its momentum afterwards is the impulse: v = Δp / m.",
                  mistakes=(
                      Mistake("impulse taken as kinetic energy", math.sqrt(2 * area / mass),
@@ -317,6 +329,10 @@ def cyclist_momentum_time(start: float = 240.0, end: float = 640.0, begins: floa
             Part(f"resultant force on her between {t0} s and {t1} s", force, "N", "force",
                  shown_sig_figs=2,
                  ecf=Ecf((b_answer - a_answer) / interval_symbol, {"interval": lasts}),
+                 # the times are printed in the prompt; the two momenta are read off the graph
+                 readings=(Reading("momentum before", start, graph.value_division / 2),
+                           Reading("momentum after", end, graph.value_division / 2)),
+                 answer_from_readings=lambda before, after: average_force(after - before, lasts),
                  revisit="The resultant force is the gradient of the momentum–time graph: F = Δp / Δt.",
                  mistakes=(
                      Mistake("final momentum ÷ time", average_force(end, lasts),
@@ -364,6 +380,12 @@ def ball_bounce_momentum_time(before: float = 2.4, after: float = 1.6, arrives: 
             Part("average force on the ball from the wall", abs(force), "N", "force", shown_sig_figs=2,
                  direction="choice", choices=(towards, away), answer_direction=away,
                  ecf=Ecf((b_answer - a_answer) / interval_symbol, {"interval": contact}),
+                 # both momenta and the contact's two ends are read off the graph
+                 readings=(Reading("momentum before", before, graph.value_division / 2),
+                           Reading("momentum after", -after, graph.value_division / 2),
+                           Reading("time the ball meets the wall", arrives, graph.time_division / 2),
+                           Reading("time the ball leaves the wall", arrives + contact, graph.time_division / 2)),
+                 answer_from_readings=lambda p0, p1, t0, t1: average_force(p1 - p0, t1 - t0),
                  direction_hint="The momentum changes from towards the wall to away from it, so the "
                                 "force on the ball is away from the wall.",
                  revisit="F = Δp / Δt, with Δp = final − initial momentum, signs included.",

@@ -30,6 +30,7 @@ from ..questions import (
     Mistake,
     Part,
     Question,
+    Reading,
     Step,
     choices_in_order,
 )
@@ -182,6 +183,9 @@ def trolley_collision_momentum_time(before: float = 1.2, after: float = 0.4, mas
                       revisit="Read the flat part of the line after the collision."),
             Part("speed of B after the collision", speed_b, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
                  ecf=Ecf((a_answer - b_answer) / mass_b_symbol, {"mass_b": mass_b}),
+                 readings=(Reading("momentum of A before", before, graph.value_division / 2),
+                           Reading("momentum of A after", after, graph.value_division / 2)),
+                 answer_from_readings=lambda p0, p1: velocity_after_collision(1.0, p0, mass_b, 0.0, p1),
                  revisit="Momentum is conserved: the momentum A loses, B gains. Then v = p / m.",
                  mistakes=(
                      Mistake("gave B the momentum A has after", velocity_from_momentum(after, mass_b),

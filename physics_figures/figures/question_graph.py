@@ -7,7 +7,9 @@ numbers are the question's; nothing is computed here.
 
 from __future__ import annotations
 
+import itertools
 import math
+import re
 from typing import NamedTuple
 
 from matplotlib.axes import Axes
@@ -29,6 +31,8 @@ _LABEL_EVERY = (1, 2, 5, 10)
 
 #: Inches: about 310 pt of SVG, so 12 pt ticks are >= 11 CSS px in a 320 px wide box.
 QUESTION_GRAPH_SIZE = (4.2, 3.3)
+#: The id of the plot area (the grid's frame) in the SVG: the enlarged view zooms by its size.
+PLOT_AREA_ID = "q-graph-area"
 
 
 class QuestionGraph(NamedTuple):
@@ -76,6 +80,7 @@ def plot_question_graph(graph: Graph, *, ax: Axes | None = None) -> QuestionGrap
     ax.grid(which="minor", color=colour("figure.grid-minor"), linewidth=0.5)
     ax.grid(which="major", color=colour("figure.grid-major"), linewidth=0.8)
     ax.set_axisbelow(True)
+    ax.patch.set_gid(PLOT_AREA_ID)
     if graph.value_min < 0:
         ax.axhline(0, color=GUIDE, linewidth=1.0)
     if graph.shaded:
@@ -86,9 +91,46 @@ def plot_question_graph(graph: Graph, *, ax: Axes | None = None) -> QuestionGrap
     return QuestionGraph(ax, line)
 
 
+def _shape(graph: Graph) -> str:
+    """The drawn line in words, with no number on it: which way each straight piece goes and
+    where it meets or crosses the time axis (the turns' times and values are what a part reads)."""
+    values = [v for _, v in graph.points]
+    if graph.curve:
+        slopes = [b - a for a, b in itertools.pairwise(values)]
+        start = " from zero" if values[0] == 0 else ""
+        if all(s >= 0 for s in slopes) and all(b <= a + 1e-12 for a, b in itertools.pairwise(slopes)):
+            return (f"A smooth curve rises{start}, steeply at first, then less and less steeply, and "
+                    "levels off.")
+        return f"A smooth curve {'rises' if values[-1] > values[0] else 'falls'}{start}."
+    flat = 1e-9 * (graph.value_max - graph.value_min)
+    pieces: list[list] = []  # [way, first value, last value] of each run of pieces going one way
+    for a, b in itertools.pairwise(values):
+        way = "level" if abs(b - a) <= flat else ("rises" if b > a else "falls")
+        if pieces and pieces[-1][0] == way:
+            pieces[-1][2] = b
+        else:
+            pieces.append([way, a, b])
+    words = []
+    for way, first, last in pieces:
+        if way == "level":
+            side = "on" if first == 0 else ("above" if first > 0 else "below")
+            words.append(f"is level {side} the time axis")
+            continue
+        phrase = f"{way} steadily"
+        if first == 0:
+            phrase += " from zero"
+        if first * last < 0:
+            phrase += " through the time axis"
+        if last == 0:
+            phrase += " to zero"
+        words.append(phrase)
+    return "The line " + ", then ".join(words) + "."
+
+
 def question_graph_alt(graph: Graph) -> str:
-    """The graph in words, for a reader who cannot see it: its axes and every corner, each
-    number to the places of the grid's small squares."""
+    """The graph in words, for a reader who cannot see it: its axes, their scales and the
+    shape of the line. It gives no value a part asks to be read off it (issue 25: the alt text
+    gave the readings away), so no point of the line is written."""
     t_places, v_places = _decimals(graph.time_division), _decimals(graph.value_division)
 
     def time(value: float) -> str:
@@ -97,19 +139,29 @@ def question_graph_alt(graph: Graph) -> str:
     def amount(value: float) -> str:
         return format_number(value, decimals=v_places)
 
-    # a curve is read out where it crosses the labelled times (0, 5, 10 s ...), as one reads it
-    points = graph.points
-    if graph.curve:
-        step = _label_step(graph.time_max, graph.time_division)
-        points = tuple(p for p in points if math.isclose(p[0] / step, round(p[0] / step), abs_tol=1e-9))
-    corners = ", then ".join(f"({time(t)} s, {amount(v)} {graph.unit})" for t, v in points)
-    lines = "A smooth curve passes through" if graph.curve else "Straight lines join"
     return plain(
         f"A {graph.name} graph: {graph.quantity} in {graph.unit} from {amount(graph.value_min)} to "
         f"{amount(graph.value_max)} against time in s from 0 to {time(graph.time_max)}, on small "
         f"squares of {time(graph.time_division)} s by {amount(graph.value_division)} {graph.unit}. "
-        f"{lines} {corners}." + (" The area under the line is shaded." if graph.shaded else "")
+        f"{_shape(graph)}" + (" The area under the line is shaded." if graph.shaded else "")
     )
+
+
+def small_square(svg: str, graph: Graph) -> tuple[float, float]:
+    """A small square's width and height as fractions of the drawn image's width, measured in
+    its SVG (the plot area's frame over the viewBox): the enlarged view zooms until half a
+    square is big enough to read from (book/_ext/questions/static/graph-view.js)."""
+    view = re.search(r'viewBox="([\d.\s-]+)"', svg)
+    area = re.search(rf'<g id="{PLOT_AREA_ID}">\s*<path d="([^"]+)"', svg)
+    if view is None or area is None:
+        raise ValueError(f"svg must hold a viewBox and the plot area <g id={PLOT_AREA_ID!r}> "
+                         "(plot_question_graph draws it)")
+    width = float(view[1].split()[2])
+    numbers = [float(x) for x in re.findall(r"-?\d+(?:\.\d+)?", area[1])]
+    xs, ys = numbers[0::2], numbers[1::2]
+    across = round(graph.time_max / graph.time_division)
+    up = round((graph.value_max - graph.value_min) / graph.value_division)
+    return ((max(xs) - min(xs)) / across / width, (max(ys) - min(ys)) / up / width)
 
 
 # --- The book's figures from this module (see book_figure.py); a page calls one of these. ---

@@ -108,6 +108,23 @@ class Step:
 
 
 @dataclass(frozen=True)
+class Reading:
+    """A value the student reads off the question's graph on the way to a part's answer (a
+    time where the line turns, say), unasked by any part of its own: ``value`` is where the
+    drawn line is (SI), ``tolerance`` half a small square of the axis it is read on."""
+
+    name: str
+    value: float
+    tolerance: float
+
+    def __post_init__(self):
+        object.__setattr__(self, "value", float(self.value))
+        _require(math.isfinite(self.value), "value", self.value, "must be a finite number")
+        _require(self.tolerance > 0, "tolerance", self.tolerance,
+                 "must be positive: half the smallest grid division of the axis read")
+
+
+@dataclass(frozen=True)
 class Ecf:
     """How a later part follows from earlier ones, for error carried forward.
 
@@ -203,6 +220,11 @@ class Part:
     ecf_also: tuple[Ecf, ...] = ()
     #: Values the scheme also accepts (another route, a range's ends are not needed: see GraphPart).
     alternatives: tuple[Alternative, ...] = ()
+    #: The values read off the question's graph that the answer is worked from, and the answer as
+    #: a function of them (in order; the model's own function): every answer that readings
+    #: within half a small square give is right (``band``).
+    readings: tuple[Reading, ...] = ()
+    answer_from_readings: Callable[..., float] | None = field(default=None, compare=False, repr=False)
     kind: ClassVar[str] = "numeric"
 
     def __post_init__(self):
@@ -232,6 +254,13 @@ class Part:
             worked = self.answer_from(*(step.value for step in self.working))
             _require(math.isclose(worked, self.value, rel_tol=1e-9, abs_tol=1e-12), "answer_from",
                      worked, f"must give the part's value {self.value!r} from the working")
+        _require((self.answer_from_readings is None) == (not self.readings), "readings", self.readings,
+                 "and answer_from_readings go together")
+        if self.readings:
+            # one source: the readings, exact, give the key
+            read = self._size(self.answer_from_readings(*(r.value for r in self.readings)))
+            _require(math.isclose(read, self.value, rel_tol=1e-9, abs_tol=1e-12), "answer_from_readings",
+                     read, f"must give the part's value {self.value!r} from the readings as drawn")
         if self.answer_for_g is not None:
             at_981 = self.answer_for_g(G_EARTH)
             _require(math.isclose(at_981, self.value, rel_tol=1e-9), "answer_for_g", at_981,
@@ -274,6 +303,32 @@ class Part:
         return any(m.unit is None and m.direction is None
                    and number(m.value, self.check_sig_figs) == number(value, self.check_sig_figs)
                    for m in self.mistakes)
+
+    @cached_property
+    def band(self) -> tuple[float, float] | None:
+        """The answers that readings within half a small square give, lowest and highest (SI;
+        None for a part worked from no reading). A reading carried into a later part keeps its
+        tolerance there: the 9702 Paper 3 specimen scheme (for examination from 2016), Q1's
+        y-intercept, takes a "read-off ... substituted into y = mx + c" that is "accurate to half
+        a small square in both x and y directions", and 9702/23/M/J/16 Q3(b)(ii) marks a worked
+        answer "(allow ± ½ small square in readings) A1". The extremes are sought at the corners
+        and the middles of the readings' box (the bank's formulas are monotonic in each reading
+        there, so its ends are at corners)."""
+        if not self.readings:
+            return None
+        steps = [(r.value - r.tolerance, r.value, r.value + r.tolerance) for r in self.readings]
+        answers = [self._size(self.answer_from_readings(*box)) for box in itertools.product(*steps)]
+        return (min(answers), max(answers))
+
+    def band_takes(self, typed: float, sig_figs: int) -> bool:
+        """Whether a value written to sig_figs s.f. could be an answer from readings within the
+        band, rounded (the browser's twin: question-kinds/numeric.js, withinBand)."""
+        if self.band is None or typed == 0:
+            return False
+        low, high = self.band
+        half = 5 * 10.0 ** (math.floor(math.log10(abs(typed))) - sig_figs)
+        slack = 1e-9 * max(abs(low), abs(high))
+        return typed - half <= high + slack and typed + half >= low - slack
 
     @property
     def ecf_methods(self) -> tuple[Ecf, ...]:
@@ -342,6 +397,8 @@ class Part:
                 for m in self.mistakes
             ],
             "alternatives": [{"value": a.value, "why": a.why} for a in self.alternatives],
+            # the answers that readings within half a small square give (only where read)
+            **({"band": list(self.band)} if self.readings else {}),
             "gNineEight": self.g_nine_eight,
             "roundedPartWay": [{"value": value, "rounded": what} for value, what in self.rounded_part_way],
             "ecf": [method.browser_data() for method in self.ecf_methods], "kind": self.kind,

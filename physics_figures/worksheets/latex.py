@@ -307,6 +307,10 @@ def _key_part(question: Question, index: int, marks: int) -> list[str]:
                   f"{format_number(high, decimals=_places(part))})")
     else:
         accept = f" (accept {part.min_sig_figs} or more significant figures)"
+        if part.readings:  # worked from readings: what readings within half a small square give
+            low, high = part.band
+            accept = (f" (accept {part.min_sig_figs} or more significant figures; from readings of the "
+                      f"graph to half a small square, {format_number(low, 3)} to {format_number(high, 3)})")
     out.append(f"\\textbf{{{tex(label)}{tex(part.prompt)} = {answer}}}{tex(accept)} \\hfill [{marks}]")
     if part.working:
         steps = "; ".join(f"{step.name} = {_value_with_unit(step.value, step.sig_figs, step.unit)}"

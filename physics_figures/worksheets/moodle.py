@@ -105,7 +105,8 @@ def _exact(value: float) -> tuple[float, float]:
 def right_forms(question: Question, index: int) -> list[tuple[float, float]]:
     """(value, width) of each 100 % answer of a numeric part, the key as it prints first: the key
     at 2 s.f. (that value only) and at 3 s.f. (half a unit in its 3rd figure), then each value
-    the scheme also accepts at 3 s.f.; a reading from a graph within its tolerance."""
+    the scheme also accepts at 3 s.f., and what readings within half a small square give; a reading
+    from a graph within its tolerance."""
     part = question.parts[index]
     if part.kind == "graph":
         return [(part.value, part.tolerance)]
@@ -131,6 +132,9 @@ def right_forms(question: Question, index: int) -> list[tuple[float, float]]:
             unique = [form for i, form in enumerate(unique) if i not in holds[1:]]
         else:
             unique.append((value, width))
+    if part.readings:  # worked from readings of the graph: what readings within half a small square
+        low, high = part.band  # give, after the key (whose value Moodle shows); not widened by the
+        unique.append(((low + high) / 2, (high - low) / 2))  # student's rounding: strict
     return unique
 
 

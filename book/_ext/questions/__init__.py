@@ -71,6 +71,7 @@ def setup(app):
     app.add_node(directive.question, html=(form.visit_question, form.depart_question))
     app.add_node(directive.question_form, html=(form.visit_question_form, None))
     app.add_node(directive.worked_answer, html=(form.visit_worked_answer, form.depart_worked_answer))
+    app.add_node(directive.graph_view, html=(form.visit_graph_view, form.depart_graph_view))
     app.add_directive("question", directive.QuestionDirective)
     for job in (answer_key, progress, try_similar, book_map, self_test, rules_table):
         job.setup(app)

@@ -40,6 +40,12 @@ class worked_answer(nodes.General, nodes.Element):
     """The worked answer and mark scheme, shown after an attempt (HTML only)."""
 
 
+class graph_view(nodes.General, nodes.Element):
+    """The question's graph as a button that opens it enlarged (static/graph-view.js): ``square``
+    is a small square's width and height as fractions of the image's width. In HTML only; print
+    shows the image alone (print_form.py)."""
+
+
 class QuestionDirective(SphinxDirective):
     """A template of the bank, named by its key; its text comes with its numbers."""
 
@@ -92,14 +98,16 @@ class QuestionDirective(SphinxDirective):
         except ValueError as error:
             raise self.error(f"question: {error}") from error
 
-    def _graph(self, key: str, graph) -> nodes.image:
+    def _graph(self, key: str, graph) -> graph_view:
         """The printed variant's graph, drawn now as SVG (the site) and PDF (the book): an
-        image Sphinx copies like any other, so every builder picks its own format."""
+        image Sphinx copies like any other, so every builder picks its own format; on the site,
+        inside the button that enlarges it."""
         folder = Path(self.env.doctreedir).parent / GRAPHS_DIR
         drawn = write_graph(folder, f"{key}-0", graph, formats=("svg", "pdf"))
         here = Path(self.env.srcdir) / Path(self.env.docname).parent
         uri = Path(os.path.relpath(folder / f"{key}-0", here)).as_posix() + ".*"
-        return nodes.image(uri=uri, alt=drawn.alt, classes=["q-graph"])
+        return graph_view("", nodes.image(uri=uri, alt=drawn.alt, classes=["q-graph"]),
+                          square=square_text(folder / f"{key}-0.svg", graph))
 
     def _record(self, node: question, data, title: str, worked: worked_answer) -> None:
         for docname, asked in store.questions(self.env).items():
@@ -108,6 +116,7 @@ class QuestionDirective(SphinxDirective):
                                location=self.get_location())
         store.questions(self.env).setdefault(self.env.docname, []).append({
             "key": data.key, "title": title, "marks": data.marks, "try_first": node["template"]["tryFirst"],
+            "graph": data.graph is not None,  # the page loads the enlarged graph view
             "answers": [data.label(i) + f"{p.prompt}: {p.answer_text}" for i, p in enumerate(data.parts)],
             "scheme": [child.deepcopy() for child in worked.children],
         })
@@ -186,6 +195,14 @@ def mark_scheme_nodes(data) -> list[nodes.Node]:
 
 
 GRAPHS_DIR = "question-graphs"  # beside the doctrees: the printed variants' graphs, as sources
+
+
+def square_text(svg: Path, graph) -> str:
+    """A small square's size in the drawn SVG as the enlarged view reads it (data-square):
+    width and height as fractions of the image's width, "0.01535 0.01784"."""
+    from physics_figures.figures.question_graph import small_square
+
+    return " ".join(f"{fraction:.5g}" for fraction in small_square(svg.read_text(encoding="utf-8"), graph))
 
 
 def write_graph(folder: Path, name: str, graph, *, formats: tuple[str, ...]):

@@ -184,6 +184,23 @@ def visit_question_form(self, node):
     raise nodes.SkipNode
 
 
+#: Under the graph, what its button does (with the image's alt text, the button's name).
+ENLARGE = "Enlarge the graph to read it"
+
+
+def visit_graph_view(self, node):
+    """The graph's image inside a button that opens the enlarged view (static/graph-view.js,
+    loaded with the questions' scripts). The interface outside tests use: button.q-graph-open
+    with data-square (a small square's width and height over the image's width) around
+    img.q-graph; the view is dialog.q-graph-view."""
+    self.body.append(f'<button type="button" class="q-graph-open" aria-haspopup="dialog" '
+                     f'data-square="{escape(node["square"])}">')
+
+
+def depart_graph_view(self, node):
+    self.body.append(f'<span class="q-graph-hint">{ENLARGE}</span></button>\n')
+
+
 def visit_worked_answer(self, node):
     self.body.append('<details class="q-worked" hidden><summary>Worked answer and mark scheme</summary>\n')
 
@@ -202,3 +219,6 @@ def add_assets(app, pagename, templatename, context, doctree):
             app.add_js_file(f"question-kinds/{kind}.js", loading_method="defer", priority=450)
         app.add_js_file("marking.js", loading_method="defer", priority=460)
         app.add_js_file("questions.js", loading_method="defer")
+        # the enlarged graph view, on the pages that print a question's graph
+        if any(item.get("graph") for item in store.questions(app.env).get(pagename, ())):
+            app.add_js_file("graph-view.js", loading_method="defer")

@@ -7,14 +7,19 @@ from __future__ import annotations
 
 from docutils import nodes
 
-from .directive import question, question_form, worked_answer
+from .directive import graph_view, question, question_form, worked_answer
 
 
 def printed(asked: question) -> nodes.container:
-    """A question as print shows it: title, text, graph and answer lines."""
+    """A question as print shows it: title, text, graph (the image, not the button that
+    enlarges it) and answer lines."""
     container = nodes.container(ids=asked["ids"], classes=["q"], question=asked["template"]["key"],
                                 try_first=asked["template"]["tryFirst"])
-    container.extend(child for child in asked.children if not isinstance(child, (question_form, worked_answer)))
+    for child in asked.children:
+        if isinstance(child, graph_view):
+            container.extend(child.children)
+        elif not isinstance(child, (question_form, worked_answer)):
+            container.append(child)
     return container
 
 

@@ -21,7 +21,7 @@ from pathlib import Path
 from fresh_figures import modules_digest  # book/_ext: the files a module runs, by content
 
 from . import store
-from .directive import write_graph
+from .directive import square_text, write_graph
 
 VARIANTS_DIR = "questions"  # under the site's _static/: one file of variants per template
 
@@ -93,7 +93,8 @@ def write_variants(app, exception):
             data = variant.variant_data()
             if variant.graph is not None:  # its own graph, beside the variants' script
                 name = f"{key}-{index}.svg"
-                data["graph"] = {"src": name, "alt": _graph(folder, name, variant.graph, graphs, drawn_graphs)}
+                drawn = _graph(folder, name, variant.graph, graphs, drawn_graphs)
+                data["graph"] = {"src": name, "alt": drawn["alt"], "square": drawn["square"]}
                 files[name] = drawn_graphs[name]["svg"]
             variants.append(data)
         payload = json.dumps(variants, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
@@ -105,14 +106,17 @@ def write_variants(app, exception):
                                        "graphs": drawn_graphs}, indent=1, sort_keys=True))
 
 
-def _graph(folder: Path, name: str, graph, last: dict, drawn: dict) -> str:
-    """Draw one variant's graph unless the same numbers drew the file that is there; its alt text."""
+def _graph(folder: Path, name: str, graph, last: dict, drawn: dict) -> dict:
+    """Draw one variant's graph unless the same numbers drew the file that is there; its alt text
+    and its small square's size (for the enlarged view), with the file's digest."""
     numbers = _sha256(repr(graph).encode())
     before = last.get(name, {})
     path = folder / name
-    if before.get("numbers") == numbers and path.is_file() and _sha256(path.read_bytes()) == before["svg"]:
+    if (before.get("numbers") == numbers and "square" in before and path.is_file()
+            and _sha256(path.read_bytes()) == before["svg"]):
         drawn[name] = before
     else:
         figure = write_graph(folder, name.removesuffix(".svg"), graph, formats=("svg",))
-        drawn[name] = {"numbers": numbers, "alt": figure.alt, "svg": _sha256(path.read_bytes())}
-    return drawn[name]["alt"]
+        drawn[name] = {"numbers": numbers, "alt": figure.alt, "svg": _sha256(path.read_bytes()),
+                       "square": square_text(path, graph)}
+    return drawn[name]

@@ -194,6 +194,7 @@
     own.gNineEight = null;
     own.roundedPartWay = [];
     own.alternatives = [];
+    own.band = null; // marked against the student's own earlier answers, not the graph's
     var result = mark(own, answer);
     if (result.code === "correct" && allRight) {
       return outcome("correct", "Correct: it follows from your readings of the graph.", {

@@ -337,6 +337,9 @@
         // its own graph, drawn from its numbers
         graph.src = contentRoot() + "_static/questions/" + variant.graph.src;
         graph.alt = variant.graph.alt;
+        // its grid, for the enlarged view (static/graph-view.js)
+        var opener = graph.closest(".q-graph-open");
+        if (opener && variant.graph.square) opener.setAttribute("data-square", variant.graph.square);
       }
       var scheme = worked && worked.querySelector(".q-scheme");
       if (scheme) scheme.outerHTML = variant.scheme.replace("<ul>", '<ul class="' + scheme.className + '">');

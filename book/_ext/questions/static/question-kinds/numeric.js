@@ -157,9 +157,28 @@
       var n = { value: size, sfMin: number.sfMin, sfMax: number.sfMax, lead: number.lead };
       return compare(n, value / scale, minSf, checkSf);
     }
+    /* Worked from readings of the graph: right where some answer that readings within half a
+     * small square give (part.band, SI) rounds to what was typed, at each reading of its
+     * significant figures (Part.band_takes in physics_figures/parts/numeric.py). */
+    function withinBand(scale) {
+      var found = { match: false, matchFewSf: false };
+      if (!part.band || typed === 0) return found;
+      var low = part.band[0] / scale,
+        high = part.band[1] / scale,
+        slack = 1e-9 * Math.max(Math.abs(low), Math.abs(high));
+      for (var sf = number.sfMax; sf >= number.sfMin; sf--) {
+        var half = 5 * Math.pow(10, Math.floor(Math.log10(Math.abs(size)) + 1e-12) - sf);
+        if (size - half <= high + slack && size + half >= low - slack) {
+          if (sf >= minSf) found.match = true;
+          else found.matchFewSf = true;
+        }
+      }
+      if (found.match) found.matchFewSf = false;
+      return found;
+    }
     var reading =
       fitting.filter(function (r) {
-        return against(target, r.scale).match;
+        return against(target, r.scale).match || withinBand(r.scale).match;
       })[0] ||
       fitting[0] ||
       readings[0];
@@ -168,7 +187,8 @@
     function out(code, message, extra) {
       var result = outcome(code, message, extra);
       result.si = si;
-      result.valueRight = !!alternative || against(target, reading.scale).match || against(target, 1).match;
+      result.valueRight =
+        !!alternative || !!fromReadings || against(target, reading.scale).match || against(target, 1).match;
       return result;
     }
 
@@ -224,12 +244,20 @@
         return byAlt.match;
       });
     }
+    // An answer worked from readings of the graph, each within half a small square.
+    var fromReadings = false;
+    if (!result.match) {
+      var byBand = withinBand(reading.scale);
+      fromReadings = byBand.match;
+      if (byBand.match || byBand.matchFewSf) result = byBand;
+    }
     var directionRight = mode !== "choice" || direction === part.answerDirection;
 
     if (result.match && !sign && directionRight) {
       if (unit.empty && !dimensionless)
         return out("missing-unit", "The number is right. Now give the unit: " + units + ".");
       if (alternative) return out("alternative", "Accepted: " + alternative.why + ".");
+      if (fromReadings) return out("correct", "Correct: readings of the graph within half a small square give this.");
       if (signIgnored)
         return out("ignore-sign", "Correct: the minus sign is ignored, as the direction is given separately.");
       return out("correct", signed ? "Correct: the minus sign says " + part.signMeans + "." : "Correct.");

@@ -216,6 +216,8 @@ def test_a_definitions_worksheet_prints_the_question_and_its_key_the_marking_poi
     key_tex = answer_key(sheet, version)
     for mark in question.mark_scheme:
         assert f"\\item {rich(mark.text)} \\textbf{{B1}}" in key_tex
+    assert f"\\textbf{{Model answer}} \\hfill [2]\\par {rich(question.parts[0].model_answer)}" in key_tex
+    assert "Answer }Model answer" not in key_tex  # a part alone is not labelled "Answer Model answer"
 
 
 def test_a_situated_statement_prints_a_different_situation_in_each_version():

@@ -318,8 +318,8 @@ _TERMINAL_SITUATIONS = (
 
 
 def _terminal_points(body: str, balance: str) -> tuple[str, str]:
-    return ((f"Terminal velocity is the constant velocity {body} reaches when the resultant force on it "
-            "is zero, so its acceleration is zero"),
+    return ((f"Terminal velocity is the constant velocity {body} reaches when the resultant force is "
+            "zero, so the acceleration is zero"),
             f"The condition: {balance}")
 
 
@@ -335,9 +335,9 @@ def state_terminal_velocity(situation: float = 0) -> Question:
         "state-terminal-velocity", what,
         f"State what is meant by terminal velocity, and state the condition for {body} to reach it.",
         _terminal_points(body, balance),
-        f"Terminal velocity is the constant velocity {body} reaches when the resultant force on it is "
-        f"zero, so its acceleration is zero. That happens when {balance}: the drag grows with speed "
-        "until it does.")
+        f"Terminal velocity is the constant velocity {body} reaches when the resultant force is zero, "
+        f"so the acceleration is zero. That happens when {balance}: the drag grows with speed until it "
+        "does.")
 
 
 def _situations(situations: tuple) -> dict[str, Draw]:

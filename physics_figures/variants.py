@@ -95,7 +95,8 @@ class Template:
     key: the stable id (data-question); type: one of its topic's question types (the
     topic checks it: physics_figures.topics); kinds: from KINDS.
     draws: the givens that vary; variant_count: how many variants to make. A try-first
-    part of a worked example has no draws (one variant, the printed numbers).
+    part of a worked example has no draws (one variant, the printed numbers), and neither
+    has a one-wording statement (``one_wording``).
     """
 
     key: str
@@ -111,6 +112,11 @@ class Template:
     #: definition asked in several wordings); else each variant's answer follows its situation
     #: (issue 25: tests/test_findings.py).
     same_answer_because: str = ""
+    #: A define/state template whose wording cannot change without changing the physics (a
+    #: definition has one right wording): why, in a sentence. It has no draws and one variant,
+    #: and the variant rules skip it (CLARIFICATIONS, Papers: it counts as a template but not
+    #: toward the variant rules; the sentence is the "says why it cannot" an explanation owes).
+    one_wording: str = ""
 
     def __post_init__(self):
         _require(bool(self.type), "type", self.type, "must name one of its topic's question types")
@@ -123,12 +129,33 @@ class Template:
                      f"is only for an explain or multiple-choice template, not a {'/'.join(self.kinds)} one")
         _require(not (self.try_first and self.draws), "draws", dict(self.draws),
                  "must be empty for a worked example's try-first part (it keeps the printed numbers)")
-        if not self.try_first:
+        if self.one_wording:
+            self._check_one_wording()
+        elif not self.try_first:
             _require(bool(self.draws), "draws", dict(self.draws),
-                     f"must say how {self.key}'s givens vary (only a try-first part has none)")
-            least = MIN_VARIANTS if "numeric" in self.kinds or "graph" in self.kinds else MIN_SITUATIONS
-            _require(self.variant_count >= least, "variant_count", self.variant_count,
-                     f"must be at least {least} for a {'/'.join(self.kinds)} template")
+                     f"must say how {self.key}'s givens vary (only a try-first part or a one-wording "
+                     "statement has none)")
+            _require(self.variant_count >= self.least_variants, "variant_count", self.variant_count,
+                     f"must be at least {self.least_variants} for a {'/'.join(self.kinds)} template")
+
+    def _check_one_wording(self) -> None:
+        _require(self.kinds == ("explain",), "one_wording", self.one_wording,
+                 f"is for a define/state template, whose kinds are ('explain',) (got kinds={self.kinds!r})")
+        _require(not self.draws, "one_wording", self.one_wording,
+                 f"means one variant, so {self.key} must have no draws (got draws={dict(self.draws)!r})")
+        _require(not self.try_first, "one_wording", self.one_wording,
+                 "is for the bank's statements, not a worked example's try-first part")
+        _require(len(self.one_wording.split()) >= 5, "one_wording", self.one_wording,
+                 "must say in a sentence why the wording cannot change without changing the physics")
+
+    @property
+    def least_variants(self) -> int:
+        """The fewest variants the rules allow: MIN_VARIANTS for fresh numbers, MIN_SITUATIONS for
+        a template that varies its situation, and 1 for a try-first part or a one-wording statement
+        (neither counts toward the variant rules)."""
+        if self.try_first or self.one_wording:
+            return 1
+        return MIN_VARIANTS if "numeric" in self.kinds or "graph" in self.kinds else MIN_SITUATIONS
 
     @cached_property
     def values(self) -> tuple[dict[str, float], ...]:

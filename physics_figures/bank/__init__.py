@@ -1,9 +1,10 @@
 """The Dynamics question bank, and the topic it belongs to (``TOPIC``): one module per
-question type of the notes, each a list of templates.
+question type of the notes, each a list of templates, and ``statements``, the define and state
+questions of the papers (each of the type whose practice page teaches it).
 
 Adding a question touches one file: write its ``build`` function and its ``Template`` in
-the module of its type, and add it to that module's ``TEMPLATES``. Pages place a template
-with the ``question`` directive by its key::
+the module of its type (a definition or a stated law: in ``statements``), and add it to that
+module's ``TEMPLATES``. Pages place a template with the ``question`` directive by its key::
 
     ```{question} quick-check-1
     ```
@@ -21,6 +22,7 @@ from . import (
     force_momentum,
     momentum_line,
     newton,
+    statements,
     two_d,
     worked_examples,
 )
@@ -28,7 +30,7 @@ from .sections import SECTIONS
 
 #: Every template of the book, by key, in the order of the notes' types.
 TEMPLATES: dict[str, Template] = {}
-for _module in (newton, drag, force_momentum, definitions, momentum_line, elastic, two_d,
+for _module in (newton, drag, force_momentum, definitions, momentum_line, elastic, two_d, statements,
                 worked_examples):
     for _template in _module.TEMPLATES:
         if _template.key in TEMPLATES:
@@ -80,5 +82,6 @@ def all_questions() -> tuple[Question, ...]:
     """Every question of the quick check and the practice pages, with the printed numbers
     (variant 0), in book order: the quick check's five, then the practice pages, one a type
     in the notes' order (tests/test_questions.py checks the pages place them so)."""
-    practice = [t for t in TEMPLATES.values() if not t.try_first and t.key not in QUICK_CHECK]
+    # type by type: a statement (bank.statements) is asked on its type's page, after the others
+    practice = [t for t in TOPIC.practice_templates() if t.key not in QUICK_CHECK]
     return tuple(t.variant(0) for t in [TEMPLATES[key] for key in QUICK_CHECK] + practice)

@@ -192,7 +192,10 @@ def select(*, types: Sequence[str] = (), templates: Sequence[str] = (), topic: T
 
 def _variants_for(template: Template, count: int, seed: int) -> list[int]:
     """``count`` different variants of a template, drawn by the seed; the printed variant
-    (0, in the book and its key) only when the others run out."""
+    (0, in the book and its key) only when the others run out. A one-wording statement (a
+    definition) has one variant, the same in every version: its answer is the same anyway."""
+    if template.one_wording:
+        return [0] * count
     rng = random.Random(f"worksheet-variants:{seed}:{template.key}")
     others = list(range(1, len(template.values)))
     rng.shuffle(others)
@@ -207,7 +210,7 @@ def plan(name: str, title: str, templates: Sequence[Template], *, versions: int,
              f"must be a whole number from 1 to {MAX_VERSIONS} (A to Z)")
     _require(isinstance(seed, int) and seed >= 0, "seed", seed, "must be a whole number, 0 or more")
     _require(bool(templates), "templates", list(templates), "must hold at least one template")
-    short = [t for t in templates if len(t.values) < versions]
+    short = [t for t in templates if len(t.values) < versions and not t.one_wording]
     _require(not short, "versions", versions,
              "needs that many different variants of every template, but "
              + ", ".join(f"{t.key} has {len(t.values)}" for t in short)
@@ -226,13 +229,17 @@ def site_sheets(*, seed: int = SITE_SEED, versions: int = SITE_VERSIONS, topic: 
     """The site's sheets: a worksheet of every template of each type, and the mixed 40-mark
     end-of-topic test weighted like the exam."""
     topic = topic_of(topic)
+
+    def enough(template: Template) -> bool:
+        return len(template.values) >= versions or bool(template.one_wording)
+
     sheets = []
     for question_type in topic.types:
-        usable = [t for t in topic.by_type(question_type.key) if len(t.values) >= versions]
+        usable = [t for t in topic.by_type(question_type.key) if enough(t)]
         if usable:
             sheets.append(plan(f"worksheet-{question_type.key}", f"Worksheet: {question_type.title}",
                                usable, versions=versions, seed=seed, topic=topic))
-    usable = [t for t in bank_templates(topic) if len(t.values) >= versions]
+    usable = [t for t in bank_templates(topic) if enough(t)]
     marks = min(END_OF_TOPIC_MARKS, sum(template_marks(t) for t in usable))  # a small topic: all it has
     sheets.append(plan("end-of-topic-test", f"{topic.name}: end-of-topic test", usable, versions=versions,
                        seed=seed, marks=marks, topic=topic))

@@ -297,8 +297,9 @@ def _key_part(question: Question, index: int, marks: int) -> list[str]:
             f"\\item {letter} ({rich(option.text)}): \\emph{{{tex(option.mistake)}}}. {tex(option.feedback)}"
             for letter, option in wrong) + "\n\\end{itemize}")
         return out
-    if part.kind == "explain":
-        out.append(f"\\textbf{{{tex(label)}}}Model answer \\hfill [{marks}]\\par {rich(part.model_answer)}")
+    if part.kind == "explain":  # "Model answer", not "Answer Model answer", for a part alone
+        out.append(f"\\textbf{{{tex(question.label(index))}Model answer}} \\hfill [{marks}]\\par "
+                   f"{rich(part.model_answer)}")
         return out
     answer = tex(part.answer_text)
     if part.kind == "graph":

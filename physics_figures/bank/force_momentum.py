@@ -599,7 +599,7 @@ _MOMENTUM_STORIES = (
     ("a ball", "as it hits a wall at right angles and bounces straight back", "towards the wall",
      ((0.0, 2.4), (0.02, 2.4), (0.05, -1.6), (0.1, -1.6)), 0.002),
     ("a lorry", "as it brakes to rest on a straight road", "its direction of motion",
-     ((0.0, 60000.0), (5.0, 60000.0), (15.0, 0.0), (20.0, 0.0)), 0.5),
+     ((0.0, 60000.0), (10.0, 0.0), (20.0, 0.0)), 0.5),
     ("a cyclist", "as she speeds up along a straight, level road", "her direction of motion",
      ((0.0, 240.0), (4.0, 240.0), (12.0, 640.0), (20.0, 640.0)), 0.5),
 )
@@ -717,6 +717,8 @@ def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 
                       revisit="Read the flat part of the line at the end against the momentum axis."),
             Part(f"speed of the lorry after {t_end} s", speed, "m s^-1", "speed", units=_M_S,
                  shown_sig_figs=2, ecf=Ecf(b_answer / mass_given, {"mass_given": mass}),
+                 readings=(Reading("momentum after", after, tolerance),),
+                 answer_from_readings=lambda read_after: velocity_from_momentum(read_after, mass),
                  revisit="Momentum = mass × velocity, so the speed is v = p / m.",
                  mistakes=(
                      Mistake("the momentum at the start", velocity_from_momentum(before, mass),
@@ -730,6 +732,9 @@ def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 
                  ), see="momentum"),
             Part("increase in the speed of the lorry", gain, "m s^-1", "speed", units=_M_S, shown_sig_figs=2,
                  ecf=Ecf((b_answer - a_answer) / mass_given, {"mass_given": mass}),
+                 readings=(Reading("momentum before", before, tolerance), Reading("momentum after", after, tolerance)),
+                 answer_from_readings=lambda read_before, read_after: velocity_from_momentum(read_after - read_before,
+                                                                                             mass),
                  revisit="The change in speed is the change in momentum ÷ the mass: Δv = Δp / m.",
                  mistakes=(
                      Mistake("the final speed, not the change", speed,

@@ -16,7 +16,7 @@ from matplotlib.axes import Axes
 from matplotlib.lines import Line2D
 from matplotlib.ticker import FixedLocator, FuncFormatter, MultipleLocator
 
-from ..notation import format_number
+from ..notation import LARGEST_PLAIN, format_number
 from ..questions import Graph
 from ..style import colour
 from ._text import plain
@@ -137,6 +137,9 @@ def question_graph_alt(graph: Graph) -> str:
         return format_number(value, decimals=t_places)
 
     def amount(value: float) -> str:
+        if abs(value) >= LARGEST_PLAIN:  # in powers of ten, with only the figures it has: "1.5 x 10^5"
+            figures = len(str(round(abs(value))).rstrip("0"))
+            return format_number(value, max(figures, 2))
         return format_number(value, decimals=v_places)
 
     return plain(

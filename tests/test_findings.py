@@ -153,3 +153,20 @@ def test_the_real_mistakes_are_named_with_their_variant_0_values(key, part, name
 def test_no_strawman_mistake_remains(key):
     named = set().union(*(_named(q) for q in TEMPLATES[key].variants))
     assert not named & set(STRAWMEN)
+
+
+# ---- a scheme's working gives its own answer -------------------------------------------------
+
+
+def test_block_and_hanging_mass_tension_line_gives_the_printed_tension_in_every_variant():
+    # Issue 25: "block-and-hanging-mass variant 9, whose own 3 s.f. working gives 6.6 N" (its
+    # line "T − 1.7 = 2.3 × 2.11" for a key printed as 6.5 N). The reader of working lines
+    # (tests/working_lines.py) reads "= result" lines, not this equation: read it here.
+    for index, question in enumerate(TEMPLATES["block-and-hanging-mass"].variants):
+        lines = [textformat.to_plain(mark.text) for mark in question.mark_scheme if mark.part == "b"]
+        found = re.search(r"T − ([\d.]+) = ([\d.]+) × ([\d.]+)", lines[0])
+        printed = re.search(r"T = ([\d.]+) N", lines[1])
+        assert found and printed, lines
+        friction, mass, acceleration = (float(x) for x in found.groups())
+        place = 10 ** -len(printed.group(1).partition(".")[2])
+        assert abs(friction + mass * acceleration - float(printed.group(1))) <= place / 2, (index, lines)

@@ -261,10 +261,12 @@ def test_question_sheet_asks_each_question_with_space_to_answer(question):
 @pytest.mark.parametrize("question", [q for q in all_questions() if q.graph], ids=lambda q: q.key)
 def test_question_sheet_draws_the_graph_a_question_reads_from(question):
     """The graph is in the sheet as a drawing (its axis labels are text in the vector PDF),
-    right after the question's words, before its answer lines."""
+    right after the question's words, before its answer lines (a "which graph?" item: before
+    its question and options)."""
     sheet = squashed(SHEET)
     start = sheet.index(squash(textformat.to_plain(question.text))[:60])
-    first_line = sheet.index(squash(question.parts[0].prompt) + "=", start)
+    chooses = question.parts[0].kind == "mcq"
+    first_line = sheet.index(squash(question.parts[0].prompt) + ("" if chooses else "="), start)
     drawn = sheet[start:first_line]
     assert squash(f"{question.graph.quantity} / {question.graph.unit}") in drawn, question.key
     assert squash("time / s") in drawn, question.key
@@ -279,8 +281,10 @@ def test_question_sheet_gives_no_answer_or_mark_scheme():
     for question in all_questions():
         for part in question.parts:
             answer = squash(part.answer_text.split(" (positive")[0])
-            # A whole number, not the end of another ("800N" is not in "11800N", 11 800 N).
-            shown = re.search(r"(?<![\d.,])" + re.escape(answer), sheet)
+            # A whole number, not the end of another ("800N" is not in "11800N", 11 800 N); a
+            # ratio, with no unit, is not the start of a quantity either ("0.25" in "k = 0.25 kg m^-1").
+            after = r"(?![\w.])" if getattr(part, "unit", None) == "" else ""
+            shown = re.search(r"(?<![\d.,])" + re.escape(answer) + after, sheet)
             assert answer in stated or not shown, (
                 f"{question.key}: the sheet gives the answer {part.answer_text}")
 

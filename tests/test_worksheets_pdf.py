@@ -85,7 +85,9 @@ def test_every_key_matches_physics_figures_for_its_version(teachers, sheet):
             assert squash(f"({item.template.key}, variant {item.variant})") in key
             for part in question.parts:
                 if part.kind in ("numeric", "graph", "mcq"):
-                    assert squash(part.answer_text) in key, (item.template.key, part.prompt)
+                    # without hyphens: TeX may break a long answer's word ("ap-proach")
+                    assert squash(part.answer_text).replace("-", "") in key.replace("-", ""), (
+                        item.template.key, part.prompt)
                 if part.kind == "numeric":
                     for written, name, _ in wrong_answers(part):
                         assert squash(written) in key and squash(name) in key, (item.template.key, name)

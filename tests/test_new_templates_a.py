@@ -4,7 +4,7 @@
 Each printed variant's keys are worked here from the printed givens with the formula a student
 writes (not through the template or the models), with the source of the number in a comment:
 the notes' own answer where the notes print one. Then the real named mistakes the issue lists
-("momentum added as scalars", "the mass of one body used for both", "the kinetic energy
+("momentum added as scalars", "one body's mass used for both", "the kinetic energy
 'conserved' in an inelastic collision"), the two models the templates need, and a ratio's
 answer, which has no unit, in the browser's marker and in Moodle.
 """
@@ -140,9 +140,9 @@ def test_the_issues_named_mistakes_are_worked_from_the_printed_numbers():
     assert mistake("bounce-energy-ratio", 0, "momentum added as scalars") == pytest.approx(0.8)
     # the ball's reversal ignored: Δp = m(v − u), v = 3.6 / 0.43 + 3.0
     assert mistake("headed-ball-force-speed", 1, "momentum added as scalars") == pytest.approx(3.6 / 0.43 + 3.0)
-    # the mass of one body used for both: A's mass for the pair (v = u) and B's mass with A's Δv
-    assert mistake("sticking-fraction-lost", 0, "the mass of one body used for both") == pytest.approx(4.0)
-    assert mistake("collision-third-law", 0, "the mass of one body used for both") == pytest.approx(0.40 * 2.0)
+    # one body's mass used for both: A's mass for the pair (v = u) and B's mass with A's Δv
+    assert mistake("sticking-fraction-lost", 0, "one body's mass used for both") == pytest.approx(4.0)
+    assert mistake("collision-third-law", 0, "one body's mass used for both") == pytest.approx(0.40 * 2.0)
     # kinetic energy "conserved" in an inelastic collision: ½ × 3.0 × 4.0² = ½ × 4.0 v², and no energy lost
     assert mistake("sticking-fraction-lost", 0, "kinetic energy conserved") == pytest.approx(math.sqrt(24 / 2))
     assert mistake("sticking-fraction-lost", 1, "kinetic energy conserved") == 0.0

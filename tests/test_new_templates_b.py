@@ -100,7 +100,7 @@ def test_puck_components_conserve_momentum_along_and_across_x(index, question):
     assert angle.answer_direction == "on the other side of the x-direction from A"
     swapped_x = {m.name: m.value for m in x_part.mistakes}["sin and cos swapped"]
     assert swapped_x == pytest.approx(p_after * math.sin(theta))  # sin where cos belongs
-    scalar = {m.name: m.value for m in speed.mistakes}["momentum treated as a scalar"]
+    scalar = {m.name: m.value for m in speed.mistakes}["momentum added as scalars"]
     assert scalar == pytest.approx(given["mass of A"] * (given["speed of A before"] - given["speed of A after"])
                                    / given["mass of B"])
 

@@ -494,7 +494,7 @@ def sticking_fraction_lost(m1: float = 3.0, u1: float = 4.0, m2: float = 1.0) ->
             Part("speed just after the collision", v, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
                  revisit="Momentum is conserved: m₁u₁ = (m₁ + m₂)v, with the mass of both trolleys after.",
                  mistakes=(
-                     Mistake("the mass of one body used for both", velocity_from_momentum(momentum(m1, u1), m1),
+                     Mistake("one body's mass used for both", velocity_from_momentum(momentum(m1, u1), m1),
                              f"You used A's mass for the pair after the collision. The trolleys move together: "
                              f"{ma} × {ua} = ({ma} + {mb})v.", see="momentum"),
                      Mistake("kinetic energy conserved", u1 * math.sqrt(m1 / (m1 + m2)),

@@ -355,7 +355,7 @@ def collision_third_law(mass_a: float = 0.60, speed_a: float = 2.5, mass_b: floa
         givens.append(Given("speed of A after", after_a, "m s^-1", 2))
     third_law = ("By Newton's third law B pushes A and A pushes B with equal and opposite forces, for the same "
                  "time, so their changes in momentum are equal and opposite: Δp of B = −Δp of A.")
-    # B's velocity change with "the mass of one body used for both": A's change in velocity given to B
+    # B's velocity change with "one body's mass used for both": A's change in velocity given to B
     same_velocity_change = u_b + (speed_a - after_a)
     b_mistakes = [
         Mistake("changes in velocity taken as equal", same_velocity_change,
@@ -372,7 +372,7 @@ def collision_third_law(mass_a: float = 0.60, speed_a: float = 2.5, mass_b: floa
                     f"to B's velocity before, −{ub} m s⁻¹."),
         ]
     a_mistakes = [
-        Mistake("the mass of one body used for both", momentum(mass_b, speed_a - after_a),
+        Mistake("one body's mass used for both", momentum(mass_b, speed_a - after_a),
                 f"You multiplied B's mass by A's change in velocity. The changes in momentum are equal and "
                 f"opposite, so work out A's with A's mass: {ma} × ({va} − {ua})."),
         Mistake("the same direction as A's change", dp_b,

@@ -401,7 +401,7 @@ def puck_components(m1: float = 0.40, speed_before: float = 2.5, m2: float = 0.6
     """Components of momentum before and after (issue 25): A, moving along x, hits B at rest and
     moves off at an angle. Resolve A's momentum after (p cos θ along x, p sin θ across it), then
     conserve each component to find B's velocity (notes, "Momentum in two dimensions" and
-    Example 4). Named mistakes: sin and cos swapped, momentum treated as a scalar, a component
+    Example 4). Named mistakes: sin and cos swapped, momentum added as scalars, a component
     forgotten.
 
     Marks: 9702/21/M/J/16 Q2(a) credits each component on its own ("12 cos 50°", "12 sin 50°"),
@@ -468,7 +468,7 @@ def puck_components(m1: float = 0.40, speed_before: float = 2.5, m2: float = 0.6
                          "after; B's y-component cancels A's. Combine them with Pythagoras, then divide by "
                          "B's mass.",
                  mistakes=(
-                     Mistake("momentum treated as a scalar", velocity_after_collision(m1, speed_before, m2, 0.0,
+                     Mistake("momentum added as scalars", velocity_after_collision(m1, speed_before, m2, 0.0,
                                                                                       speed_after),
                              "You subtracted the sizes of A's momenta as if A carried straight on. Momentum "
                              "is a vector: conserve the x- and y-components separately.", see="conservation"),

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 import random
+from collections import Counter
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -23,10 +24,18 @@ from .questions import Question
 #: What a template asks for (data-kind): a number, a choice of four, a reading of a graph,
 #: a written explanation.
 KINDS = ("numeric", "mcq", "graph", "explain")
-#: Fresh-number templates give at least this many variants; templates that vary their
-#: situation instead (conceptual, multiple choice, explain) at least MIN_SITUATIONS.
+#: Fresh-number templates give the site at least this many variants, and keep at least
+#: MIN_RESERVE more that the site never ships: the teacher's worksheets, tests and Moodle
+#: file draw only from those (issue 26), so no student has met a sheet's numbers. Templates
+#: that vary their situation instead (conceptual, multiple choice, explain) give at least
+#: MIN_SITUATIONS, split the same way once they have SHARED_BELOW or more; with fewer, the
+#: site and the sheets share them (CLARIFICATIONS, Teachers; the "For teachers" page lists them).
 MIN_VARIANTS = 10
+MIN_RESERVE = 10
 MIN_SITUATIONS = 4
+SHARED_BELOW = 8
+#: A multiple-choice template's key is no one letter in more than this share of its variants.
+MOST_OF_ONE_LETTER = 0.4
 _MAX_TRIES = 2000
 
 
@@ -88,6 +97,29 @@ def confusable_mistakes(question: Question) -> list[str]:
     return found
 
 
+def rounding_ties(question: Question) -> list[str]:
+    """Named answers a marker could take for the key because the key sits on a rounding tie at
+    3 s.f. (292.5, 4.905): which way it rounds then hangs on the last bit of a float, so a slip
+    (g = 9.8, rounding part-way) typed as 292 or 4.90 could read as the key, in the browser or
+    in Python. A drawn variant with one is refused (an exam writer, too, would pick other numbers)."""
+    found = []
+    for part in question.parts:
+        if part.kind != "numeric" or not part.value:
+            continue
+        scaled = abs(part.value) * 10.0 ** (2 - math.floor(math.log10(abs(part.value))))
+        if abs(scaled - math.floor(scaled) - 0.5) > 1e-6:
+            continue
+        unit = abs(part.value) / scaled  # one unit of the 3rd significant figure
+        forms = {round(math.floor(scaled) * unit, 12), round(math.ceil(scaled) * unit, 12)}
+        named = [(m.name, m.value) for m in part.mistakes if m.unit is None and m.direction is None]
+        named += [("g = 9.8", part.g_nine_eight)] if part.g_nine_eight is not None else []
+        named += [(what, value) for value, what in part.rounded_part_way]
+        for name, value in named:
+            if value and round(float(round_number(abs(value), 3)), 12) in forms:
+                found.append(f"{part.prompt}: {name} ({value!r}) against the key {part.value!r}")
+    return found
+
+
 @dataclass(frozen=True)
 class Template:
     """A question whose numbers are drawn afresh. ``build(**values)`` gives its Question.
@@ -105,7 +137,7 @@ class Template:
     title: str
     build: Callable[..., Question] = field(repr=False)
     draws: Mapping[str, Draw] = field(default_factory=dict)
-    variant_count: int = MIN_VARIANTS
+    variant_count: int = MIN_VARIANTS + MIN_RESERVE
     #: A worked example's try-first part: the printed numbers only, not one of the bank's.
     try_first: bool = False
     #: Why an explain or conceptual template's answer is the same text in every variant (say, one
@@ -155,7 +187,33 @@ class Template:
         (neither counts toward the variant rules)."""
         if self.try_first or self.one_wording:
             return 1
-        return MIN_VARIANTS if "numeric" in self.kinds or "graph" in self.kinds else MIN_SITUATIONS
+        return MIN_VARIANTS + MIN_RESERVE if self.fresh_numbers else MIN_SITUATIONS
+
+    @property
+    def fresh_numbers(self) -> bool:
+        """Its variants are fresh numbers (a calculation or a graph), not fresh situations."""
+        return "numeric" in self.kinds or "graph" in self.kinds
+
+    @property
+    def shares_variants(self) -> bool:
+        """The site and the teacher's sheets use the same variants: a one-wording statement, a
+        try-first part, or a template of fewer than SHARED_BELOW situations."""
+        return not self.fresh_numbers and len(self.values) < SHARED_BELOW
+
+    @property
+    def site_variants(self) -> range:
+        """The variants the site ships (New numbers): the first MIN_VARIANTS of fresh numbers,
+        the first half (rounded up) of the situations, or all of them when they are shared.
+        Variant 0, the printed one, is always the site's."""
+        total = len(self.values)
+        if self.shares_variants:
+            return range(total)
+        return range(min(total, MIN_VARIANTS) if self.fresh_numbers else total - total // 2)
+
+    @property
+    def reserve_variants(self) -> range:
+        """The variants only the teacher's kit uses (all of them when they are shared)."""
+        return range(len(self.values)) if self.shares_variants else range(len(self.site_variants), len(self.values))
 
     @cached_property
     def values(self) -> tuple[dict[str, float], ...]:
@@ -166,12 +224,17 @@ class Template:
         if not self.draws:
             return tuple(chosen)
         rng = random.Random(self.key)  # the same variants in every build
+        letters = Counter(self._key_letters(printed))
+        printed_as = {self._printed_as(printed)}  # a variant must print differently from the others
         for _ in range(_MAX_TRIES):
             if len(chosen) == self.variant_count:
                 return tuple(chosen)
             values = {name: rng.choice(draw.grid) for name, draw in self.draws.items()}
-            if values not in chosen and self._check(values):
+            if (values not in chosen and self._check(values) and self._letters_fit(values, letters)
+                    and self._printed_as(values) not in printed_as):
                 chosen.append(values)
+                letters.update(self._key_letters(values))
+                printed_as.add(self._printed_as(values))
         raise ValueError(f"template {self.key} found only {len(chosen)} of {self.variant_count} "
                          f"variants in {_MAX_TRIES} draws: widen its draws")
 
@@ -186,7 +249,25 @@ class Template:
         if printed:
             _require(not confused, "printed", values,
                      f"gives named mistakes inside the key's 2 s.f. band in {self.key}: {confused}")
-        return not confused
+            return True  # the notes' numbers are what they are
+        return not confused and not rounding_ties(question)
+
+    def _printed_as(self, values: dict[str, float]) -> tuple:
+        """What a student sees of a variant: its text and its graph (a graph question may keep
+        its words, and two givens may round to the same printed numbers)."""
+        question = self.build(**values)
+        return (question.text, question.graph)
+
+    def _key_letters(self, values: dict[str, float]) -> list[str]:
+        return [part.answer for part in self.build(**values).parts if part.kind == "mcq"]
+
+    def _letters_fit(self, values: dict[str, float], letters: Counter) -> bool:
+        """A multiple-choice draw is refused when its key's letter already has its share of the
+        variants (issue 25: no letter is the key in more than MOST_OF_ONE_LETTER of them), so the
+        letter never gives the answer away, however many variants the template keeps."""
+        drawn = self._key_letters(values)
+        most = MOST_OF_ONE_LETTER * self.variant_count * len(drawn)
+        return all(letters[letter] + drawn.count(letter) <= most for letter in set(drawn))
 
     def variant(self, index: int) -> Question:
         return self.build(**self.values[index])

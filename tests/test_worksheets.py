@@ -99,6 +99,41 @@ def test_site_sheets_are_one_per_type_and_the_40_mark_test():
     assert all([v.letter for v in s.versions] == ["A", "B", "C"] for s in sheets)
 
 
+def test_site_sheets_use_only_variants_the_site_never_shows():
+    """Issue 26: a sheet's numbers are never the site's New numbers (a shared template, of few
+    situations, is the exception the "For teachers" page lists)."""
+    for sheet in site_sheets():
+        for version in sheet.versions:
+            for item in version.items:
+                assert item.variant in item.template.reserve_variants, (sheet.name, item)
+                assert item.template.shares_variants or item.variant not in item.template.site_variants
+
+
+def test_no_question_appears_twice_in_a_kit_of_the_same_letter():
+    """Worksheet A and test A never share a template's variant: the test was a repeat of the
+    worksheets when variants were drawn from the seed and the template only."""
+    sheets = site_sheets()
+    for index, letter in enumerate("ABC"):
+        asked = [(item.template.key, item.variant) for sheet in sheets for item in sheet.versions[index].items]
+        repeated = sorted({q for q in asked if asked.count(q) > 1})
+        assert not repeated, f"kit {letter} asks twice: {repeated}"
+
+
+def test_every_fresh_number_template_has_ten_site_and_ten_reserve_variants():
+    for template in TEMPLATES:
+        if template.fresh_numbers:
+            assert len(template.site_variants) >= 10 and len(template.reserve_variants) >= 10, template.key
+            assert 0 in template.site_variants  # the printed numbers are the book's
+
+
+def test_the_seeded_draw_is_fnv1a_as_the_builder_computes_it():
+    """The sheet builder in the browser repeats these draws: FNV-1a's published test values."""
+    assert worksheets.fnv1a("") == 0x811C9DC5
+    assert worksheets.fnv1a("a") == 0xE40C292C
+    assert worksheets.fnv1a("foobar") == 0xBF9CF968
+    assert worksheets.seeded_order(["x", "y", "z"], "t", 1) == sorted("xyz", key=lambda k: worksheets.fnv1a(f"t:1:{k}"))
+
+
 # ------------------------------------------------------------------ the LaTeX
 
 
@@ -217,50 +252,76 @@ def test_moodle_has_a_category_per_type_and_every_variant_of_each_part(small_exp
         # a part that asks for a direction is one Cloze question (size and direction boxes)
         kind = "cloze" if part.direction == "choice" else "numerical"
         asked = [q for q in categories[path] if q.get("type") == kind]
-        assert len(asked) == len(categories[path]) == len(template.values) >= moodle_export.MOODLE_MIN_VARIANTS
+        assert len(asked) == len(categories[path]) == len(template.reserve_variants) >= moodle_export.MOODLE_MIN_VARIANTS
     explain = bank.TEMPLATES["terminal-velocity-explained"]
     essays = [q for q in root.iter("question") if q.get("type") == "essay"]
-    assert len(essays) == len(explain.values)  # fewer than 10 situations: every one
+    assert len(essays) == len(explain.values)  # fewer than 8 situations: every one, shared with the site
 
 
 def _question(root, idnumber: str):
     return next(q for q in root.iter("question") if q.findtext("idnumber") == idnumber)
 
 
+def _first_reserve(key: str) -> int:
+    """Moodle holds only the reserve: the first of a template's (the site never shows it)."""
+    return bank.TEMPLATES[key].reserve_variants[0]
+
+
 def test_moodle_takes_the_books_written_forms_of_a_right_answer(small_export):
     """The key at 2 s.f. (that value only) and at 3 s.f. (half a unit in the 3rd figure), the
     key as it prints first; not half a unit in the 2nd s.f. (which took 2.88 for 2.85)."""
     root, _ = small_export
-    question = _question(root, "quick-check-3-v0-a")  # 687 N
+    index = _first_reserve("quick-check-3")
+    key = bank.TEMPLATES["quick-check-3"].variant(index).parts[0].value  # a force of the order of 700 N
+    question = _question(root, f"quick-check-3-v{index}-a")
     right = [(float(a.findtext("text")), float(a.findtext("tolerance")))
              for a in question.findall("answer") if a.get("fraction") == "100"]
-    assert right[0] == (687.0, 0.5)
-    assert (690.0, pytest.approx(690 * moodle_export.EXACT)) in right
-    assert not any(abs(692 - value) <= width for value, width in right)  # 692 is not 687 at 3 s.f.
+    three, two = float(format_number(key, 3)), float(format_number(key, 2))
+    assert right[0] == (three, 0.5)
+    assert (two, pytest.approx(two * moodle_export.EXACT)) in right
+    # a value that is the key at 2 s.f. but not at 3 s.f.: 5 units of the 3rd figure away
+    stray = three + 5 if three + 5 < two + 5 else three - 5
+    assert float(format_number(stray, 2)) == two
+    assert not any(abs(stray - value) <= width for value, width in right)
+
+
+def test_moodle_holds_only_the_reserve(small_export):
+    """No variant the site shows is in the Moodle file (issue 26): its ids name reserve variants."""
+    root, _ = small_export
+    for question in root.iter("question"):
+        idnumber = question.findtext("idnumber")
+        if question.get("type") == "category" or not idnumber:
+            continue
+        key, index = re.fullmatch(r"(.+)-v(\d+)-[a-z]+", idnumber).groups()
+        template = bank.TEMPLATES[key]
+        assert int(index) in template.reserve_variants, idnumber
+        assert template.shares_variants or int(index) not in template.site_variants, idnumber
 
 
 def test_moodle_grades_each_mistake_by_the_lines_it_keeps(small_export):
     root, _ = small_export
     grades = {a.findtext("feedback/text")[:20]: float(a.get("fraction"))
-              for a in _question(root, "practice-pucks-v0-a").findall("answer")}
+              for a in _question(root, f"practice-pucks-v{_first_reserve('practice-pucks')}-a").findall("answer")}
     assert grades, "no answers"
     # quick check 3 (b) asks a direction: one Cloze question, g = 10 keeping the C1 of the size's two lines
-    cloze = _question(root, "quick-check-3-v0-b")
+    index = _first_reserve("quick-check-3")
+    cloze = _question(root, f"quick-check-3-v{index}-b")
     assert cloze.get("type") == "cloze"
     text = cloze.findtext("questiontext/text")
-    assert "{2:NUMERICAL:=11.6:0.05#" in text
-    assert "{1:MULTICHOICE:=upwards#" in text
-    g_ten = bank.TEMPLATES["quick-check-3"].variant(0).parts[1].answer_for_g(10.0)
+    size = format_number(bank.TEMPLATES["quick-check-3"].variant(index).parts[1].value, 3)
+    assert "{2:NUMERICAL:=" + size + ":0.05#" in text
+    assert "{1:MULTICHOICE:=" in text
+    g_ten = bank.TEMPLATES["quick-check-3"].variant(index).parts[1].answer_for_g(10.0)
     assert f"%50%{format_number(g_ten, 3)}:0.05#" in text
-    assert "~=-11.6:0.05#Right: the minus sign is ignored" in text
+    assert "~=-" + size + ":0.05#Right: the minus sign is ignored" in text
 
 
 def test_moodle_units_have_their_forms_and_other_sizes(small_export):
     root, _ = small_export
-    units = {u.findtext("unit_name"): float(u.findtext("multiplier"))
-             for u in _question(root, "practice-pucks-v0-a").findall("units/unit")}
+    pucks = _question(root, f"practice-pucks-v{_first_reserve('practice-pucks')}-a")
+    units = {u.findtext("unit_name"): float(u.findtext("multiplier")) for u in pucks.findall("units/unit")}
     assert units == {"Ns": 1.0, "kgm/s": 1.0, "kgms^-1": 1.0, "kgms⁻¹": 1.0, "kNs": 0.001}
-    assert float(_question(root, "practice-pucks-v0-a").findtext("unitpenalty")) == 0.5  # the A1 of 2
+    assert float(pucks.findtext("unitpenalty")) == 0.5  # the A1 of 2
 
 
 def test_moodle_html_is_in_cdata():

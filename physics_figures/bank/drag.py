@@ -477,8 +477,10 @@ def sphere_in_liquid(grams: float = 6.3, volume_cm3: float = 0.80, density: floa
     gr, vol, rho = n(grams, 2), n(volume_cm3, 2), n(density, 3)
     # the upthrust and the half drag with the figures the steps' results need (W is exact)
     (u_b,) = enough_figures((u,), lambda u1: w_ - u1, n(d, 3))
-    u_c, half_d = enough_figures((u, d / 2), lambda u1, d1: (w_ - u1 - d1) / mass, n(a, 3))
-    u_b = u_c = max(u_b, u_c, key=len)  # one printing of U in both steps
+    (u_c, _) = enough_figures((u, d / 2), lambda u1, d1: (w_ - u1 - d1) / mass, n(a, 3))
+    u_b = u_c = max(u_b, u_c, key=len)  # one printing of U in both steps...
+    # ...and the half drag printed with the figures that this U needs (a longer U moves the result)
+    (half_d,) = enough_figures((d / 2,), lambda d1: (w_ - float(u_c) - d1) / mass, n(a, 3))
     return Question(
         key="sphere-in-liquid",
         text=(f"A metal sphere of mass {gr} g and volume {vol} cm<sup>3</sup> sinks through a liquid of "
@@ -1096,7 +1098,7 @@ TEMPLATES = (
              variant_count=len(_FALLERS)),
     Template("drag-fraction-choice", "drag", ("mcq",), "Air resistance a fraction of the weight",
              drag_fraction_choice,
-             {"percent": Draw(25.0, 10.0, 90.0, 5.0)}),
+             {"percent": Draw(25.0, 10.0, 90.0, 1.0)}),
     Template("terminal-velocity-choice", "drag", ("mcq",), "At terminal velocity", terminal_velocity_choice,
              {"situation": Draw(0, 0, len(_AT_TERMINAL) - 1, 1)}, variant_count=len(_AT_TERMINAL)),
     Template("deceleration-largest-explained", "drag", ("explain",), "Why is the deceleration largest?",

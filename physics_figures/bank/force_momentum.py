@@ -527,6 +527,9 @@ def mass_from_velocity_change(force: float = 6.0, duration: float = 2.5, speed_b
     if not back and speed_after <= speed_before:
         raise ValueError(f"speed_after must exceed speed_before={speed_before!r} m s^-1 when the force acts "
                          f"along the motion (got speed_after={speed_after!r})")
+    if back and speed_after == speed_before:  # subtracting the speeds would give Δv = 0: no mass to mark
+        raise ValueError(f"speed_after must differ from speed_before={speed_before!r} m s^-1 when the puck "
+                         f"turns round, so the speeds-subtracted mistake has a value (got speed_after={speed_after!r})")
     dp = impulse(force, duration)
     mass = mass_from_momentum_change(dp, u, v)
     if not 0.5 <= mass <= 10.0:  # a laboratory trolley or an ice puck, as the text says

@@ -4,8 +4,18 @@ A teacher chooses question types or templates of the bank (physics_figures.bank)
 number of marks, the number of versions and a seed. :func:`plan` picks the templates (the
 same in every version, so every version carries the same marks) and, for each version,
 one variant of each template: different numbers from the same templates. Everything is
-drawn from the seed, so the same seed gives the same sheets. The printed variant (0) is
-the one the book and its answer key show, so versions use the other variants first.
+drawn from the seed, so the same seed gives the same sheets.
+
+Sheets use only a template's reserve variants (Template.reserve_variants), which the site
+never ships, so no student has met a sheet's numbers on the site; a template of a few
+situations shares its variants with the site (Template.shares_variants). Within a kit (the
+site's sheets), no variant of a template appears twice: each sheet takes the next unused
+variants of each template (:class:`Kit`), and the end-of-topic test leaves out a template
+whose reserve the worksheets used up.
+
+The order of templates and variants is drawn with :func:`seeded_order`, a 32-bit FNV-1a
+hash of the seed and the key, which the teachers' sheet builder (book/_ext/teachers,
+sheet-builder.js) computes the same way: the builder and this module give the same sheets.
 
 :mod:`.latex` writes a version's question sheet and answer key as standalone LaTeX, and
 :mod:`.build` typesets them with xelatex. :mod:`.moodle` exports the bank as Moodle XML.
@@ -19,7 +29,6 @@ with nothing else to change. The Dynamics topic (physics_figures.bank) is the de
 from __future__ import annotations
 
 import difflib
-import random
 import string
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -111,6 +120,21 @@ class Sheet:
         return tuple(item.template for item in self.versions[0].items)
 
 
+def fnv1a(text: str) -> int:
+    """The 32-bit FNV-1a hash of a text's UTF-8 bytes: a draw any language repeats exactly
+    (Python's random cannot be repeated in the browser's sheet builder)."""
+    value = 0x811C9DC5
+    for byte in text.encode():
+        value = ((value ^ byte) * 0x01000193) & 0xFFFFFFFF
+    return value
+
+
+def seeded_order(items: Sequence, label: str, seed: int, name=str) -> list:
+    """The items in the order a seed draws: by the hash of "label:seed:name(item)", ties in the
+    given order."""
+    return sorted(items, key=lambda item: fnv1a(f"{label}:{seed}:{name(item)}"))
+
+
 def _subset_sums(templates: Sequence[Template], most: int) -> dict[int, tuple[Template, ...]]:
     """For each total up to ``most``, one set of templates that makes it (the first found
     in the given order, which the seed has shuffled)."""
@@ -129,12 +153,11 @@ def choose_templates(templates: Sequence[Template], marks: int, seed: int, topic
     questions (each type's exam_count in the topic), drawn by ``seed``. ValueError when no
     set of them makes that many marks, naming the nearest totals that can be made."""
     topic = topic_of(topic)
-    rng = random.Random(f"worksheet-templates:{seed}")
     by_type: dict[str, list[Template]] = {}
     for template in templates:
         by_type.setdefault(template.type, []).append(template)
-    for group in by_type.values():
-        rng.shuffle(group)
+    by_type = {t: seeded_order(group, "worksheet-templates", seed, lambda template: template.key)
+               for t, group in by_type.items()}
     available = sum(template_marks(t) for t in templates)
     _require(marks <= available, "marks", marks,
              f"is more than the {available} marks the bank holds for "
@@ -190,35 +213,64 @@ def select(*, types: Sequence[str] = (), templates: Sequence[str] = (), topic: T
     return chosen
 
 
-def _variants_for(template: Template, count: int, seed: int) -> list[int]:
-    """``count`` different variants of a template, drawn by the seed; the printed variant
-    (0, in the book and its key) only when the others run out. A one-wording statement (a
-    definition) has one variant, the same in every version: its answer is the same anyway."""
+def variant_order(template: Template, seed: int) -> list[int]:
+    """A template's reserve variants in the order a seed draws them; the printed variant (0, in
+    the book and its key), when the reserve holds it, comes last."""
+    drawn = seeded_order([i for i in template.reserve_variants if i], f"worksheet-variants:{template.key}", seed)
+    return [*drawn, *(i for i in template.reserve_variants if not i)]
+
+
+def usable_versions(template: Template, used: int = 0) -> int:
+    """How many versions a template can still give after ``used`` of its variants went to other
+    sheets: every version its own variant; a one-wording statement (a definition) has one
+    variant, the same in every version (its answer is the same anyway), once in a kit."""
     if template.one_wording:
-        return [0] * count
-    rng = random.Random(f"worksheet-variants:{seed}:{template.key}")
-    others = list(range(1, len(template.values)))
-    rng.shuffle(others)
-    return [*others, 0][:count]
+        return MAX_VERSIONS if not used else 0
+    return len(template.reserve_variants) - used
+
+
+@dataclass
+class Kit:
+    """The sheets of one kit draw their variants from here: each template's next unused
+    variants, so no question (template and variant) appears twice in the kit."""
+
+    seed: int
+    used: dict[str, int] | None = None
+
+    def __post_init__(self):
+        self.used = {} if self.used is None else self.used
+
+    def left(self, template: Template) -> int:
+        return usable_versions(template, self.used.get(template.key, 0))
+
+    def take(self, template: Template, count: int) -> list[int]:
+        if template.one_wording:
+            self.used[template.key] = 1
+            return [0] * count
+        start = self.used.get(template.key, 0)
+        self.used[template.key] = start + count
+        return variant_order(template, self.seed)[start:start + count]
 
 
 def plan(name: str, title: str, templates: Sequence[Template], *, versions: int, seed: int,
-         marks: int | None = None, topic: Topic | None = None) -> Sheet:
+         marks: int | None = None, topic: Topic | None = None, kit: Kit | None = None) -> Sheet:
     """A sheet's versions: the templates (all of them, or a set making ``marks``), each
-    version with its own variant of each. ValueError when the request cannot be filled."""
+    version with its own reserve variant of each (the next unused ones of ``kit``, when the
+    sheet is one of a kit). ValueError when the request cannot be filled."""
     _require(isinstance(versions, int) and 1 <= versions <= MAX_VERSIONS, "versions", versions,
              f"must be a whole number from 1 to {MAX_VERSIONS} (A to Z)")
     _require(isinstance(seed, int) and seed >= 0, "seed", seed, "must be a whole number, 0 or more")
     _require(bool(templates), "templates", list(templates), "must hold at least one template")
-    short = [t for t in templates if len(t.values) < versions and not t.one_wording]
+    kit = Kit(seed) if kit is None else kit
+    short = [t for t in templates if kit.left(t) < versions]
     _require(not short, "versions", versions,
              "needs that many different variants of every template, but "
-             + ", ".join(f"{t.key} has {len(t.values)}" for t in short)
+             + ", ".join(f"{t.key} has {kit.left(t)} the site does not show" for t in short)
              + ": ask for fewer versions or leave those templates out")
     if marks is not None:
         _require(isinstance(marks, int) and marks >= 1, "marks", marks, "must be a whole number, 1 or more")
         templates = choose_templates(templates, marks, seed, topic)
-    chosen_variants = {t.key: _variants_for(t, versions, seed) for t in templates}
+    chosen_variants = {t.key: kit.take(t, versions) for t in templates}
     return Sheet(name, title, seed, tuple(
         Version(string.ascii_uppercase[index],
                 tuple(Item(t, chosen_variants[t.key][index]) for t in templates))
@@ -229,18 +281,16 @@ def site_sheets(*, seed: int = SITE_SEED, versions: int = SITE_VERSIONS, topic: 
     """The site's sheets: a worksheet of every template of each type, and the mixed 40-mark
     end-of-topic test weighted like the exam."""
     topic = topic_of(topic)
-
-    def enough(template: Template) -> bool:
-        return len(template.values) >= versions or bool(template.one_wording)
-
+    kit = Kit(seed)
     sheets = []
     for question_type in topic.types:
-        usable = [t for t in topic.by_type(question_type.key) if enough(t)]
+        usable = [t for t in topic.by_type(question_type.key) if kit.left(t) >= versions]
         if usable:
             sheets.append(plan(f"worksheet-{question_type.key}", f"Worksheet: {question_type.title}",
-                               usable, versions=versions, seed=seed, topic=topic))
-    usable = [t for t in bank_templates(topic) if enough(t)]
+                               usable, versions=versions, seed=seed, topic=topic, kit=kit))
+    # the test: the templates with variants the worksheets have not used
+    usable = [t for t in bank_templates(topic) if kit.left(t) >= versions]
     marks = min(END_OF_TOPIC_MARKS, sum(template_marks(t) for t in usable))  # a small topic: all it has
     sheets.append(plan("end-of-topic-test", f"{topic.name}: end-of-topic test", usable, versions=versions,
-                       seed=seed, marks=marks, topic=topic))
+                       seed=seed, marks=marks, topic=topic, kit=kit))
     return sheets

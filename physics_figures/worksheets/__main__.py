@@ -54,7 +54,8 @@ def _list(topic: Topic) -> None:
         for template in bank_templates(topic):
             if template.type == question_type.key:
                 print(f"  {template.key:32} {template_marks(template):2} marks  "
-                      f"{len(template.values):2} variants  {'/'.join(template.kinds)}")
+                      f"{len(template.reserve_variants):2} variants for sheets  {'/'.join(template.kinds)}"
+                      + ("  (shared with the site)" if template.shares_variants else ""))
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -382,9 +382,9 @@ def _png(figure) -> bytes:
 
 
 def variant_indices(template: Template) -> range:
-    """Every variant up to MOODLE_MIN_VARIANTS... all of them: at least 10 where the template
-    has them, and every one of a template with fewer situations."""
-    return range(len(template.values))
+    """The template's reserve variants, which the site never shows (at least MOODLE_MIN_VARIANTS
+    of fresh numbers), or all the situations of a template that shares them with the site."""
+    return template.reserve_variants
 
 
 def export(templates: list[Template] | None = None, topic: Topic | None = None

@@ -56,7 +56,7 @@ class TeachersFiles:
             rows.append(f'<tr><th scope="row">{short}<br><small>{len(sheet.templates)} questions, '
                         f"{sheet.marks} marks</small></th>{cells}</tr>")
         templates = bank_templates(self.topic)
-        variants = sum(len(t.values) for t in templates)
+        variants = sum(len(t.reserve_variants) for t in templates)
         versions = "".join(f'<th scope="col">Version {letter}</th>' for letter in letters)
         return (
             '<table class="table teachers-sheets">'
@@ -64,7 +64,13 @@ class TeachersFiles:
             f'<thead><tr><th scope="col">Sheet</th>{versions}'
             "</tr></thead><tbody>" + "".join(rows) + "</tbody></table>\n"
             f'<p><a href="{FROM_PAGE}{moodle_file(self.topic)}" download>The question bank for Moodle '
-            f"(Moodle XML)</a>: {len(templates)} templates, {variants} variants in all.</p>")
+            f"(Moodle XML)</a>: {len(templates)} templates, {variants} variants in all.</p>\n"
+            f"<p>{html.escape(self._shared())}</p>")
+
+    def _shared(self) -> str:
+        shared = [t.title for t in bank_templates(self.topic) if t.shares_variants]
+        return (f"These {len(shared)} questions have too few situations to keep some back, so the sheets "
+                f"and the site share them: {'; '.join(shared)}.")
 
     def _markdown(self) -> str:
         lines = [(f"The worksheets are files of the website's `{FOLDER}/` folder "
@@ -72,7 +78,7 @@ class TeachersFiles:
         for sheet in self.sheets:
             names = ", ".join(f"`{paper}` with `{key}`" for paper, key in sheet_files(sheet))
             lines.append(f"- {sheet.title} ({len(sheet.templates)} questions, {sheet.marks} marks): {names}")
-        lines += ["", f"The question bank for Moodle: `{FOLDER}/{moodle_file(self.topic)}`."]
+        lines += ["", f"The question bank for Moodle: `{FOLDER}/{moodle_file(self.topic)}`.", "", self._shared()]
         return "\n".join(lines) + "\n"
 
     def _repr_mimebundle_(self, include=None, exclude=None) -> dict[str, str]:

@@ -154,7 +154,7 @@ def sketch_nodes(sketch) -> list[nodes.Node]:
 
 def _template_data(template) -> dict:
     return {"key": template.key, "type": template.type, "kinds": list(template.kinds),
-            "variants": len(template.values), "tryFirst": bool(template.try_first)}
+            "variants": len(template.site_variants), "tryFirst": bool(template.try_first)}
 
 
 _TAG_NODES = {"sup": nodes.superscript, "sub": nodes.subscript, "em": nodes.emphasis,

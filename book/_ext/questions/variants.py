@@ -1,4 +1,4 @@
-"""Each template's other variants, for New numbers: a small script of data per template and
+"""Each template's other site variants (Template.site_variants, never the teacher's reserve), for New numbers: a small script of data per template and
 an SVG per variant's graph, under the site's _static/questions/, written when the HTML
 build finishes.
 
@@ -86,10 +86,12 @@ def write_variants(app, exception):
     files, drawn_graphs = {}, {}
     for key in keys:
         template = store.template(app.config, key)
-        if len(template.values) < 2:  # no New numbers: nothing to load
+        if len(template.site_variants) < 2:  # no New numbers: nothing to load
             continue
         variants = []
-        for index, variant in enumerate(template.variants):
+        # the site's variants only: the reserve is the teacher's (physics_figures.variants)
+        for index in template.site_variants:
+            variant = template.variant(index)
             data = variant.variant_data()
             if variant.graph is not None:  # its own graph, beside the variants' script
                 name = f"{key}-{index}.svg"

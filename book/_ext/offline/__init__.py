@@ -16,8 +16,8 @@ content hashes, so a new build (any changed byte) is a new cache.
 
 What is precached is what the pages reference (``href``/``src``, a stylesheet's ``url()``),
 the question variants and graphs loaded on New numbers, and the search index: not the PDFs
-(they are downloads, not pages: kept when opened) nor the TrueType fonts (every browser with service workers
-reads WOFF2).
+(downloads, not pages: sw.js keeps each once opened) nor the TrueType fonts (every browser
+with service workers reads WOFF2).
 """
 
 from __future__ import annotations

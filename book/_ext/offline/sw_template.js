@@ -10,8 +10,8 @@ var PRECACHE = __PRECACHE__;
 // Downloads opened online, for offline. Online, the network always answers (a rebuilt PDF
 // replaces the kept one); a new build of the pages drops them with the old pages.
 var OPENED = "dynamics-opened-" + VERSION;
-// Under the site's root (the worker's scope): what offline/__init__.py leaves out of PRECACHE
-// as downloads (NOT_PRECACHED), but the zip, which is the book itself to keep on disk.
+// Under the site's root (the worker's scope): the downloads offline/__init__.py leaves out of
+// PRECACHE (NOT_PRECACHED), but the zip: the whole book, to keep on disk, not in a cache.
 var KEPT_WHEN_OPENED = /^(pdf|teachers)\/[^/]+\.(pdf|xml)$/;
 
 self.addEventListener("install", function (event) {

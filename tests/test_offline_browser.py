@@ -4,12 +4,14 @@ opens with its figures, a question marks and gives new numbers, progress shows, 
 explorable responds and search finds pages with snippets. A new build replaces the cache:
 the student is told, presses Reload, and reads the new text. Served at the root and under a
 subpath (as GitHub Pages serves a project site), by a host that lets browsers reuse files
-for ten minutes, as GitHub Pages does."""
+for ten minutes, as GitHub Pages does. A teacher's PDF, opened once online, opens again
+offline; the zip holds every PDF and the Moodle file."""
 
 from __future__ import annotations
 
 import re
 import shutil
+import zipfile
 from pathlib import Path
 
 import offline
@@ -104,6 +106,45 @@ def test_after_one_visit_the_whole_book_works_offline(browser, site_dir, subpath
         assert not errors, errors
 
 
+#: The teacher's kit (make worksheets): a sheet the teacher opens online, and its key, never opened.
+OPENED_PDF = "teachers/end-of-topic-test-A.pdf"
+NEVER_OPENED_PDF = "teachers/end-of-topic-test-key-A.pdf"
+#: The page fetches a file as its link names it: its status and bytes, or the error offline.
+FETCHED = """async (url) => {
+    try {
+        const response = await fetch(url);
+        return {status: response.status, bytes: Array.from(new Uint8Array(await response.arrayBuffer()))};
+    } catch (error) {
+        return {error: String(error)};
+    }
+}"""
+
+
+@pytest.mark.parametrize("subpath", SUBPATHS)
+def test_a_teachers_pdf_opened_once_opens_again_offline(browser, site_dir, subpath):
+    kit = site_dir / OPENED_PDF
+    assert kit.is_file() and (site_dir / NEVER_OPENED_PDF).is_file(), \
+        "no teacher's kit in the site: make worksheets (or make book) writes it"
+    # no-store: only the service worker may keep a file (with a host's max-age, the browser's
+    # own cache would answer offline and this could not fail)
+    with serve_site(site_dir, prefix=subpath, cache_control="no-store") as base_url:
+        context, page, errors = _first_visit(browser, base_url)
+        page.goto(f"{base_url}/book/teachers.html")
+        opened, never_opened = (page.locator(f'a[href$="{path}"]').evaluate("link => link.href")
+                                for path in (OPENED_PDF, NEVER_OPENED_PDF))
+        online = page.evaluate(FETCHED, opened)
+        assert online.get("status") == 200 and bytes(online["bytes"]) == kit.read_bytes(), online.get("error")
+
+        context.set_offline(True)
+        again = page.evaluate(FETCHED, opened)
+        assert again.get("status") == 200, f"{OPENED_PDF}, opened online, fails offline: {again.get('error')}"
+        assert bytes(again["bytes"]).startswith(b"%PDF") and bytes(again["bytes"]) == kit.read_bytes()
+        # nothing is kept that was never opened: the first install stays within its budget
+        assert "error" in page.evaluate(FETCHED, never_opened), f"{NEVER_OPENED_PDF} came offline unopened"
+        context.close()
+        assert not errors, errors
+
+
 def _page_with_explorable(site_dir: Path) -> str:
     for path in site_pages(site_dir):
         if "data-explorable=" in (site_dir / path).read_text(encoding="utf-8"):
@@ -141,7 +182,7 @@ def test_the_precache_lists_every_page_and_what_pages_load_but_no_downloads(site
         assert path in listed, f"{path} is not kept offline"
     assert "searchindex.js" in listed
     assert any(path.startswith("_static/questions/") and path.endswith(".svg") for path in listed)
-    assert not [path for path in listed if path.startswith("pdf/") or path.endswith((".ttf", ".map"))]
+    assert not [path for path in listed if path.startswith(("pdf/", "teachers/")) or path.endswith((".ttf", ".map", ".zip"))]
     sw = (site_dir / offline.SERVICE_WORKER).read_text(encoding="utf-8")
     assert all(f'"{path}"' in sw for path in listed)
     assert offline.precache_size(site_dir) <= 2_000_000  # CLARIFICATIONS: at most 2 MB gzip
@@ -155,6 +196,15 @@ def unzipped(site_dir, tmp_path_factory) -> Path:
     folder = tmp_path_factory.mktemp("copy")
     shutil.unpack_archive(zipped, folder)
     return folder / "dynamics"
+
+
+def test_the_zip_holds_the_book_s_and_the_teacher_s_pdfs_and_the_moodle_file(site_dir):
+    downloads = sorted(path.relative_to(site_dir).as_posix() for folder in ("pdf", "teachers")
+                       for path in (site_dir / folder).glob("*") if path.suffix in {".pdf", ".xml"})
+    assert "pdf/dynamics.pdf" in downloads and OPENED_PDF in downloads and "teachers/dynamics-moodle.xml" in downloads
+    with zipfile.ZipFile(site_dir / "download" / "dynamics.zip") as archive:
+        zipped = set(archive.namelist())
+    assert [path for path in downloads if f"dynamics/{path}" not in zipped] == []
 
 
 def test_the_zip_opens_from_disk_with_figures_questions_and_search(browser, unzipped):

@@ -2,7 +2,9 @@
 HTML build finishes, precaches every page and every file a page uses, listed with their
 content hashes, so a new build (any changed byte) is a new cache.
 
-* ``sw.js`` (site root): cache first from the precache, the network for anything else.
+* ``sw.js`` (site root): cache first from the precache, the network for anything else. A
+  download (a PDF of the book or of the teacher's kit, the Moodle file) is fetched network
+  first and kept once opened, so it opens again offline without weighing on the first visit.
   A new version installs beside the old one and waits; static/offline.js then shows a
   notice with a Reload button that activates it and reloads the page.
 * ``manifest.webmanifest`` and two icons: a phone can install the book to its home screen.
@@ -14,8 +16,8 @@ content hashes, so a new build (any changed byte) is a new cache.
 
 What is precached is what the pages reference (``href``/``src``, a stylesheet's ``url()``),
 the question variants and graphs loaded on New numbers, and the search index: not the PDFs
-(they are downloads, not pages) nor the TrueType fonts (every browser with service workers
-reads WOFF2).
+(downloads, not pages: sw.js keeps each once opened) nor the TrueType fonts (every browser
+with service workers reads WOFF2).
 """
 
 from __future__ import annotations

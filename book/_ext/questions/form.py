@@ -17,6 +17,7 @@ from physics_figures import marking  # the rule table the browser's engine reads
 from physics_figures.notation import join_units  # a number never parts from its unit
 
 from . import store
+from .directive import question
 
 logger = logging.getLogger(__name__)
 #: The part kinds' markers (static/question-kinds/), each the browser twin of a part class of
@@ -29,10 +30,25 @@ PRINT_CHOICE = ('<p class="q-print"><button type="button" class="q-print-answers
                 'Print with answers adds each worked answer and mark scheme.</p>\n')
 
 
+def _try_first(asked) -> bool:
+    return bool((asked.get("template") or {}).get("tryFirst"))
+
+
+def print_note(document) -> str:
+    """What paper says in place of the web's instructions (shown in print only, questions.css):
+    how to answer, and the page's total, the sum of the totals its questions print (a worked
+    example's try-first part is left out: its solution follows it)."""
+    total = sum(line["marks"] for asked in document.findall(question) if not _try_first(asked)
+                for line in asked.findall(nodes.paragraph) if "q-total" in line["classes"])
+    return ('<p class="q-print-note">Answer each question in the space given, showing your working. '
+            'The marks for each part are in square brackets. '
+            f'Total for the page: {escape(store.count(total, "mark", "marks"))}.</p>\n')
+
+
 def visit_question(self, node):
-    if not getattr(self, "_q_print_written", False) and not (node.get("template") or {}).get("tryFirst"):
+    if not getattr(self, "_q_print_written", False) and not _try_first(node):
         self._q_print_written = True
-        self.body.append(PRINT_CHOICE)
+        self.body.append(PRINT_CHOICE + print_note(self.document))
     self.body.append(self.starttag(node, "section", CLASS="q", **{"data-q": node["qid"]}))
     payload = json.dumps(node["data"], ensure_ascii=False).replace("</", "<\\/")
     self.body.append(f'<script type="application/json" class="q-data">{payload}</script>\n')

@@ -58,7 +58,7 @@ def visit_class_progress(self, node):
         '<p class="cp-status" role="status" aria-live="polite"></p>',
         '<ul class="cp-refused" aria-label="Files refused" hidden></ul>',
         "</section>",
-        '<section class="cp-results" aria-labelledby="cp-table-heading" hidden>',
+        '<div class="cp-results" hidden>',
         '<h2 id="cp-table-heading">Marks and attempts</h2>',
         '<div class="cp-buttons"><button type="button" class="cp-csv">Download CSV</button>'
         '<button type="button" class="cp-clear">Clear the class</button></div>',
@@ -71,7 +71,7 @@ def visit_class_progress(self, node):
         '<div class="cp-scroll" role="region" aria-labelledby="cp-questions-heading" tabindex="0">'
         '<table class="cp-questions"></table></div>',
         '<p class="cp-untried"></p>',
-        "</section></div>\n",
+        "</div></div>\n",
     ]
     self.body.append("".join(html))
     raise nodes.SkipNode

@@ -14,13 +14,12 @@ Templates are found from what the pages place (the bank grows; nothing here assu
 from __future__ import annotations
 
 import csv
-import hashlib
 import io
 import json
 from collections import Counter
 
 import pytest
-from browser import axe_violations, open_browser, question_pages, serve_site
+from browser import axe_violations, open_browser, progress_checksum, question_pages, serve_site
 
 from physics_figures import bank
 
@@ -37,11 +36,6 @@ MODES = ("right", "wrong", "mistake")
 def site(site_dir):
     with serve_site(site_dir) as base_url, open_browser() as browser:
         yield browser, base_url
-
-
-def _checksum(attempts) -> str:
-    """progress-file.js: the SHA-256 of JSON.stringify(attempts) (no spaces, keys as written)."""
-    return hashlib.sha256(json.dumps(attempts, separators=(",", ":"), ensure_ascii=False).encode()).hexdigest()
 
 
 def _answerable(site_dir) -> list[tuple[str, str]]:
@@ -199,7 +193,7 @@ def test_exports_name_the_book_and_carry_the_checksum_of_their_records(site, exp
     for path in exports:
         saved = json.loads(path.read_text())
         assert (saved["version"], saved["book"]) == (1, book)
-        assert saved["sha256"] == _checksum(saved["attempts"])
+        assert saved["sha256"] == progress_checksum(saved["attempts"])
     assert len(exports) == 30
     assert len({len(json.loads(p.read_text())["attempts"]) for p in exports}) == ANSWERS_EACH
 
@@ -302,7 +296,7 @@ def test_from_the_unzipped_site_export_and_load_work_on_file_urls(site, site_dir
     page.evaluate("(a) => localStorage.setItem('dynamics-progress-v1', JSON.stringify({version: 1, attempts: a}))",
                   attempts)
     saved = _export(page, tmp_path / "from-disk.json")
-    assert saved["sha256"] == _checksum(attempts) and saved["book"] == bank.TOPIC.key
+    assert saved["sha256"] == progress_checksum(attempts) and saved["book"] == bank.TOPIC.key
     page.goto(site_dir.as_uri() + CLASS_PAGE, wait_until="load")
     _load(page, [tmp_path / "from-disk.json"])
     assert page.locator(".cp-status").inner_text().startswith("Loaded 1 file.")

@@ -100,7 +100,10 @@ const students = [
       attempt("gone", "drag", 1, 1, 4, ["not counted"]), // no longer in the bank
     ],
   },
-  { student: "ben", attempts: [attempt("t1", "two-d", 2, 3, 1, ["g = 10"]), attempt("d1", "drag", 3, 4, 2)] },
+  {
+    student: "ben", // the same mistake in two types: one student
+    attempts: [attempt("t1", "two-d", 2, 3, 1, ["g = 10"]), attempt("d1", "drag", 3, 4, 2, ["g = 10"])],
+  },
   { student: "cy", attempts: [] },
 ];
 
@@ -125,7 +128,7 @@ test("the table: best marks per question tried and every attempt, per student an
 test("the class's mistakes: most often first, with how many students made each", () => {
   const mistakes = C.classMistakes(C.classTable(types, students));
   assert.deepEqual(mistakes, [
-    { name: "g = 10", count: 3, students: 2 },
+    { name: "g = 10", count: 4, students: 2 },
     { name: "drag as resultant", count: 1, students: 1 },
   ]);
 });

@@ -22,6 +22,7 @@ import pytest
 from browser import axe_violations, open_browser, progress_checksum, question_pages, serve_site
 
 from physics_figures import bank
+from physics_figures.notation import format_number, plain_number
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
@@ -72,7 +73,8 @@ def _answer(tab, key: str, mode: str) -> None:
         elif index == 0 and mode == "wrong":
             value = part.value * 7.3
         box = form.locator("fieldset.q-part").nth(index)
-        box.locator("input.q-value").fill(f"{value if part.direction == 'signed' else abs(value):.3g}")
+        typed = plain_number(format_number(value if part.direction == "signed" else abs(value), 3))  # "2.00", not "2"
+        box.locator("input.q-value").fill(typed)
         box.locator("input.q-unit").fill(part.unit)
         if part.direction == "choice":
             box.locator("select.q-direction").select_option(part.answer_direction)

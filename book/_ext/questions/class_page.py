@@ -42,38 +42,39 @@ class ClassProgressDirective(SphinxDirective):
         return [class_progress(data={"book": store.book_id(self.config), "types": types})]
 
 
+#: The page's controls and the places class.js fills (hidden until it runs: without
+#: JavaScript only the note shows).
+PAGE = """\
+<div class="cp"><script type="application/json" class="cp-data">{payload}</script>
+<p class="cp-needs-js">{needs}</p>
+<section class="cp-load" aria-labelledby="cp-load-heading" hidden>
+<h2 id="cp-load-heading">Load the progress files</h2>
+<div class="cp-drop"><p class="cp-drop-text">Drop the students' progress files anywhere on this page, or choose
+them (several at once).</p>
+<label class="cp-choose-label" for="cp-choose">Choose progress files<input type="file" id="cp-choose"
+ class="cp-choose" accept=".json,application/json" multiple></label></div>
+<p class="cp-status" role="status" aria-live="polite"></p>
+<ul class="cp-refused" aria-label="Files refused" hidden></ul>
+</section>
+<div class="cp-results" hidden>
+<h2 id="cp-table-heading">Marks and attempts</h2>
+<div class="cp-buttons"><button type="button" class="cp-csv">Download CSV</button>
+<button type="button" class="cp-clear">Clear the class</button></div>
+<div class="cp-scroll" role="region" aria-labelledby="cp-table-heading" tabindex="0"><table class="cp-table"></table></div>
+<h2 id="cp-mistakes-heading">The class's most frequent mistakes</h2>
+<p class="cp-no-mistakes" hidden>No named mistakes in these files.</p>
+<ol class="cp-mistakes" aria-labelledby="cp-mistakes-heading"></ol>
+<h2 id="cp-questions-heading">Each question's share of full marks</h2>
+<div class="cp-scroll" role="region" aria-labelledby="cp-questions-heading" tabindex="0"><table class="cp-questions">
+</table></div>
+<p class="cp-untried"></p>
+</div></div>
+"""
+
+
 def visit_class_progress(self, node):
     payload = json.dumps(node["data"], ensure_ascii=False).replace("</", "<\\/")
-    html = [
-        '<div class="cp">',
-        f'<script type="application/json" class="cp-data">{payload}</script>',
-        f'<p class="cp-needs-js">{escape(NEEDS_BROWSER)}</p>',
-        '<section class="cp-load" aria-labelledby="cp-load-heading" hidden>',
-        '<h2 id="cp-load-heading">Load the progress files</h2>',
-        '<div class="cp-drop"><p class="cp-drop-text">Drop the students\' progress files anywhere on this page, '
-        "or choose them (several at once).</p>",
-        '<label class="cp-choose-label" for="cp-choose">Choose progress files'
-        '<input type="file" id="cp-choose" class="cp-choose" accept=".json,application/json" multiple></label>',
-        "</div>",
-        '<p class="cp-status" role="status" aria-live="polite"></p>',
-        '<ul class="cp-refused" aria-label="Files refused" hidden></ul>',
-        "</section>",
-        '<div class="cp-results" hidden>',
-        '<h2 id="cp-table-heading">Marks and attempts</h2>',
-        '<div class="cp-buttons"><button type="button" class="cp-csv">Download CSV</button>'
-        '<button type="button" class="cp-clear">Clear the class</button></div>',
-        '<div class="cp-scroll" role="region" aria-labelledby="cp-table-heading" tabindex="0">'
-        '<table class="cp-table"></table></div>',
-        '<h2 id="cp-mistakes-heading">The class\'s most frequent mistakes</h2>',
-        '<p class="cp-no-mistakes" hidden>No named mistakes in these files.</p>',
-        '<ol class="cp-mistakes" aria-labelledby="cp-mistakes-heading"></ol>',
-        '<h2 id="cp-questions-heading">Each question\'s share of full marks</h2>',
-        '<div class="cp-scroll" role="region" aria-labelledby="cp-questions-heading" tabindex="0">'
-        '<table class="cp-questions"></table></div>',
-        '<p class="cp-untried"></p>',
-        "</div></div>\n",
-    ]
-    self.body.append("".join(html))
+    self.body.append(PAGE.format(payload=payload, needs=escape(NEEDS_BROWSER)))
     raise nodes.SkipNode
 
 

@@ -9,6 +9,7 @@
 2. Builds a default one-page Jupyter Book 1 project in another temporary folder and
    measures, in headless Chromium with gzip as a static host serves it, the bytes
    its page transfers and the bytes of every page of our site (as ratios to it).
+   It times marking one answer, and the class page loading 30 students' progress files.
 3. Runs Lighthouse (mobile, offline against localhost) on every page of our site.
 4. Writes BENCHMARKS.md with the machine and the date.
 
@@ -25,6 +26,7 @@ import gzip
 import json
 import os
 import platform
+import random
 import re
 import shutil
 import subprocess
@@ -43,6 +45,7 @@ from browser import (
     chromium_path,
     node_module,
     open_browser_async,
+    progress_checksum,
     serve_site,
     site_pages,
 )
@@ -184,6 +187,67 @@ async def marking_time(site: Path, page: str = "book/exam/quick-check.html", run
     return ms
 
 
+CLASS_PAGE = "book/teachers-class.html"
+CLASS_FILES, TERM_ATTEMPTS, CLASS_RUNS = 30, 300, 3
+CLASS_LOAD_GOAL_MS = 2000
+
+
+def term_of_practice(data: dict, student: int) -> str:
+    """One student's export after a term: TERM_ATTEMPTS attempts at the bank's questions (of the
+    page's data), a day apart in fours, with the bank's named mistakes on most wrong answers."""
+    from physics_figures import bank
+
+    names = sorted({m.name for t in bank.TEMPLATES.values() for p in t.variant(0).parts
+                    for m in getattr(p, "mistakes", ())})
+    templates = [(kind["type"], t) for kind in data["types"] for t in kind["templates"]]
+    pick = random.Random(student)
+    attempts = []
+    for n in range(TERM_ATTEMPTS):
+        kind, template = pick.choice(templates)
+        earned = pick.randint(0, template["marks"])
+        mistakes = [pick.choice(names)] if earned < template["marks"] and pick.random() < 0.7 else []
+        attempts.append({"question": template["key"], "type": kind, "variant": pick.randrange(10), "earned": earned,
+                         "available": template["marks"], "at": 1767225600000 + n * 21_600_000, "mistakes": mistakes})
+    export = {"version": 1, "book": data["book"], "sha256": progress_checksum(attempts), "attempts": attempts}
+    return json.dumps(export, indent=1, ensure_ascii=False)
+
+
+async def class_page_load_time(site: Path) -> float:
+    """Milliseconds from dropping CLASS_FILES students' exports on the class page to its tables
+    laid out (every file read, checked against its checksum, summed and shown): the best of
+    CLASS_RUNS, each on a freshly loaded page."""
+    best = None
+    with serve_site(site) as base:
+        async with open_browser_async() as browser:
+            context = await browser.new_context()
+            tab = await context.new_page()
+            for _ in range(CLASS_RUNS):
+                await tab.goto(f"{base}/{CLASS_PAGE}", wait_until="load")
+                data = json.loads(await tab.locator("script.cp-data").text_content())
+                files = [[f"student-{n + 1:02d}.json", term_of_practice(data, n)] for n in range(CLASS_FILES)]
+                ms = await tab.evaluate("""async (files) => {
+                    const box = document.querySelector('.cp');
+                    const before = Number(box.getAttribute('data-loads'));
+                    const shown = new Promise((resolve) => new MutationObserver((_, watch) => {
+                        if (Number(box.getAttribute('data-loads')) > before) { watch.disconnect(); resolve(); }
+                    }).observe(box, {attributes: true, attributeFilter: ['data-loads']}));
+                    const dropped = new DataTransfer();
+                    files.forEach(([name, text]) => dropped.items.add(new File([text], name, {type: 'application/json'})));
+                    const start = performance.now();
+                    box.querySelector('.cp-drop').dispatchEvent(
+                        new DragEvent('drop', {dataTransfer: dropped, bubbles: true, cancelable: true}));
+                    await shown;
+                    document.body.getBoundingClientRect();  // laid out, not just written
+                    return performance.now() - start;
+                }""", files)
+                shown = await tab.locator(".cp-table tbody tr").count()
+                if shown != CLASS_FILES:
+                    raise SystemExit(f"the class page showed {shown} students of {CLASS_FILES} files")
+                best = ms if best is None else min(best, ms)
+            await context.close()
+    return best
+
+
 LIGHTHOUSE_RUNNER = """
 // Lighthouse over many URLs with one Chrome: node runner.mjs OUT URL...
 import fs from 'fs';
@@ -321,6 +385,8 @@ def main() -> None:
         ours = asyncio.run(page_bytes(site, pages))
         print(">>> marking time in Chromium", flush=True)
         marking = asyncio.run(marking_time(site))
+        print(f">>> the class page loading {CLASS_FILES} progress files", flush=True)
+        class_load = asyncio.run(class_page_load_time(site))
         offline = offline_sizes(site)
         scores = {}
         if not args.no_lighthouse:
@@ -336,6 +402,7 @@ def main() -> None:
         ours=ours,
         scores=scores,
         marking=marking,
+        class_load=class_load,
         offline=offline,
     )
     output = Path(args.output)
@@ -352,6 +419,12 @@ def offline_sizes(site: Path) -> dict[str, int]:
 
     return {"precache": precache_size(site), "precache_files": len(precache_list(site)),
             "output": sum(p.stat().st_size for p in site.rglob("*") if p.is_file())}
+
+
+def class_load_line(ms: float) -> str:
+    return (f"Class page: {CLASS_FILES} progress files load (a term's practice each, {TERM_ATTEMPTS} attempts) in "
+            f"{ms:.0f} ms in Chromium, dropped at once and laid out (best of {CLASS_RUNS}; goal: under "
+            f"{CLASS_LOAD_GOAL_MS} ms).")
 
 
 BUILDS_HEADING = "## Build times"
@@ -389,7 +462,8 @@ def render_builds(timings, executed, edited_page, edited_function) -> str:
     return "\n".join(lines)
 
 
-def render(*, timings, executed, edited_page, edited_function, default, ours, scores, marking, offline) -> str:
+def render(*, timings, executed, edited_page, edited_function, default, ours, scores, marking, class_load,
+           offline) -> str:
     now = datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC")
     lines = [
         "# Benchmarks",
@@ -453,6 +527,7 @@ def render(*, timings, executed, edited_page, edited_function, default, ours, sc
         "",
         (f"Largest question data on one page: {most:,} bytes gzip (goal: under 40 KB). Marking one "
          f"answer (every part, ecf included) in Chromium takes {marking:.3f} ms (goal: at most 5 ms)."),
+        class_load_line(class_load),
     ]
     if scores:
         worst = {c: min(s[c] for s in scores.values()) for c in ("performance", "accessibility", "best-practices", "seo")}

@@ -17,8 +17,10 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import gzip
+import hashlib
 import http.server
 import io
+import json
 import re
 import shutil
 import sys
@@ -355,6 +357,13 @@ async def axe_violations_async(page, *, rules: list[str] | None = None) -> list[
     """As axe_violations, with the async API."""
     await page.add_script_tag(content=_axe_source())
     return await page.evaluate(AXE_RUN, [rules, None])
+
+
+def progress_checksum(attempts: list[dict]) -> str:
+    """An exported progress file's sha256 (book/_ext/questions/static/progress-file.js): the
+    SHA-256 of JSON.stringify(attempts), which for these records (whole numbers, strings) is
+    Python's json.dumps without spaces and with Unicode as it is."""
+    return hashlib.sha256(json.dumps(attempts, separators=(",", ":"), ensure_ascii=False).encode()).hexdigest()
 
 
 def question_pages(site: Path) -> dict[str, str]:

@@ -8,6 +8,7 @@
 * print_form.py: the question in print, with answer lines (the question sheet reads it);
 * answer_key.py: ``answer-key``, every answer and mark scheme of the book;
 * progress.py: ``practice-progress``, Your practice by question type;
+* class_page.py: ``class-progress``, the class at a glance from the students' exported files;
 * try_similar.py: ``try-similar``, a worked example's link to a question of its type;
 * book_map.py: ``book-map``, the landing page's map of parts, explorables and questions;
 * self_test.py: the definitions self-test's bar;
@@ -24,6 +25,7 @@ from sphinx.util import logging
 from . import (
     answer_key,
     book_map,
+    class_page,
     directive,
     form,
     print_form,
@@ -73,7 +75,7 @@ def setup(app):
     app.add_node(directive.worked_answer, html=(form.visit_worked_answer, form.depart_worked_answer))
     app.add_node(directive.graph_view, html=(form.visit_graph_view, form.depart_graph_view))
     app.add_directive("question", directive.QuestionDirective)
-    for job in (answer_key, progress, try_similar, book_map, self_test, rules_table):
+    for job in (answer_key, progress, try_similar, book_map, self_test, rules_table, class_page):
         job.setup(app)
     app.connect("config-inited", add_static_path)
     app.connect("env-purge-doc", store.purge)

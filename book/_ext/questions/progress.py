@@ -35,24 +35,29 @@ class PracticeProgressDirective(SphinxDirective):
         return [practice_progress()]
 
 
+def book_types(config) -> list[tuple]:
+    """Each question type of the book's topics (its QuestionType) with its templates' entries:
+    key, title and marks. Your practice and the class page read these; no physics."""
+    return [(kind, [{"key": t.key, "title": t.title, "marks": t.variant(0).marks} for t in topic.by_type(kind.key)])
+            for topic in store.topics(config) for kind in topic.types]
+
+
 def _progress_data(app, fromdoc: str) -> dict:
     """Every template of the book's topics by type (each type's title and method page as its
     topic declares them), with its title, marks and the page placing it (None if no page
-    does yet): what progress.js needs; it computes no physics."""
+    does yet), and the book's id, which an export carries: what progress.js needs; it
+    computes no physics."""
     env, placed = app.env, {}
     for docname in store.book_order(env, app.config.root_doc):
         for key in store.templates_used(env).get(docname, []):
             placed.setdefault(key, docname)
     types = []
-    for topic in store.topics(app.config):
-        for kind in topic.types:
-            templates = [{
-                "key": t.key, "title": t.title, "marks": t.variant(0).marks,
-                "page": app.builder.get_relative_uri(fromdoc, placed[t.key]) if t.key in placed else None,
-            } for t in topic.by_type(kind.key)]
-            method = app.builder.get_relative_uri(fromdoc, kind.method) if kind.method in env.all_docs else None
-            types.append({"type": kind.key, "name": kind.title, "templates": templates, "method": method})
-    return {"types": types}
+    for kind, entries in book_types(app.config):
+        templates = [{**entry, "page": app.builder.get_relative_uri(fromdoc, placed[entry["key"]])
+                      if entry["key"] in placed else None} for entry in entries]
+        method = app.builder.get_relative_uri(fromdoc, kind.method) if kind.method in env.all_docs else None
+        types.append({"type": kind.key, "name": kind.title, "templates": templates, "method": method})
+    return {"book": store.book_id(app.config), "types": types}
 
 
 NEEDS_BROWSER = ("Your practice is kept in the web browser you practise in: open this page in the "
@@ -123,6 +128,7 @@ def add_assets(app, pagename, templatename, context, doctree):
     if pagename in store.docs(app.env, "practice-progress"):
         app.add_css_file("progress.css")
         add_notation_script(app)
+        app.add_js_file("progress-file.js", loading_method="defer")  # what Export writes
         app.add_js_file("progress.js", loading_method="defer")
 
 

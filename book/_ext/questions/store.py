@@ -32,6 +32,12 @@ def topics(config) -> list:
     return [load(module) for module in config.question_topics]
 
 
+def book_id(config) -> str:
+    """The book's id in progress exports ("dynamics"): its topics' keys, so a book of other
+    topics writes files this book's class page refuses (static/progress.js)."""
+    return "+".join(topic.key for topic in topics(config))
+
+
 def bank_modules(config) -> tuple[str, ...]:
     """The modules a page placing or gathering questions is re-read for."""
     return (*config.question_topics, *SHARED_MODULES)
@@ -84,7 +90,7 @@ def merge(app, env, docnames, other):
                 store[name][docname] = theirs[name][docname]
         for directive, pages in theirs["docs"].items():
             if docname in pages:
-                store["docs"][directive].add(docname)
+                store["docs"].setdefault(directive, set()).add(docname)
 
 
 def refresh_gathering_pages(app, env, added, changed, removed):

@@ -8,11 +8,14 @@
  * the version and keep its data under a new key (upgrading a v1 store it finds, never
  * deleting it). If this page meets any other version, in the store or in an imported file,
  * it reads nothing from it and writes nothing over it: the store is left exactly as it is
- * (export still copies it out whole), and such a file is refused with the reason. */
+ * (export still copies it out whole), and such a file is refused with the reason.
+ * Export adds the book's id and a checksum of the attempts (progress-file.js, for the
+ * teacher's class page); import reads files with or without them. */
 (function (root) {
   "use strict";
 
   var Notation = root.Notation || require("../../notation/static/notation.js");
+  var ProgressFile = root.ProgressFile || require("./progress-file.js");
 
   var STORE = "dynamics-progress-v1";
   var VERSION = 1;
@@ -319,28 +322,43 @@
       }
     }
 
-    box.querySelector(".pp-export").addEventListener("click", function () {
-      var stored = getStored();
-      var read = readProgress(stored);
-      var text = read.ok ? JSON.stringify(read.progress, null, 1) : stored;
+    function download(text, name) {
       var blob = new Blob([text], { type: "application/json" });
       var a = document.createElement("a");
       a.href = URL.createObjectURL(blob);
-      a.download = "dynamics-progress-" + new Date().toISOString().slice(0, 10) + ".json";
+      a.download = name;
       document.body.appendChild(a);
       a.click();
       a.remove();
       setTimeout(function () {
         URL.revokeObjectURL(a.href);
       }, 1000);
-      var n = read.ok ? read.progress.attempts.length : 0;
-      say(
-        "Exported " +
-          (read.ok ? count(n) + " attempt" + (n === 1 ? "" : "s") : "your progress") +
-          " to " +
-          a.download +
-          ". Import that file on another device to carry on there.",
-      );
+    }
+
+    // The file carries the book's id and its records' checksum (progress-file.js).
+    box.querySelector(".pp-export").addEventListener("click", function () {
+      var stored = getStored();
+      var read = readProgress(stored);
+      var name = "dynamics-progress-" + new Date().toISOString().slice(0, 10) + ".json";
+      if (!read.ok) {
+        download(stored, name); // a format this page cannot read: copied out whole
+        say("Exported your progress to " + name + ".");
+        return;
+      }
+      ProgressFile.exportFile(read.progress, data.book).then(function (file) {
+        download(JSON.stringify(file, null, 1), name);
+        var n = file.attempts.length;
+        say(
+          "Exported " +
+            count(n) +
+            " attempt" +
+            (n === 1 ? "" : "s") +
+            " to " +
+            name +
+            ". Import that file on another device to carry on there" +
+            (file.sha256 ? ", or give it to your teacher." : "."),
+        );
+      });
     });
 
     importInput.addEventListener("change", function () {

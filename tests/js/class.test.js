@@ -1,0 +1,170 @@
+// The pure parts of the export's format (progress-file.js) and the class page (class.js),
+// run with `node --test tests/js`.
+"use strict";
+const test = require("node:test");
+const assert = require("node:assert/strict");
+const crypto = require("node:crypto");
+const path = require("node:path");
+const STATIC = path.join(__dirname, "..", "..", "book", "_ext", "questions", "static");
+const F = require(path.join(STATIC, "progress-file.js"));
+const C = require(path.join(STATIC, "class.js"));
+
+const BOOK = "dynamics";
+function attempt(question, type, earned, available, at, mistakes) {
+  return { question, type, variant: 0, earned, available, at, mistakes: mistakes || [] };
+}
+const types = [
+  {
+    type: "drag",
+    name: "Drag, terminal velocity",
+    templates: [
+      { key: "d1", title: "Drag 1", marks: 4 },
+      { key: "d2", title: "Drag 2", marks: 2 },
+    ],
+  },
+  { type: "two-d", name: "Two dimensions", templates: [{ key: "t1", title: "Two-d 1", marks: 3 }] },
+  { type: "empty", name: "Not in the bank yet", templates: [] },
+];
+
+async function exported(attempts, book) {
+  return JSON.stringify(await F.exportFile({ version: 1, attempts }, book || BOOK), null, 1);
+}
+
+test("the checksum is the SHA-256 of JSON.stringify(attempts), as the page documents", async () => {
+  const attempts = [attempt("d1", "drag", 3, 4, 1700000000000, ["g = 10"])];
+  const expected = crypto.createHash("sha256").update(JSON.stringify(attempts), "utf8").digest("hex");
+  assert.equal(await F.recordsChecksum(attempts), expected);
+  assert.equal(await F.recordsChecksum([]), crypto.createHash("sha256").update("[]").digest("hex"));
+});
+
+test("an export keeps version 1, names the book and carries the checksum, every stored field kept", async () => {
+  const attempts = [attempt("d1", "drag", 3, 4, 10)];
+  const file = await F.exportFile({ version: 1, attempts, definitions: { version: 1, cards: {} } }, BOOK);
+  assert.deepEqual(Object.keys(file), ["version", "book", "sha256", "attempts", "definitions"]);
+  assert.equal(file.version, 1);
+  assert.equal(file.book, BOOK);
+  assert.match(file.sha256, /^[0-9a-f]{64}$/);
+  assert.deepEqual(file.definitions, { version: 1, cards: {} });
+});
+
+test("a class file is read: the student is its name without the extension", async () => {
+  const read = await C.readFile("amira-khan.json", await exported([attempt("d1", "drag", 3, 4, 1)]), BOOK);
+  assert.equal(read.ok, true);
+  assert.equal(read.student, "amira-khan");
+  assert.equal(read.attempts.length, 1);
+  // spacing in the file does not count: the records do
+  const spaced = JSON.stringify(JSON.parse(await exported([attempt("d1", "drag", 3, 4, 1)])), null, 4);
+  assert.equal((await C.readFile("b.json", spaced, BOOK)).ok, true);
+  assert.equal(C.studentName("x.y.json"), "x.y");
+  assert.equal(C.studentName("noextension"), "noextension");
+});
+
+test("a file that is not this book's unedited export is refused, saying why", async () => {
+  const good = JSON.parse(await exported([attempt("d1", "drag", 3, 4, 1), attempt("t1", "two-d", 1, 3, 2)]));
+  const edited = structuredClone(good);
+  edited.attempts[1].earned = 3; // still a valid attempt: only the checksum tells
+  const noBook = structuredClone(good);
+  delete noBook.book;
+  const noSum = structuredClone(good);
+  delete noSum.sha256;
+  const cases = [
+    ["", /it is empty/],
+    ["{not json", /not JSON/],
+    ['{"attempts": []}', /no format version/],
+    [JSON.stringify({ ...good, version: 2 }), /newer version/],
+    [
+      await exported([attempt("d1", "drag", 3, 4, 1)], "waves"),
+      /another book \("waves"\), not this one \("dynamics"\)/,
+    ],
+    [JSON.stringify(noBook), /does not say which book/],
+    [JSON.stringify(noSum), /no checksum/],
+    [JSON.stringify(edited), /do not match their checksum: it was changed after it was exported/],
+    [JSON.stringify({ ...good, attempts: [{ question: "d1" }] }), /attempt 1 of 1 has no question type/],
+  ];
+  for (const [text, reason] of cases) {
+    const read = await C.readFile("f.json", text, BOOK);
+    assert.equal(read.ok, false, text);
+    assert.equal(read.name, "f.json");
+    assert.match(read.message, reason, text);
+  }
+  assert.equal((await C.readFile("g.json", JSON.stringify(good), BOOK)).ok, true);
+});
+
+const students = [
+  {
+    student: "amira",
+    attempts: [
+      attempt("d1", "drag", 1, 4, 1, ["g = 10"]),
+      attempt("d1", "drag", 4, 4, 2),
+      attempt("d2", "drag", 0, 2, 3, ["drag as resultant", "g = 10"]),
+      attempt("gone", "drag", 1, 1, 4, ["not counted"]), // no longer in the bank
+    ],
+  },
+  {
+    student: "ben", // the same mistake in two types: one student
+    attempts: [attempt("t1", "two-d", 2, 3, 1, ["g = 10"]), attempt("d1", "drag", 3, 4, 2, ["g = 10"])],
+  },
+  { student: "cy", attempts: [] },
+];
+
+test("the table: best marks per question tried and every attempt, per student and type, with totals", () => {
+  const table = C.classTable(types, students);
+  const cell = (row, i) => {
+    const c = table.rows[row].cells[i];
+    return [c.earned, c.available, c.attempts];
+  };
+  assert.deepEqual(cell(0, 0), [4 + 0, 4 + 2, 3]); // d1 best 4/4, d2 0/2; three attempts
+  assert.deepEqual(cell(0, 1), [0, 0, 0]);
+  assert.deepEqual(cell(1, 0), [3, 4, 1]);
+  assert.deepEqual(cell(1, 1), [2, 3, 1]);
+  assert.deepEqual(cell(2, 0), [0, 0, 0]);
+  assert.deepEqual(table.rows[0].total, { earned: 4, available: 6, attempts: 3 });
+  assert.deepEqual(table.rows[1].total, { earned: 5, available: 7, attempts: 2 });
+  assert.deepEqual(table.typeTotals[0], { earned: 7, available: 10, attempts: 4 });
+  assert.deepEqual(table.typeTotals[2], { earned: 0, available: 0, attempts: 0 });
+  assert.deepEqual(table.total, { earned: 9, available: 13, attempts: 5 });
+});
+
+test("the class's mistakes: most often first, with how many students made each", () => {
+  const mistakes = C.classMistakes(C.classTable(types, students));
+  assert.deepEqual(mistakes, [
+    { name: "g = 10", count: 4, students: 2 },
+    { name: "drag as resultant", count: 1, students: 1 },
+  ]);
+});
+
+test("each question's share of full marks: full-mark attempts over attempts, lowest first", () => {
+  const shares = C.questionShares(types, students);
+  const row = (q) => [q.template.key, q.students, q.studentsFull, q.attempts, q.full];
+  assert.deepEqual(shares.map(row), [
+    ["d2", 1, 0, 1, 0],
+    ["t1", 1, 0, 1, 0],
+    ["d1", 2, 1, 3, 1],
+  ]);
+});
+
+test("the CSV holds the same table: header row, one row a student, the class's totals", () => {
+  const text = C.csvText(types, C.classTable(types, students));
+  assert.ok(text.startsWith("\ufeff"));
+  const lines = text.slice(1).split("\r\n");
+  assert.equal(lines.pop(), "");
+  assert.equal(
+    lines[0],
+    'Student,"Drag, terminal velocity: marks earned","Drag, terminal velocity: marks available",' +
+      '"Drag, terminal velocity: attempts",Two dimensions: marks earned,Two dimensions: marks available,' +
+      "Two dimensions: attempts,Not in the bank yet: marks earned,Not in the bank yet: marks available," +
+      "Not in the bank yet: attempts,Total: marks earned,Total: marks available,Total: attempts",
+  );
+  assert.deepEqual(lines.slice(1), [
+    "amira,4,6,3,0,0,0,0,0,0,4,6,3",
+    "ben,3,4,1,2,3,1,0,0,0,5,7,2",
+    "cy,0,0,0,0,0,0,0,0,0,0,0,0",
+    "Class,7,10,4,2,3,1,0,0,0,9,13,5",
+  ]);
+});
+
+test("a CSV field is quoted when it must be, and a name is never a spreadsheet formula", () => {
+  const table = C.classTable(types, [{ student: '=HYPERLINK("x")', attempts: [] }]);
+  const row = C.csvText(types, table).split("\r\n")[1];
+  assert.ok(row.startsWith('"\'=HYPERLINK(""x"")",0,'), row);
+});

@@ -61,7 +61,7 @@ ABOUT = {
         "momentum before."
     ),
     "momentum-time-reader": (
-        "A car's momentum–time graph, made of straight lines. The gradient of the graph is the "
+        "A car's momentum\u2013time graph, made of straight lines. The gradient of the graph is the "
         "resultant force on the car, and its momentum divided by its mass is its velocity."
     ),
 }

@@ -96,6 +96,7 @@ def test_holding_an_arrow_key_is_announced_at_most_twice_a_second_then_the_final
     page, box = open_explorable(context, base_url, site_dir, name)
     names = sliders_of(box)
     assert names, f"the {name} explorable has no slider"
+    read_outs_changed = 0
     for slider_name, printed_label in names:
         slider = box.get_by_role("slider", name=slider_name, exact=True)
         slider.focus()
@@ -127,10 +128,12 @@ def test_holding_an_arrow_key_is_announced_at_most_twice_a_second_then_the_final
         value = slider.get_attribute("aria-valuetext")
         assert words(f"{printed_label} {value}") in final, f"the final value is not said: {where}"
         after = box.evaluate(READOUTS)
+        # (the parachute's opening time changes no read-out once she is at terminal velocity)
         changed = {label: text for label, text in after.items() if before.get(label) != text}
-        assert changed, f"moving {slider_name!r} changed no read-out: the test proves nothing"
+        read_outs_changed += bool(changed)
         missing = [f"{label} {text}" for label, text in changed.items() if words(f"{label} {text}") not in final]
         assert not missing, f"the final announcement leaves out {missing}: {final!r}"
+    assert read_outs_changed, f"no slider of the {name} explorable changed a read-out: the test proves nothing"
     page.close()
 
 

@@ -281,8 +281,9 @@
     function heard(event) {
       self.heard(event.target);
     }
+    // "input" only: sliders, number boxes and radio buttons all send it for each change (a
+    // number box's "change" on leaving it would repeat what was said)
     container.addEventListener("input", heard);
-    container.addEventListener("change", heard);
     container.addEventListener("click", function (event) {
       if (event.target.closest("button")) self.heard(null);
     });
@@ -321,6 +322,7 @@
       this.start = null;
       this.moved = false;
       if (text && text !== this.element.textContent) this.speak(text);
+      else this.said = readState(this.container); // heard already, in the last announcement
       return;
     }
     if (this.moved) this.say(this.said);

@@ -172,7 +172,7 @@ def test_every_explorable_says_in_a_sentence_or_two_what_it_models():
 
 def test_every_explorable_has_its_script_and_every_script_is_used():
     scripts = {path.stem for path in STATIC.glob("*.js")}
-    assert scripts == set(EXPLORABLES) | {"models", "ui"}
+    assert scripts == set(EXPLORABLES) | {"models", "ui", "announce"}
 
 
 def test_explorable_javascript_fits_the_size_budget():

@@ -50,8 +50,9 @@ DESCRIPTIONS = {
          "which is the resultant force")),
 }
 
-# Loaded on every page with an explorable, before the explorable's own script.
-SHARED_SCRIPTS = ("explorables/models.js", "explorables/ui.js")
+# Loaded on every page with an explorable, before the explorable's own script (announce.js
+# after ui.js, which it extends).
+SHARED_SCRIPTS = ("explorables/models.js", "explorables/ui.js", "explorables/announce.js")
 
 
 class ExplorableDirective(SphinxDirective):

@@ -10,8 +10,6 @@
 
   var SVG_NS = "http://www.w3.org/2000/svg";
   var uid = 0;
-  // the Quantity each slider and number box belongs to, for the announcer
-  var quantityOf = new WeakMap();
 
   function nextId(prefix) {
     uid += 1;
@@ -85,7 +83,6 @@
     var id = nextId("q");
     var self = this;
     this.value = opts.value;
-    this.label = opts.label;
     this.onChange = opts.onChange;
     this.unit = opts.unit;
     this.unitSpoken = opts.unitSpoken || opts.unit;
@@ -122,8 +119,6 @@
       ]),
       this.message,
     ]);
-    quantityOf.set(this.range, this);
-    quantityOf.set(this.number, this);
     this.range.addEventListener("input", function () {
       self.set(Number(self.range.value), self.range);
     });
@@ -182,12 +177,8 @@
   Quantity.prototype.show = function (from) {
     if (from !== this.range) this.range.value = this.value;
     if (from !== this.number) this.number.value = Number(this.value.toPrecision(6));
-    this.range.setAttribute("aria-valuetext", this.spokenValue());
-  };
-
-  /** The value as a screen reader should say it: "70 kilograms". */
-  Quantity.prototype.spokenValue = function () {
-    return (fmt(this.value) + " " + (this.unitSpoken || this.unit || "")).trim();
+    // "70 kilograms": also what the announcer (announce.js) says the slider is at
+    this.range.setAttribute("aria-valuetext", fmt(this.value) + " " + (this.unitSpoken || this.unit || ""));
   };
 
   Quantity.prototype.setRange = function (min, max) {
@@ -204,13 +195,8 @@
     var id = nextId("out");
     this.opts = opts || {};
     this.unit = unit;
-    // data-label: the name the announcer gives the read-out (its text carries the unit)
-    this.output = el("output", {
-      id: id,
-      "aria-live": "off",
-      "aria-labelledby": id + "-label " + id,
-      "data-label": label,
-    });
+    this.output = el("output", { id: id, "aria-live": "off", "aria-labelledby": id + "-label " + id });
+    this.output.setAttribute("data-label", label); // what the announcer calls it (announce.js)
     this.element = el("div", { class: "ex-readout" }, [
       el("span", { id: id + "-label", class: "ex-readout-label" }, label),
       this.output,
@@ -226,136 +212,14 @@
     this.output.textContent = text + (direction ? " " + direction : "");
   };
 
-  /** A paragraph that says in words what the graphs show now. Not live: the Announcer says
-   *  what changed, and a screen reader reads this paragraph in its place. */
+  /** A paragraph that says in words what the graphs show now. Not live: the announcer
+   *  (announce.js) says what changed, and a screen reader reads this paragraph in its place. */
   function Description(className) {
     this.element = el("p", { class: "ex-description " + (className || "") });
   }
 
   Description.prototype.set = function (text) {
     this.element.textContent = window.Notation.joinUnits(text); // numbers never part from their units
-  };
-
-  /* ---- the one live region of an explorable ---- */
-
-  // At most one announcement per ANNOUNCE_GAP_MS while a control moves, and one more (the
-  // whole change since the control was picked up) once it has been still that long.
-  var ANNOUNCE_GAP_MS = 500;
-
-  function now() {
-    return window.performance.now();
-  }
-
-  /** Every visible read-out and announced note of `container`: a Map from element to
-   *  {key, spoken}. Read-outs are <output data-label> ("Terminal velocity 52 m s⁻¹", with
-   *  data-unit when the text has no unit); notes are [data-announce] paragraphs, compared by
-   *  their data-announce key (or their text) and said when they have text. */
-  function readState(container) {
-    var state = new Map();
-    container.querySelectorAll("output[data-label], [data-announce]").forEach(function (node) {
-      if (node.closest("[hidden]")) return;
-      var text = node.textContent.trim();
-      if (node.tagName === "OUTPUT") {
-        if (node.getAttribute("data-value") === "") return; // no value: the notes say why
-        var unit = node.getAttribute("data-unit");
-        text = node.getAttribute("data-label") + " " + text + (unit ? UNIT_SPACE + unitText(unit) : "");
-        state.set(node, { key: text, spoken: text });
-      } else state.set(node, { key: node.getAttribute("data-announce") || text, spoken: text });
-    });
-    return state;
-  }
-
-  /** Polite announcements, in words, of what a reader's change did (issue 28): the control's
-   *  new value ("Mass of the skydiver 70 kilograms") and each read-out that changed. */
-  function Announcer(container) {
-    this.container = container;
-    this.element = el("p", { class: "ex-sr ex-announcer", "aria-live": "polite", "aria-atomic": "true" });
-    this.said = readState(container); // what the reader has heard (or saw on arrival)
-    this.start = null; // the state when the control was picked up
-    this.subject = null;
-    this.moved = false;
-    this.lastInput = -Infinity;
-    this.lastSaid = -Infinity;
-    this.timer = null;
-    var self = this;
-    function heard(event) {
-      self.heard(event.target);
-    }
-    // "input" only: sliders, number boxes and radio buttons all send it for each change (a
-    // number box's "change" on leaving it would repeat what was said)
-    container.addEventListener("input", heard);
-    container.addEventListener("click", function (event) {
-      if (event.target.closest("button")) self.heard(null);
-    });
-  }
-
-  /** A control changed: say so at once if nothing was said lately, else when the gap is up. */
-  Announcer.prototype.heard = function (control) {
-    var quantity = control && quantityOf.get(control);
-    var radio = control && control.type === "radio" && control.labels && control.labels[0];
-    // a button (skydiver's "Go to") names no value: only what changed is said
-    this.subject = quantity || (radio ? { label: radio.textContent, spokenValue: function () {} } : null);
-    this.moved = true;
-    this.lastInput = now();
-    if (!this.start) this.start = this.said;
-    if (!this.timer && now() - this.lastSaid >= ANNOUNCE_GAP_MS) this.say(this.said);
-    this.wake();
-  };
-
-  Announcer.prototype.wake = function () {
-    if (this.timer) return;
-    var self = this;
-    var wait = Math.max(this.lastSaid, this.lastInput) + ANNOUNCE_GAP_MS - now();
-    this.timer = setTimeout(
-      function () {
-        self.tick();
-      },
-      Math.ceil(Math.max(0, wait)) + 1, // a timer may round down: never sooner than the gap
-    );
-  };
-
-  Announcer.prototype.tick = function () {
-    this.timer = null;
-    if (now() - this.lastInput >= ANNOUNCE_GAP_MS) {
-      // still: the final value and everything that changed since the control was picked up
-      var text = this.words(this.start);
-      this.start = null;
-      this.moved = false;
-      if (text && text !== this.element.textContent) this.speak(text);
-      else this.said = readState(this.container); // heard already, in the last announcement
-      return;
-    }
-    if (this.moved) this.say(this.said);
-    this.wake();
-  };
-
-  /** Say the subject's value and what differs from `since`. */
-  Announcer.prototype.say = function (since) {
-    this.moved = false;
-    var text = this.words(since);
-    if (text) this.speak(text);
-  };
-
-  Announcer.prototype.speak = function (text) {
-    this.said = readState(this.container);
-    this.lastSaid = now();
-    this.element.textContent = text;
-  };
-
-  Announcer.prototype.words = function (since) {
-    var parts = [];
-    if (this.subject) parts.push((this.subject.label + " " + (this.subject.spokenValue() || "")).trim());
-    readState(this.container).forEach(function (item, node) {
-      var before = since.get(node);
-      if (item.spoken && (!before || before.key !== item.key)) parts.push(item.spoken);
-    });
-    return window.Notation.joinUnits(
-      parts
-        .map(function (part) {
-          return /[.!?]$/.test(part) ? part : part + ".";
-        })
-        .join(" "),
-    );
   };
 
   /** Give each read-out of a {key: Readout} map the key as its output's name. */
@@ -588,16 +452,6 @@
 
   /* ---- start-up ---- */
 
-  /** Put the directive's "what it models" paragraph under the title, as the panel's description. */
-  function describe(container) {
-    var about = container.querySelector(".ex-about"),
-      panel = container.querySelector(".ex-panel");
-    if (!about || !panel) return;
-    var title = panel.querySelector(".ex-title");
-    panel.insertBefore(about, title ? title.nextSibling : panel.firstChild);
-    panel.setAttribute("aria-describedby", about.id);
-  }
-
   /** Build every container of this explorable once the page has been parsed. */
   function register(name, build) {
     function buildAll() {
@@ -608,9 +462,7 @@
         container.hidden = false; // shown while building, so that it has a width
         try {
           build(container, JSON.parse(source.textContent));
-          describe(container);
-          var panel = container.querySelector(".ex-panel") || container;
-          panel.appendChild(new Announcer(container).element);
+          window.Explorables.speakFor(container); // announce.js: its description and live region
         } catch (error) {
           container.hidden = true; // never show half an explorable; the static figure stays
           throw error;
@@ -633,7 +485,6 @@
     Readout: Readout,
     nameReadouts: nameReadouts,
     Description: Description,
-    Announcer: Announcer,
     Plot: Plot,
     ticks: ticks,
     arrow: arrow,

@@ -130,4 +130,6 @@ def setup(app: Sphinx):
     app.connect("env-merge-info", _merge)
     app.connect("builder-inited", _add_static_path)
     app.connect("html-page-context", _add_page_assets)
-    return {"parallel_read_safe": True, "parallel_write_safe": True, "env_version": 1}
+    # env_version 2: pages load announce.js and carry the "what it models" paragraph (issue 28),
+    # so a build from an older cache re-reads them rather than keep pages without either
+    return {"parallel_read_safe": True, "parallel_write_safe": True, "env_version": 2}

@@ -40,6 +40,32 @@ from .notation import format_number
 #: The explorables a page can show, by the name the directive takes.
 EXPLORABLES = ("skydiver", "collision-lab", "momentum-triangle", "momentum-time-reader")
 
+#: What each explorable models, in a sentence or two of the notes' physics: shown above the
+#: explorable and linked to it by aria-describedby (book/_ext/explorables), so that a reader who
+#: cannot see the graphs knows what the sliders change before moving them.
+ABOUT = {
+    "skydiver": (
+        "A skydiver falls from rest. Her weight stays the same, but the drag grows as her speed grows "
+        "(here as k v²), so the resultant force and the acceleration fall until the drag equals the "
+        "weight: terminal velocity. When the parachute opens the drag is larger than the weight, so the "
+        "resultant force is upwards and she slows, still moving down, to a lower terminal velocity."
+    ),
+    "collision-lab": (
+        "Two trolleys, A and B, collide on a straight track, or are pushed apart from rest. The total "
+        "momentum is the same before and after every interaction; the total kinetic energy is kept only "
+        "in an elastic collision, falls in an inelastic one and rises in an explosion."
+    ),
+    "momentum-triangle": (
+        "Puck P hits puck Q, which is at rest. Momentum is conserved along P's original line and at "
+        "right angles to it, so the momenta of P and Q after, drawn tip to tail, add up to P's "
+        "momentum before."
+    ),
+    "momentum-time-reader": (
+        "A car's momentum\u2013time graph, made of straight lines. The gradient of the graph is the "
+        "resultant force on the car, and its momentum divided by its mass is its velocity."
+    ),
+}
+
 #: Kinds of interaction in the collision lab.
 COLLISION_KINDS = ("elastic", "stick", "explosion", "loss")
 

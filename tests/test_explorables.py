@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 
 from physics_figures import models, scenarios
 from physics_figures.explorables import (
+    ABOUT,
     EXPLORABLES,
     REFUSALS,
     UNREALISTIC_OPENING,
@@ -161,9 +162,17 @@ def test_page_data_are_the_notes_scenarios():
         explorable_data("pendulum")
 
 
+def test_every_explorable_says_in_a_sentence_or_two_what_it_models():
+    """Issue 28: the text a screen reader meets before the sliders (shown above them too)."""
+    assert set(ABOUT) == set(EXPLORABLES)
+    for name, text in ABOUT.items():
+        sentences = [s for s in re.split(r"(?<=\.) ", text) if s]
+        assert 1 <= len(sentences) <= 3 and text.endswith("."), f"{name}: {text!r}"
+
+
 def test_every_explorable_has_its_script_and_every_script_is_used():
     scripts = {path.stem for path in STATIC.glob("*.js")}
-    assert scripts == set(EXPLORABLES) | {"models", "ui"}
+    assert scripts == set(EXPLORABLES) | {"models", "ui", "announce"}
 
 
 def test_explorable_javascript_fits_the_size_budget():

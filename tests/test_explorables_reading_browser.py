@@ -5,7 +5,7 @@
 * a typed value out of range gets a message (and the box shows the value still in use);
 * the skydiver's velocity axis fits the run (a 20 m/s terminal velocity is not drawn on 0-100);
 * annotation labels never sit on a tick label or on the frame;
-* the collision lab has one live region;
+* each explorable has one polite live region, visually hidden;
 * the floating "Back to top" button never covers text or controls.
 """
 
@@ -157,17 +157,28 @@ def test_annotation_labels_never_sit_on_ticks_or_the_frame(site_dir, base_url, b
     assert not bad, bad
 
 
-def test_the_collision_lab_has_one_live_region(site_dir, base_url, browser):
+@pytest.mark.parametrize("name", EXPLORABLES)
+def test_each_explorable_has_one_polite_live_region(site_dir, base_url, browser, name):
+    """Issue 28: one polite region per explorable, hidden from sight but not from screen
+    readers (display: none or visibility: hidden would silence it)."""
     page = browser.new_page(viewport=DESKTOP)
-    page.goto(f"{base_url}/{explorable_page(site_dir, 'collision-lab')}")
-    page.wait_for_selector('.explorable[data-explorable="collision-lab"][data-built]')
-    live = page.evaluate("""() => [...document.querySelectorAll(
-        '.explorable[data-explorable="collision-lab"] *')].filter(el => {
+    page.goto(f"{base_url}/{explorable_page(site_dir, name)}")
+    page.wait_for_selector(f'.explorable[data-explorable="{name}"][data-built]')
+    live = page.evaluate("""name => [...document.querySelectorAll(
+        `.explorable[data-explorable="${name}"] *`)].filter(el => {
           const mode = el.getAttribute('aria-live');
           const role = el.getAttribute('role') || (el.tagName === 'OUTPUT' ? 'status' : '');
           return mode ? mode !== 'off' : ['status', 'alert', 'log'].includes(role);
-        }).map(el => el.className || el.tagName)""")
-    assert len(live) == 1, f"live regions in the collision lab: {live}"
+        }).map(el => {
+          const style = getComputedStyle(el), box = el.getBoundingClientRect();
+          return {name: el.className || el.tagName, mode: el.getAttribute('aria-live'),
+                  shown: style.display !== 'none' && style.visibility !== 'hidden',
+                  size: [box.width, box.height]};
+        })""", name)
+    assert len(live) == 1, f"live regions in the {name} explorable: {live}"
+    region = live[0]
+    assert region["mode"] == "polite" and region["shown"], region
+    assert max(region["size"]) <= 1, f"the live region is visible on the page: {region}"
 
 
 # While "Back to top" shows: what it covers. Text: any visible text node whose box meets the

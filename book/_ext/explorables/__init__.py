@@ -24,7 +24,7 @@ from sphinx import addnodes
 from sphinx.application import Sphinx
 from sphinx.util.docutils import SphinxDirective
 
-from physics_figures.explorables import EXPLORABLES, explorable_data
+from physics_figures.explorables import ABOUT, EXPLORABLES, explorable_data
 
 STATIC = Path(__file__).parent / "static"
 #: What each explorable is and shows, for readers who meet it on paper (the book PDF) and for
@@ -50,8 +50,9 @@ DESCRIPTIONS = {
          "which is the resultant force")),
 }
 
-# Loaded on every page with an explorable, before the explorable's own script.
-SHARED_SCRIPTS = ("explorables/models.js", "explorables/ui.js")
+# Loaded on every page with an explorable, before the explorable's own script (announce.js
+# after ui.js, which it extends).
+SHARED_SCRIPTS = ("explorables/models.js", "explorables/ui.js", "explorables/announce.js")
 
 
 class ExplorableDirective(SphinxDirective):
@@ -66,8 +67,12 @@ class ExplorableDirective(SphinxDirective):
             raise self.error(f"unknown explorable {name!r}: choose one of {', '.join(EXPLORABLES)}")
         # "</" could close the script element early, so it is escaped inside the JSON.
         data = json.dumps(explorable_data(name), separators=(",", ":")).replace("</", "<\\/")
+        # What it models: ui.js moves it under the explorable's title and points the explorable's
+        # aria-describedby at it (the id is unique even with two of one explorable on a page).
+        about_id = f"ex-about-{html.escape(name)}-{self.env.new_serialno('explorable-about')}"
         markup = (
             f'<div class="explorable" data-explorable="{html.escape(name)}" hidden>'
+            f'<p class="ex-hint ex-about" id="{about_id}">{html.escape(ABOUT[name])}</p>'
             f'<script type="application/json" class="explorable-data">{data}</script></div>'
         )
         self.env.explorables_by_doc.setdefault(self.env.docname, set()).add(name)
@@ -125,4 +130,6 @@ def setup(app: Sphinx):
     app.connect("env-merge-info", _merge)
     app.connect("builder-inited", _add_static_path)
     app.connect("html-page-context", _add_page_assets)
-    return {"parallel_read_safe": True, "parallel_write_safe": True, "env_version": 1}
+    # env_version 2: pages load announce.js and carry the "what it models" paragraph (issue 28),
+    # so a build from an older cache re-reads them rather than keep pages without either
+    return {"parallel_read_safe": True, "parallel_write_safe": True, "env_version": 2}

@@ -130,8 +130,19 @@
     var out = {};
     var tbody = el("tbody");
     rows.forEach(function (row) {
-      var before = el("output", { "aria-live": "off", name: row[0] + "-before" });
-      var after = el("output", { "aria-live": "off", name: row[0] + "-after" });
+      // data-label and data-unit: how the announcer names the cell (ui.js)
+      var before = el("output", {
+        "aria-live": "off",
+        name: row[0] + "-before",
+        "data-label": row[1] + " before",
+        "data-unit": row[2],
+      });
+      var after = el("output", {
+        "aria-live": "off",
+        name: row[0] + "-after",
+        "data-label": row[1] + " after",
+        "data-unit": row[2],
+      });
       out[row[0]] = [before, after];
       tbody.appendChild(
         el("tr", {}, [
@@ -157,8 +168,9 @@
     var percent = new X.Readout("Kinetic energy lost", "%", { decimals: 1 });
     var most = new X.Readout("Most that can be lost (sticking together)", "%", { decimals: 1 });
     X.nameReadouts({ percent: percent, most: most });
-    // not a live region: the description below repeats the verdict, and is the one that is read
-    var verdict = el("p", { class: "ex-verdict" });
+    // not a live region: the announcer says it when the set-up turns possible or impossible
+    // (its data-announce key is the refusal, ui.js)
+    var verdict = el("p", { class: "ex-verdict", "data-announce": "possible" });
     var SW = X.widthFor(root),
       MID = SW / 2,
       LONGEST = Math.min(110, SW * 0.17);
@@ -236,6 +248,7 @@
       drawScene(lab, m1, m2);
 
       var text;
+      verdict.setAttribute("data-announce", lab.refusal || "possible");
       if (lab.refusal) {
         verdict.className = "ex-verdict ex-refused";
         verdict.textContent = X.joinUnits(X.fill(data.refusals[lab.refusal], lab.numbers));

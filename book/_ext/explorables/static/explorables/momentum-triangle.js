@@ -56,7 +56,7 @@
       "aria-label": "Momentum before, and the momenta of P and Q after, drawn tip to tail",
     });
     var description = new X.Description();
-    var energy = el("p", { class: "ex-verdict ex-energy" });
+    var energy = el("p", { class: "ex-verdict ex-energy", "data-announce": "" });
 
     root.appendChild(
       el("section", { class: "ex-panel", "aria-labelledby": title.id }, [
@@ -108,6 +108,8 @@
       var kept = (p * p + q.magnitude * q.magnitude) / (pIn * pIn);
       var gains = kept > 1 + 1e-9;
       energy.className = "ex-verdict ex-energy" + (gains ? " ex-refused" : "");
+      // announced (ui.js) when the verdict changes: possible, elastic or impossible
+      energy.setAttribute("data-announce", gains ? "gains" : kept > 1 - 1e-9 ? "elastic" : "possible");
       energy.textContent = X.joinUnits(
         "If P and Q had equal masses, the kinetic energy after would be " +
           fmt(100 * kept) +

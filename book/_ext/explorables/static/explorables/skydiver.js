@@ -84,8 +84,9 @@
         showTime();
       },
     });
-    var note = el("p", { class: "ex-note", "aria-live": "polite" });
-    var warning = el("p", { class: "ex-note ex-warning", "aria-live": "polite" });
+    // not live regions: the explorable's announcer says them when they change (ui.js)
+    var note = el("p", { class: "ex-note", "data-announce": "" });
+    var warning = el("p", { class: "ex-note ex-warning", "data-announce": "" });
 
     var buttons = {};
     var jumps = el(

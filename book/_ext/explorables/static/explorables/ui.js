@@ -104,7 +104,8 @@
     });
     var unitLabel = opts.unit ? el("span", { class: "ex-unit", "aria-hidden": "true" }, unitText(opts.unit)) : null;
     // a typed value out of range is not dropped in silence: this says what the box takes
-    this.message = el("p", { class: "ex-range-message", id: id + "-message" });
+    // data-announce: the announcer says it too, when it appears
+    this.message = el("p", { class: "ex-range-message", id: id + "-message", "data-announce": "" });
     this.message.hidden = true;
     this.number.setAttribute("aria-describedby", id + "-message");
     this.element = el("div", { class: "ex-quantity" }, [
@@ -176,6 +177,7 @@
   Quantity.prototype.show = function (from) {
     if (from !== this.range) this.range.value = this.value;
     if (from !== this.number) this.number.value = Number(this.value.toPrecision(6));
+    // "70 kilograms": also what the announcer (announce.js) says the slider is at
     this.range.setAttribute("aria-valuetext", fmt(this.value) + " " + (this.unitSpoken || this.unit || ""));
   };
 
@@ -194,6 +196,7 @@
     this.opts = opts || {};
     this.unit = unit;
     this.output = el("output", { id: id, "aria-live": "off", "aria-labelledby": id + "-label " + id });
+    this.output.setAttribute("data-label", label); // what the announcer calls it (announce.js)
     this.element = el("div", { class: "ex-readout" }, [
       el("span", { id: id + "-label", class: "ex-readout-label" }, label),
       this.output,
@@ -209,21 +212,14 @@
     this.output.textContent = text + (direction ? " " + direction : "");
   };
 
-  /** A paragraph read to screen readers a moment after the reader stops moving things. */
+  /** A paragraph that says in words what the graphs show now. Not live: the announcer
+   *  (announce.js) says what changed, and a screen reader reads this paragraph in its place. */
   function Description(className) {
-    this.element = el("p", { class: "ex-description " + (className || ""), "aria-live": "polite" });
-    this.timer = null;
+    this.element = el("p", { class: "ex-description " + (className || "") });
   }
 
   Description.prototype.set = function (text) {
-    var node = this.element;
-    // the visible text updates at once; the live region is refreshed when input pauses
-    node.setAttribute("aria-busy", "true");
-    node.textContent = window.Notation.joinUnits(text); // numbers never part from their units
-    clearTimeout(this.timer);
-    this.timer = setTimeout(function () {
-      node.setAttribute("aria-busy", "false");
-    }, 400);
+    this.element.textContent = window.Notation.joinUnits(text); // numbers never part from their units
   };
 
   /** Give each read-out of a {key: Readout} map the key as its output's name. */
@@ -466,6 +462,7 @@
         container.hidden = false; // shown while building, so that it has a width
         try {
           build(container, JSON.parse(source.textContent));
+          window.Explorables.speakFor(container); // announce.js: its description and live region
         } catch (error) {
           container.hidden = true; // never show half an explorable; the static figure stays
           throw error;

@@ -157,29 +157,38 @@ def _graph(folder: Path, name: str, graph, last: dict, drawn: dict) -> str:
     return path.read_text(encoding="utf-8")
 
 
-def builder_data(topic, graph_svg) -> dict:
-    """What the builder reads: the types, the templates and every reserve variant's pages.
-    ``graph_svg(name, graph)`` gives a graph's inline SVG."""
+def builder_index(topic) -> dict:
+    """What the builder draws from: the topic's types (title, exam count) and every bank
+    template (key, type, title, marks, one-wording flag, the reserve's indices), in the bank's
+    order; and the data line and mark codes every sheet and key prints."""
     from physics_figures.worksheets import DATA_LINE, bank_templates, template_marks
-    from physics_figures.worksheets.html import key_body, sheet_body
     from physics_figures.worksheets.latex import KEY_CODES
 
-    templates, variants = [], {}
-    for template in bank_templates(topic):
-        templates.append({"key": template.key, "type": template.type, "title": template.title,
-                          "marks": template_marks(template), "oneWording": bool(template.one_wording),
-                          "reserve": list(template.reserve_variants)})
-        variants[template.key] = {}
+    templates = [{"key": template.key, "type": template.type, "title": template.title,
+                  "marks": template_marks(template), "oneWording": bool(template.one_wording),
+                  "reserve": list(template.reserve_variants)} for template in bank_templates(topic)]
+    types = [{"key": kind.key, "title": kind.title, "examCount": kind.exam_count} for kind in topic.types]
+    return {"topic": topic.name, "dataLine": DATA_LINE, "keyCodes": KEY_CODES, "types": types,
+            "templates": templates}
+
+
+def builder_data(topic, graph_svg) -> dict:
+    """The index and, for each template's reserve variant, its parts (label, prompt, marks)
+    and its sheet and key as HTML. ``graph_svg(name, graph)`` gives a graph's inline SVG."""
+    from physics_figures.worksheets.html import key_body, sheet_body
+
+    data = builder_index(topic)
+    data["variants"] = {}
+    for template in (topic.by_key[entry["key"]] for entry in data["templates"]):
+        pages = data["variants"][template.key] = {}
         for index in template.reserve_variants:
             question = template.variant(index)
             svg = "" if question.graph is None else graph_svg(f"{template.key}-{index}", question.graph)
-            variants[template.key][str(index)] = {
+            pages[str(index)] = {
                 "parts": [{"label": question.label(i), "prompt": part.prompt, "marks": marks}
                           for i, (part, marks) in enumerate(zip(question.parts, question.part_marks(), strict=True))],
                 "sheet": sheet_body(question, svg), "key": key_body(question)}
-    types = [{"key": kind.key, "title": kind.title, "examCount": kind.exam_count} for kind in topic.types]
-    return {"topic": topic.name, "dataLine": DATA_LINE, "keyCodes": KEY_CODES, "types": types,
-            "templates": templates, "variants": variants}
+    return data
 
 
 def write_data(app, exception):

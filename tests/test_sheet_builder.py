@@ -25,8 +25,8 @@ from physics_figures.worksheets.latex import ecf_note, wrong_answers
 ROOT = Path(__file__).resolve().parents[1]
 RUNNER = ROOT / "tests" / "js" / "sheet_plan.js"
 sys.path.insert(0, str(ROOT / "book" / "_ext"))
-from questions.sheet_builder import builder_index, inline_svg  # noqa: E402
-from test_questions_engine import node  # noqa: E402
+from questions.sheet_builder import builder_index, inline_svg
+from test_questions_engine import node
 
 TOPIC = topics.load("physics_figures.bank")
 TYPES = [kind.key for kind in TOPIC.types]

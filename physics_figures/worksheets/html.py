@@ -1,4 +1,3 @@
-# ruff: noqa: RUF001  (typeset text: true minus, times, superscripts)
 """A question as the teachers' sheet builder prints it, in HTML: the sheet's body (text,
 graph, each part with its working space or answer lines and its marks as [n]) and the key's
 body (per part the answer with its unit and what is accepted, the working, the ecf note and
@@ -17,7 +16,14 @@ from html import escape
 from .. import textformat
 from ..notation import join_units
 from ..questions import OPTION_LETTERS, Question, unit_text
-from .latex import LINES_PER_MARK, WORKING_CM_PER_MARK, accept_note, ecf_note, wrong_answers, working_text
+from .latex import (
+    LINES_PER_MARK,
+    WORKING_CM_PER_MARK,
+    accept_note,
+    ecf_note,
+    working_text,
+    wrong_answers,
+)
 
 #: What a sheet's [n] and a key's lines are marked up with, for the builder's stylesheet
 #: (sheet-builder.css) and its tests.
@@ -89,8 +95,8 @@ def _key_part(question: Question, index: int, marks: int) -> str:
     if part.kind == "explain":
         return (f'<p class="sb-key-answer"><strong>{plain(question.label(index))}Model answer</strong> '
                 f"{_marks(marks)}</p><p>{rich(part.model_answer)}</p>")
-    out = [f'<p class="sb-key-answer"><strong>{plain(label + part.prompt)} = {plain(part.answer_text)}</strong>'
-           f"{plain(accept_note(part))} {_marks(marks)}</p>"]
+    out = [(f'<p class="sb-key-answer"><strong>{plain(label + part.prompt)} = {plain(part.answer_text)}</strong>'
+           f"{plain(accept_note(part))} {_marks(marks)}</p>")]
     if part.working:
         out.append(f"<p>{plain(working_text(part))}</p>")
     note = ecf_note(question, index)

@@ -10,10 +10,10 @@ it has been opened, outside the first install). It holds, from physics_figures, 
 (titles, exam counts) and every bank template (key, type, title, marks, one-wording flag, the
 reserve's indices) with, for each reserve variant, its parts (label, prompt, marks), its sheet
 body and key body as HTML (physics_figures.worksheets.html: the PDF key's information) and its
-graph as inline SVG. static/sheet-builder.js repeats physics_figures.worksheets.plan exactly (the
-FNV-1a draws and the templates' subset-sum) and only assembles the pages: it computes no physics
-and no key. The file is a script (a <script> element loads it from file:// too, where fetch()
-cannot).
+graph as inline SVG. static/sheet-builder.js repeats physics_figures.worksheets.plan exactly
+(the FNV-1a draws and the templates' subset-sum); static/sheet-builder-page.js only assembles
+the pages: it computes no physics and no key. The file is a script (a <script> element loads it
+from file:// too, where fetch() cannot).
 
 Working every reserve variant out and drawing 76 graphs takes most of a minute, so, as for the
 site's variants (variants.py), the last build's inputs and output are recorded beside the site:
@@ -108,7 +108,8 @@ def fill(app, doctree, docname):
 def add_assets(app, pagename, templatename, context, doctree):
     if pagename in store.docs(app.env, DIRECTIVE):
         app.add_css_file("sheet-builder.css")
-        app.add_js_file("sheet-builder.js", loading_method="defer")
+        for script in ("sheet-builder.js", "sheet-builder-page.js"):  # the draws, then the page
+            app.add_js_file(script, loading_method="defer")
 
 
 # ------------------------------------------------------------------------- the data file

@@ -14,8 +14,8 @@ variants of each template (:class:`Kit`), and the end-of-topic test leaves out a
 whose reserve the worksheets used up.
 
 The order of templates and variants is drawn with :func:`seeded_order`, a 32-bit FNV-1a
-hash of the seed and the key, which the teachers' sheet builder (book/_ext/teachers,
-sheet-builder.js) computes the same way: the builder and this module give the same sheets.
+hash of the seed and the key, which the teachers' sheet builder (book/_ext/questions/sheet_builder.py,
+static/sheet-builder.js) computes the same way: the builder and this module give the same sheets.
 
 :mod:`.latex` writes a version's question sheet and answer key as standalone LaTeX, and
 :mod:`.build` typesets them with xelatex. :mod:`.moodle` exports the bank as Moodle XML.

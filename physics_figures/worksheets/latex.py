@@ -30,6 +30,14 @@ LINES_PER_MARK = 2
 #: The key prints a wrong answer to this many significant figures (as the marker reads it).
 MISTAKE_SIG_FIGS = 3
 
+#: What a key says of its codes (the PDF key's and the sheet builder's), as 9702 mark schemes use
+#: them: a calculation step C1 then the answer A1 (9702/21/O/N/16 Q2(b)(ii): "E = V / d … C1 … A1
+#: [2]"; 9702/21/M/J/16 Q3(b)(ii): Δp C1, then F = Δp / Δt A1).
+KEY_CODES = ("Mark codes as in Cambridge mark schemes: C1 a calculation step (given when the final answer "
+             "is right), M1 method, A1 accuracy (the answer, to 2 or more significant figures), B1 an "
+             "independent mark; ecf: error carried forward (a later part worked correctly from the student's "
+             "own wrong earlier answer earns its marks; only the first error is penalised).")
+
 PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 % Written by physics_figures.worksheets: do not edit (run the command again).
 \usepackage[a4paper,hmargin=2.2cm,top=2.2cm,bottom=2.4cm]{geometry}
@@ -285,6 +293,28 @@ def wrong_answers(part) -> list[tuple[str, str, str]]:
     return rows
 
 
+def accept_note(part) -> str:
+    """What the key accepts beside a numeric or graph part's answer (plain text, the PDF key's
+    and the sheet builder's): " (accept 2 or more significant figures)", or a reading's band."""
+    if part.kind == "graph":
+        low, high = part.band
+        return (f" (read from the graph: accept {format_number(low, decimals=_places(part))} to "
+                f"{format_number(high, decimals=_places(part))})")
+    if part.readings:  # worked from readings: what readings within half a small square give
+        low, high = part.band
+        return (f" (accept {part.min_sig_figs} or more significant figures; from readings of the "
+                f"graph to half a small square, {format_number(low, 3)} to {format_number(high, 3)})")
+    return f" (accept {part.min_sig_figs} or more significant figures)"
+
+
+def working_text(part) -> str:
+    """"Working: F = 1110 N; a = 0.694 m s⁻²." (plain text), or "" for a part without steps."""
+    if not part.working:
+        return ""
+    return "Working: " + "; ".join(f"{step.name} = {_value_with_unit(step.value, step.sig_figs, step.unit)}"
+                                   for step in part.working) + "."
+
+
 def _key_part(question: Question, index: int, marks: int) -> list[str]:
     part, label = question.parts[index], question.label(index) or "Answer "
     out = []
@@ -302,21 +332,9 @@ def _key_part(question: Question, index: int, marks: int) -> list[str]:
                    f"{rich(part.model_answer)}")
         return out
     answer = tex(part.answer_text)
-    if part.kind == "graph":
-        low, high = part.band
-        accept = (f" (read from the graph: accept {format_number(low, decimals=_places(part))} to "
-                  f"{format_number(high, decimals=_places(part))})")
-    else:
-        accept = f" (accept {part.min_sig_figs} or more significant figures)"
-        if part.readings:  # worked from readings: what readings within half a small square give
-            low, high = part.band
-            accept = (f" (accept {part.min_sig_figs} or more significant figures; from readings of the "
-                      f"graph to half a small square, {format_number(low, 3)} to {format_number(high, 3)})")
-    out.append(f"\\textbf{{{tex(label)}{tex(part.prompt)} = {answer}}}{tex(accept)} \\hfill [{marks}]")
+    out.append(f"\\textbf{{{tex(label)}{tex(part.prompt)} = {answer}}}{tex(accept_note(part))} \\hfill [{marks}]")
     if part.working:
-        steps = "; ".join(f"{step.name} = {_value_with_unit(step.value, step.sig_figs, step.unit)}"
-                          for step in part.working)
-        out.append("Working: " + tex(steps) + ".")
+        out.append(tex(working_text(part)))
     note = ecf_note(question, index)
     if note:
         out.append("\\emph{" + tex(note) + "}")
@@ -352,11 +370,7 @@ def answer_key(sheet: Sheet, version: Version) -> str:
         r"{\raggedright\sffamily\bfseries\LARGE " + tex(sheet.title) + r"\par}",
         r"\vspace{4pt}{\sffamily\Large Answer key, version " + version.letter + r"\par}",
         r"\vspace{6pt}",
-        tex(f"Total: {version.marks} marks. Seed {sheet.seed}. Mark codes as in Cambridge mark schemes: "
-            "C1 a calculation step (given when the final answer is right), M1 method, A1 accuracy "
-            "(the answer, to 2 or more significant figures), B1 an independent mark; ecf: error "
-            "carried forward (a later part worked correctly from the student's own wrong earlier "
-            "answer earns its marks; only the first error is penalised). " + DATA_LINE),
+        tex(f"Total: {version.marks} marks. Seed {sheet.seed}. {KEY_CODES} {DATA_LINE}"),
     ]
     for number, item in enumerate(version.items, start=1):
         question = item.question

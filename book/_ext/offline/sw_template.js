@@ -11,8 +11,10 @@ var PRECACHE = __PRECACHE__;
 // replaces the kept one); a new build of the pages drops them with the old pages.
 var OPENED = "dynamics-opened-" + VERSION;
 // Under the site's root (the worker's scope): the downloads offline/__init__.py leaves out of
-// PRECACHE (NOT_PRECACHED), but the zip: the whole book, to keep on disk, not in a cache.
-var KEPT_WHEN_OPENED = /^(pdf|teachers)\/[^/]+\.(pdf|xml)$/;
+// PRECACHE (NOT_PRECACHED), but the zip: the whole book, to keep on disk, not in a cache. The
+// sheet builder's data (teachers/sheet-data.js, several hundred KB) is kept the same way, once
+// a teacher has made sheets online; and the README its page links.
+var KEPT_WHEN_OPENED = /^(pdf|teachers)\/[^/]+\.(pdf|xml|js|txt)$/;
 
 self.addEventListener("install", function (event) {
   // cache: "reload" skips the browser's HTTP cache: a host that lets files be reused for a

@@ -9,6 +9,8 @@
 * answer_key.py: ``answer-key``, every answer and mark scheme of the book;
 * progress.py: ``practice-progress``, Your practice by question type;
 * class_page.py: ``class-progress``, the class at a glance from the students' exported files;
+* sheet_builder.py: ``sheet-builder``, the teachers' worksheets made in the browser, and the
+  teachers-only data it reads (the reserve variants' sheets and keys);
 * try_similar.py: ``try-similar``, a worked example's link to a question of its type;
 * book_map.py: ``book-map``, the landing page's map of parts, explorables and questions;
 * self_test.py: the definitions self-test's bar;
@@ -32,6 +34,7 @@ from . import (
     progress,
     rules_table,
     self_test,
+    sheet_builder,
     store,
     try_similar,
     variants,
@@ -75,7 +78,7 @@ def setup(app):
     app.add_node(directive.worked_answer, html=(form.visit_worked_answer, form.depart_worked_answer))
     app.add_node(directive.graph_view, html=(form.visit_graph_view, form.depart_graph_view))
     app.add_directive("question", directive.QuestionDirective)
-    for job in (answer_key, progress, try_similar, book_map, self_test, rules_table, class_page):
+    for job in (answer_key, progress, try_similar, book_map, self_test, rules_table, class_page, sheet_builder):
         job.setup(app)
     app.connect("config-inited", add_static_path)
     app.connect("env-purge-doc", store.purge)

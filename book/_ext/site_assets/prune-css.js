@@ -12,7 +12,7 @@ const csso = require(path.join(process.cwd(), "node_modules", "csso"));
 // Classes a script builds from pieces, or a state the theme sets on <html>/<body>, that no
 // page or script names whole: kept by pattern.
 const SAFELIST = {
-  standard: [/^q-/, /^pp-/, /^ex-/, /^offline-/],
+  standard: [/^q-/, /^pp-/, /^ex-/, /^offline-/, /^sb-/], // sb-: the sheet builder's data file
   // a selector of pseudo-classes alone (the theme's :focus-visible ring) names nothing to find
   greedy: [/data-theme/, /data-mode/, /prefers-color-scheme/, /focus/],
 };

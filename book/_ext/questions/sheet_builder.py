@@ -1,0 +1,230 @@
+"""The teachers' sheet builder: worksheets and keys made in the browser, no Python, no server::
+
+    ```{sheet-builder}
+    ```
+
+The page holds the form (question types, total marks, versions, seed). When the HTML build
+finishes, this module writes the teachers-only data the builder reads, ``teachers/sheet-data.js``
+(not under _static: the site's own pages never load it, and the service worker keeps it only once
+it has been opened, outside the first install). It holds, from physics_figures, the topic's types
+(titles, exam counts) and every bank template (key, type, title, marks, one-wording flag, the
+reserve's indices) with, for each reserve variant, its parts (label, prompt, marks), its sheet
+body and key body as HTML (physics_figures.worksheets.html: the PDF key's information) and its
+graph as inline SVG. static/sheet-builder.js repeats physics_figures.worksheets.plan exactly
+(the FNV-1a draws and the templates' subset-sum); static/sheet-builder-page.js only assembles
+the pages: it computes no physics and no key. The file is a script (a <script> element loads it
+from file:// too, where fetch() cannot).
+
+Working every reserve variant out and drawing 76 graphs takes most of a minute, so, as for the
+site's variants (variants.py), the last build's inputs and output are recorded beside the site:
+the same inputs and the file as written redo nothing, and a graph whose numbers and drawing code
+are unchanged is not drawn again.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from html import escape
+from pathlib import Path
+
+from docutils import nodes
+from fresh_figures import uses_modules  # book/_ext: re-read the page when the bank changes
+from sphinx.util.docutils import SphinxDirective
+
+from . import store
+from .variants import _code, _sha256, _unchanged, _write
+
+DIRECTIVE = "sheet-builder"
+#: Beside the PDFs of the kit (make worksheets), relative to the site's root.
+DATA_FILE = "teachers/sheet-data.js"
+#: The source's README, which the page links for the command line (the site has no other copy).
+README = "teachers/README.txt"
+#: What the data file is made from besides the topics: the sheets' HTML and its helpers, the
+#: draws (physics_figures.worksheets), the graphs and the sketches.
+SOURCES = ("physics_figures.worksheets", "physics_figures.worksheets.html", store.GRAPH_MODULE,
+           "physics_figures.figures.sketches")
+NEEDS_BROWSER = ("The sheet builder runs in your web browser: open this page in the web version of the book, "
+                 "with JavaScript on, to use it.")
+DEFAULTS = {"marks": 30, "versions": 3, "seed": 2027}
+
+
+class sheet_builder(nodes.General, nodes.Element):
+    """The builder's form (HTML); a note elsewhere."""
+
+
+class SheetBuilderDirective(SphinxDirective):
+    def run(self):
+        store.docs(self.env, DIRECTIVE).add(self.env.docname)
+        uses_modules(self.env, *store.bank_modules(self.config))
+        topic = store.topics(self.config)[0]
+        types = [{"key": kind.key, "title": kind.title} for kind in topic.types]
+        return [sheet_builder(types=types)]
+
+
+#: The form, the status line and where the sheets go (hidden until the script runs). Every
+#: control has its label; Enter in a field or the button makes the sheets (a form's submit).
+PAGE = """\
+<div class="sb" data-src="{src}">
+<p class="sb-needs-js">{needs}</p>
+<form class="sb-form" hidden novalidate>
+<fieldset class="sb-types"><legend>Question types</legend>
+{types}
+</fieldset>
+<div class="sb-numbers">
+<label for="sb-marks">Total marks <input type="number" id="sb-marks" name="marks" min="1" step="1" value="{marks}"
+ inputmode="numeric"></label>
+<label for="sb-versions">Versions (1 to 26) <input type="number" id="sb-versions" name="versions" min="1" max="26"
+ step="1" value="{versions}" inputmode="numeric"></label>
+<label for="sb-seed">Seed <input type="number" id="sb-seed" name="seed" min="0" step="1" value="{seed}"
+ inputmode="numeric"></label>
+</div>
+<div class="sb-buttons"><button type="submit" class="sb-make">Make the sheets</button>
+<button type="button" class="sb-print" hidden>Print</button></div>
+<p class="sb-status" role="status" aria-live="polite"></p>
+</form>
+<div class="sb-output" hidden></div>
+</div>
+"""
+
+
+def visit_sheet_builder(self, node):
+    types = "\n".join(
+        f'<label class="sb-type"><input type="checkbox" name="types" value="{escape(kind["key"])}" checked> '
+        f'{escape(kind["title"])}</label>' for kind in node["types"])
+    depth = self.builder.current_docname.count("/")  # the data file is at the site's root
+    self.body.append(PAGE.format(src=escape("../" * depth + DATA_FILE), needs=escape(NEEDS_BROWSER), types=types,
+                                 **DEFAULTS))
+    raise nodes.SkipNode
+
+
+def fill(app, doctree, docname):
+    """Outside HTML the page's text says the builder is on the website."""
+    if app.builder.format != "html":
+        for node in list(doctree.findall(sheet_builder)):
+            node.replace_self(nodes.paragraph(text=NEEDS_BROWSER))
+
+
+def add_assets(app, pagename, templatename, context, doctree):
+    if pagename in store.docs(app.env, DIRECTIVE):
+        app.add_css_file("sheet-builder.css")
+        for script in ("sheet-builder.js", "sheet-builder-page.js"):  # the draws, then the page
+            app.add_js_file(script, loading_method="defer")
+
+
+# ------------------------------------------------------------------------- the data file
+
+
+def record_path(outdir: Path) -> Path:
+    """The last build's inputs and output, beside the site (no page loads it)."""
+    return outdir.parent / f"{outdir.name}-sheet-builder.json"
+
+
+def graphs_folder(outdir: Path) -> Path:
+    """The graphs drawn for the data file, kept beside the site for the next build."""
+    return outdir.parent / f"{outdir.name}-sheet-builder-graphs"
+
+
+_XML_HEAD = re.compile(r"<\?xml[^>]*>|<!DOCTYPE[^>]*>|<metadata>.*?</metadata>|<!--.*?-->", re.DOTALL)
+_ID = re.compile(r'\sid="([^"]+)"')
+
+
+def inline_svg(svg: str, *, prefix: str, alt: str) -> str:
+    """A graph's SVG file as an element of a page: no XML prologue or metadata, no line breaks
+    inside paths, the ids nothing refers to dropped and the others made unique to this graph
+    (several graphs share a page), sized by the page (viewBox kept) and named by its alt text."""
+    svg = _XML_HEAD.sub("", svg)
+    svg = re.sub(r"\s*\n\s*", " ", svg).replace("> <", "><").strip()
+    used = set(re.findall(r'(?:href="#|url\(#)([^")]+)', svg))
+    svg = _ID.sub(lambda m: f' id="{prefix}{m[1]}"' if m[1] in used else "", svg)
+    svg = re.sub(r'(href="#|url\(#)([^")]+)', lambda m: m[1] + prefix + m[2], svg)
+    return re.sub(r'<svg\b[^>]*?\swidth="[^"]*"\s+height="[^"]*"', lambda m: re.sub(
+        r'\s(?:width|height)="[^"]*"', "", m[0]) + f' role="img" aria-label="{escape(alt)}"', svg, count=1)
+
+
+def _graph(folder: Path, name: str, graph, last: dict, drawn: dict) -> str:
+    """A variant's graph as inline SVG, drawn again only when its numbers changed."""
+    numbers = _sha256(repr(graph).encode())
+    path = folder / f"{name}.svg"
+    before = last.get(name, {})
+    if not (before.get("numbers") == numbers and path.is_file() and _sha256(path.read_bytes()) == before.get("svg")):
+        from physics_figures.figures.question_graph import question_graph
+
+        figure = question_graph(graph)
+        text = inline_svg(figure.svg(), prefix=f"{name}-", alt=figure.alt)
+        figure.figure.clear()  # matplotlib keeps figures alive until cleared
+        before = {"numbers": numbers, "svg": _write(path, text.encode())}
+    drawn[name] = before
+    return path.read_text(encoding="utf-8")
+
+
+def builder_index(topic) -> dict:
+    """What the builder draws from: the topic's types (title, exam count) and every bank
+    template (key, type, title, marks, one-wording flag, the reserve's indices), in the bank's
+    order; and the data line and mark codes every sheet and key prints."""
+    from physics_figures.worksheets import DATA_LINE, bank_templates, template_marks
+    from physics_figures.worksheets.latex import KEY_CODES
+
+    templates = [{"key": template.key, "type": template.type, "title": template.title,
+                  "marks": template_marks(template), "oneWording": bool(template.one_wording),
+                  "reserve": list(template.reserve_variants)} for template in bank_templates(topic)]
+    types = [{"key": kind.key, "title": kind.title, "examCount": kind.exam_count} for kind in topic.types]
+    return {"topic": topic.name, "dataLine": DATA_LINE, "keyCodes": KEY_CODES, "types": types,
+            "templates": templates}
+
+
+def builder_data(topic, graph_svg) -> dict:
+    """The index and, for each template's reserve variant, its parts (label, prompt, marks)
+    and its sheet and key as HTML. ``graph_svg(name, graph)`` gives a graph's inline SVG."""
+    from physics_figures.worksheets.html import key_body, sheet_body
+
+    data = builder_index(topic)
+    data["variants"] = {}
+    for template in (topic.by_key[entry["key"]] for entry in data["templates"]):
+        pages = data["variants"][template.key] = {}
+        for index in template.reserve_variants:
+            question = template.variant(index)
+            svg = "" if question.graph is None else graph_svg(f"{template.key}-{index}", question.graph)
+            pages[str(index)] = {
+                "parts": [{"label": question.label(i), "prompt": part.prompt, "marks": marks}
+                          for i, (part, marks) in enumerate(zip(question.parts, question.part_marks(), strict=True))],
+                "sheet": sheet_body(question, svg), "key": key_body(question)}
+    return data
+
+
+def write_data(app, exception):
+    """Write teachers/sheet-data.js, unless the last build wrote it from the same inputs."""
+    if exception or app.builder.format != "html" or not store.docs(app.env, DIRECTIVE):
+        return
+    outdir = Path(app.outdir)
+    target = outdir / DATA_FILE
+    record_file = record_path(outdir)
+    last = json.loads(record_file.read_text()) if record_file.exists() else {}
+    modules = [*store.bank_modules(app.config), *SOURCES]
+    inputs = _code(app, modules, (Path(__file__),))
+    readme = Path(app.confdir) / "README.md"
+    if readme.is_file():  # a small copy, redone only when it changed
+        (outdir / README).parent.mkdir(parents=True, exist_ok=True)
+        _write(outdir / README, readme.read_bytes())
+    if last.get("inputs") == inputs and _unchanged(outdir, last.get("files", {})):
+        return
+    graph_code = _code(app, [store.GRAPH_MODULE], (Path(__file__),))
+    last_graphs = last.get("graphs", {}) if last.get("graph_code") == graph_code else {}
+    folder = graphs_folder(outdir)
+    folder.mkdir(parents=True, exist_ok=True)
+    drawn: dict = {}
+    data = builder_data(store.topics(app.config)[0],
+                        lambda name, graph: _graph(folder, name, graph, last_graphs, drawn))
+    payload = json.dumps(data, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
+    target.parent.mkdir(parents=True, exist_ok=True)
+    files = {DATA_FILE: _write(target, f"window.SheetBuilderData = {payload};\n".encode())}
+    record_file.write_text(json.dumps({"inputs": inputs, "files": files, "graph_code": graph_code,
+                                       "graphs": drawn}, indent=1, sort_keys=True))
+
+
+def setup(app):
+    app.add_node(sheet_builder, html=(visit_sheet_builder, None))
+    app.add_directive(DIRECTIVE, SheetBuilderDirective)
+    app.connect("doctree-resolved", fill)
+    app.connect("html-page-context", add_assets)
+    app.connect("build-finished", write_data)

@@ -1,0 +1,29 @@
+// Runs the sheet builder's port of physics_figures.worksheets.plan (sheet-builder.js) on cases
+// read as JSON from stdin: {data, cases: [{types, marks, versions, seed}]} for plans, {hashes:
+// [text]} for FNV-1a. Prints, per case, the plan's template keys and variants per version, or
+// the error's message, as JSON for tests/test_sheet_builder.py to compare with Python's.
+"use strict";
+const path = require("node:path");
+const S = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "sheet-builder.js"));
+
+let input = "";
+process.stdin.on("data", (chunk) => (input += chunk));
+process.stdin.on("end", () => {
+  const request = JSON.parse(input);
+  const out = {
+    hashes: (request.hashes || []).map((text) => S.fnv1a(text)),
+    plans: (request.cases || []).map((c) => {
+      try {
+        const sheet = S.plan(request.data, c);
+        return {
+          title: sheet.title,
+          versions: sheet.versions.map((v) => v.items.map((item) => [item.template.key, item.variant])),
+        };
+      } catch (error) {
+        if (!(error instanceof S.SheetError)) throw error;
+        return { error: error.message };
+      }
+    }),
+  };
+  process.stdout.write(JSON.stringify(out));
+});

@@ -1,0 +1,224 @@
+"""The teachers' sheet builder ("For teachers", Make your own) as a teacher meets it, in Chromium.
+
+For a chosen set of types, 30 marks, 3 versions and seed 2027 (issue 26's "Done when"):
+- printed to PDF, the pages are A4, each version's sheet and key start their own pages (A's
+  sheet, A's key, B's sheet...), each sheet's text holds every part's marks [n] in order and
+  the total, and each key the total;
+- the questions are the command line's: version by version, the templates and variants and
+  the text on the page are physics_figures.worksheets.plan()'s, and version A's numbers are
+  those of the LaTeX sheet the command line writes;
+- it works offline after one visit that made sheets (the service worker keeps the data), and
+  from the built folder opened as files;
+- a keyboard alone makes the sheets; axe finds nothing, light or dark; a request that cannot
+  be made says why and names the nearest totals.
+Everything expected is computed here from physics_figures."""
+
+from __future__ import annotations
+
+import re
+import subprocess
+
+import pytest
+from browser import axe_violations, serve_site
+
+from physics_figures import topics
+from physics_figures.worksheets import plan, select
+from physics_figures.worksheets.latex import question_sheet
+
+pytestmark = [pytest.mark.site, pytest.mark.browser]
+
+PAGE = "book/teachers.html"
+TYPES = ["drag", "momentum-line", "two-d"]
+MARKS, VERSIONS, SEED = 30, 3, 2027
+TOPIC = topics.load("physics_figures.bank")
+
+
+@pytest.fixture(scope="module")
+def expected():
+    """The command line's sheet for the same choices."""
+    templates = select(types=TYPES, topic=TOPIC)
+    title = "Worksheet: " + "; ".join(TOPIC.type(t).title for t in TYPES)
+    return plan("worksheet", title, templates, versions=VERSIONS, seed=SEED, marks=MARKS, topic=TOPIC)
+
+
+@pytest.fixture(scope="module")
+def base_url(site_dir):
+    with serve_site(site_dir, cache_control="no-store") as url:
+        yield url
+
+
+def make_sheets(page, *, types=TYPES, marks=MARKS, versions=VERSIONS, seed=SEED, wait=True):
+    page.locator(".sb-form").wait_for()
+    for box in page.locator('.sb-form input[name="types"]').all():
+        box.set_checked(box.get_attribute("value") in types)
+    page.fill("#sb-marks", str(marks))
+    page.fill("#sb-versions", str(versions))
+    page.fill("#sb-seed", str(seed))
+    page.click(".sb-make")
+    if wait:
+        page.locator(".sb-sheet").nth(versions - 1).wait_for(timeout=60_000)
+
+
+def words(text: str) -> str:
+    return re.sub(r"\s+", " ", text.replace("\u00a0", " ").replace("\u202f", " ")).strip()
+
+
+def html_text(html: str) -> str:
+    return words(re.sub(r"<[^>]+>", "", html).replace("&amp;", "&").replace("&lt;", "<").replace("&gt;", ">"))
+
+
+def builder_questions(page) -> list[list[dict]]:
+    return page.evaluate("""() => [...document.querySelectorAll('.sb-sheet')].map(sheet =>
+        [...sheet.querySelectorAll('.sb-question')].map(q => ({
+            key: q.dataset.question, variant: Number(q.dataset.variant),
+            text: q.querySelector('.sb-text').innerText})))""")
+
+
+def test_the_builder_gives_the_command_line_s_questions(browser, base_url, expected):
+    page = browser.new_page()
+    page.goto(f"{base_url}/{PAGE}")
+    make_sheets(page)
+    shown = builder_questions(page)
+    assert len(shown) == VERSIONS
+    for version, questions in zip(expected.versions, shown, strict=True):
+        assert [(q["key"], q["variant"]) for q in questions] == [(i.template.key, i.variant) for i in version.items]
+        for item, question in zip(version.items, questions, strict=True):
+            assert words(question["text"]) == html_text(item.question.text_html()), item.template.key
+    # version A against the LaTeX the command line writes: the same numbers, question by question
+    latex = question_sheet(expected, expected.versions[0])
+    printed = re.split(r"\\question\{\d+\}", latex)[1:]
+    number = re.compile(r"\d+(?:[.,]\d+)?")
+    for question, tex in zip(shown[0], printed, strict=True):
+        stated = tex.split("\\par", 1)[0]
+        assert number.findall(words(question["text"]).replace(" ", "")) == \
+            number.findall(re.sub(r"\\[a-z]+|[{}~\s]", "", stated)), question["key"]
+    assert page.locator(".sb-sheet .sb-title").first.inner_text() == expected.title
+    page.close()
+
+
+def pdf_pages(path) -> list[str]:
+    count = int(re.search(r"Pages:\s+(\d+)", subprocess.run(["pdfinfo", str(path)], capture_output=True,
+                                                            text=True, check=True).stdout)[1])
+    return [subprocess.run(["pdftotext", "-layout", "-f", str(n), "-l", str(n), str(path), "-"],
+                           capture_output=True, text=True, check=True).stdout for n in range(1, count + 1)]
+
+
+def test_printed_a4_one_sheet_or_key_per_version_with_every_mark_and_total(browser, base_url, expected, tmp_path):
+    page = browser.new_page()
+    page.goto(f"{base_url}/{PAGE}")
+    make_sheets(page)
+    pdf = tmp_path / "sheets.pdf"
+    page.pdf(path=str(pdf), format="A4")
+    info = subprocess.run(["pdfinfo", str(pdf)], capture_output=True, text=True, check=True).stdout
+    assert re.search(r"Page size:\s+59[5-6](\.\d+)? x 84[1-3](\.\d+)? pts \(A4\)", info), info
+    pages = pdf_pages(pdf)
+    # which section each page belongs to: a section starts at the top of a page, in order
+    starts = [f"{kind} {v.letter}" for v in expected.versions for kind in ("sheet", "key")]
+    sections: dict[str, str] = {}
+    current = None
+    for text in pages:
+        top = words(" ".join(text.strip().splitlines()[:4]))
+        started = [s for s in starts if (f"Version {s[-1]} ·" if s.startswith("sheet") else
+                                         f"Answer key, version {s[-1]}") in top]
+        if started:
+            assert len(started) == 1 and started[0] not in sections, top
+            current = started[0]
+        assert current is not None, f"a page before the first sheet: {top}"
+        sections[current] = sections.get(current, "") + text
+    assert list(sections) == starts  # A's sheet, A's key, B's sheet... each on its own pages
+    for version in expected.versions:
+        sheet, key = sections[f"sheet {version.letter}"], sections[f"key {version.letter}"]
+        marks = [m for item in version.items for m in item.question.part_marks()]
+        assert [int(n) for n in re.findall(r"\[(\d+)\]", sheet)] == marks
+        assert f"Total: {version.marks} marks" in sheet and f"Total: {version.marks} marks" in key
+        assert "Data: take g = 9.81 m s⁻²." in words(sheet)
+        assert "Make the sheets" not in sheet + key and "For teachers" not in sheet + key  # the sheets alone
+    page.close()
+
+
+def test_offline_after_one_visit_that_made_sheets(browser, base_url, expected):
+    context = browser.new_context(service_workers="allow")
+    page = context.new_page()
+    page.goto(f"{base_url}/{PAGE}")
+    page.wait_for_function("navigator.serviceWorker.controller !== null", timeout=60_000)
+    make_sheets(page)
+    page.wait_for_timeout(500)  # the worker's cache.put of the data, after its reply
+    context.set_offline(True)
+    page.reload()
+    make_sheets(page)
+    assert [(q["key"], q["variant"]) for q in builder_questions(page)[2]] == \
+        [(i.template.key, i.variant) for i in expected.versions[2].items]
+    context.close()
+
+
+def test_from_the_built_folder_opened_as_files(browser, site_dir, expected):
+    page = browser.new_page()
+    page.goto((site_dir / PAGE).as_uri())
+    make_sheets(page)  # the data comes by a <script> element, which file:// allows
+    assert [(q["key"], q["variant"]) for q in builder_questions(page)[0]] == \
+        [(i.template.key, i.variant) for i in expected.versions[0].items]
+    page.close()
+
+
+def test_a_keyboard_alone_makes_the_sheets(browser, base_url, expected):
+    page = browser.new_page()
+    page.goto(f"{base_url}/{PAGE}")
+    page.locator(".sb-form").wait_for()
+    boxes = page.locator('.sb-form input[name="types"]')
+    boxes.first.focus()  # the form's first control (Tab from the page's top passes the site's menus)
+
+    def focused() -> str:
+        return page.evaluate("document.activeElement.id || document.activeElement.value || "
+                             "document.activeElement.textContent")
+
+    for index in range(boxes.count()):
+        value = boxes.nth(index).get_attribute("value")
+        assert focused() == value
+        if value not in TYPES:
+            page.keyboard.press("Space")  # every type starts checked: uncheck the others
+        page.keyboard.press("Tab")
+    for field, value in (("sb-marks", MARKS), ("sb-versions", VERSIONS), ("sb-seed", SEED)):
+        assert focused() == field
+        page.keyboard.press("Control+A")
+        page.keyboard.type(str(value))
+        page.keyboard.press("Tab")
+    assert focused() == "Make the sheets"
+    page.keyboard.press("Enter")
+    page.locator(".sb-sheet").nth(VERSIONS - 1).wait_for(timeout=60_000)
+    assert [(q["key"], q["variant"]) for q in builder_questions(page)[1]] == \
+        [(i.template.key, i.variant) for i in expected.versions[1].items]
+    page.keyboard.press("Tab")
+    assert focused() == "Print"
+    # Space on the button makes them again (a second press, the same sheets)
+    page.keyboard.press("Shift+Tab")
+    page.keyboard.press("Space")
+    page.wait_for_function("document.querySelector('.sb-status').textContent.startsWith('Made')")
+    assert page.locator(".sb-sheet").count() == VERSIONS
+    page.close()
+
+
+@pytest.mark.parametrize("mode", ["light", "dark"])
+def test_no_axe_violations_with_sheets_made(browser, base_url, mode):
+    context = browser.new_context(color_scheme=mode)
+    page = context.new_page()
+    page.goto(f"{base_url}/{PAGE}")
+    page.evaluate(f"document.documentElement.dataset.theme = '{mode}'")
+    make_sheets(page)
+    assert axe_violations(page, context_selector=".sb") == []
+    context.close()
+
+
+def test_marks_that_cannot_be_made_name_the_nearest_totals(browser, base_url):
+    page = browser.new_page()
+    page.goto(f"{base_url}/{PAGE}")
+    make_sheets(page, types=["two-d"], marks=2, wait=False)
+    status = page.locator(".sb-status.sb-error")
+    status.wait_for(timeout=60_000)
+    try:
+        select_error = plan("w", "", select(types=["two-d"], topic=TOPIC), versions=VERSIONS, seed=SEED, marks=2,
+                            topic=TOPIC)
+    except ValueError as error:
+        select_error = str(error)
+    assert status.inner_text() == f"The sheets cannot be made: {select_error}."
+    assert "the nearest totals that can are" in select_error
+    page.close()

@@ -10,7 +10,9 @@ repeats it:
 * ``image/svg+xml`` for the HTML site and ``application/pdf`` for the LaTeX/PDF
   book (myst-nb picks one per builder);
 * ``text/plain``: the alt text (also what a text-only front end prints);
-* ``text/markdown``: a MyST comment ``% physics-figure <name>`` then the caption.
+* ``text/markdown``: a MyST comment ``% physics-figure <name>``, the caption, then (as an
+  HTML block) the "Data" disclosure: the longer description and the plotted values as a
+  table (:class:`FigureData`), for readers who cannot see the drawing (issue 28).
 
 ``book/_ext/figure_captions.py`` turns that output into a numbered Sphinx figure
 named ``<name>`` (so ``{numref}`<name>``` works) with the caption under it and
@@ -21,6 +23,7 @@ the same model objects the drawing uses, so they always agree with it.
 from __future__ import annotations
 
 import base64
+import html
 import io
 from dataclasses import dataclass
 
@@ -33,13 +36,65 @@ FIGURE_MARKER = "physics-figure"
 
 
 @dataclass(frozen=True)
+class FigureData:
+    """The values a figure plots, as the table of its "Data" disclosure.
+
+    ``headings`` carry the units ("time t / s"); ``rows`` are the cells already written
+    the way the book writes numbers (``figures._data`` builds them from the very arrays
+    and points the drawing plots, so the table and the figure cannot disagree).
+    """
+
+    caption: str
+    headings: tuple[str, ...]
+    rows: tuple[tuple[str, ...], ...]
+
+    def __post_init__(self) -> None:
+        for row in self.rows:
+            if len(row) != len(self.headings):
+                raise ValueError(
+                    f"row {row!r} has {len(row)} cells; a row needs one per heading "
+                    f"({len(self.headings)}: {self.headings!r})"
+                )
+
+    def html(self) -> str:
+        """The table as HTML on one line (a blank line would end Markdown's HTML block)."""
+        head = "".join(f'<th scope="col">{html.escape(h)}</th>' for h in self.headings)
+        body = "".join(
+            "<tr>" + "".join(f"<td>{html.escape(cell)}</td>" for cell in row) + "</tr>"
+            for row in self.rows
+        )
+        return (
+            f'<table class="figure-data-table"><caption>{html.escape(self.caption)}</caption>'
+            f"<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+        )
+
+
+def description_id(name: str) -> str:
+    """The id of a figure's description paragraph, which its image's aria-describedby names."""
+    return f"{name}-description"
+
+
+@dataclass(frozen=True)
 class BookFigure:
-    """A finished figure with its label, caption (MyST) and alt text."""
+    """A finished figure with its label, caption (MyST), alt text, and, for the book's
+    figures, its longer description and its data (the "Data" disclosure beside it)."""
 
     name: str
     figure: Figure
     caption: str
     alt: str
+    description: str = ""
+    data: FigureData | None = None
+
+    def data_html(self) -> str:
+        """The "Data" disclosure: the description (the image's aria-describedby) and the table."""
+        if self.data is None or not self.description:
+            return ""
+        return (
+            '<details class="figure-data"><summary>Data and description</summary>'
+            f'<p class="figure-description" id="{description_id(self.name)}">'
+            f"{html.escape(self.description)}</p>{self.data.html()}</details>"
+        )
 
     def __post_init__(self) -> None:
         # Constrained layout (with equal-aspect panels) moves the axes a little on every
@@ -67,7 +122,7 @@ class BookFigure:
         return {
             "image/svg+xml": self.svg(),
             "application/pdf": base64.b64encode(self.pdf()).decode("ascii"),
-            "text/markdown": f"% {FIGURE_MARKER} {self.name}\n\n{self.caption}\n",
+            "text/markdown": f"% {FIGURE_MARKER} {self.name}\n\n{self.caption}\n\n{self.data_html()}\n",
             "text/plain": self.alt,
         }
 

@@ -51,11 +51,11 @@ def test_the_figure_output_carries_the_disclosure_after_the_caption(figure):
     assert comment == f"% physics-figure {figure.name}"
     # one line: a blank line would end Markdown's HTML block before the table does
     assert "\n" not in disclosure
-    assert disclosure.startswith('<details class="figure-data"><summary>Data')
-    assert f'<p class="figure-description" id="{description_id(figure.name)}">' in disclosure
+    assert disclosure.startswith(f'<p class="figure-description" id="{description_id(figure.name)}" hidden>')
+    assert '<details class="figure-data"><summary>Data' in disclosure
     headings = re.findall(r'<th scope="col">([^<]*)</th>', disclosure)
     assert len(headings) == len(figure.data.headings)
-    assert re.search(r"<caption>[^<]+</caption>", disclosure)
+    assert re.search(r"<caption id=\"[^\"]+\">[^<]+</caption>", disclosure)
 
 
 def test_a_row_with_the_wrong_number_of_cells_is_refused():

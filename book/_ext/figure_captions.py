@@ -11,9 +11,9 @@ myst-nb renders every format into the doctree and picks one per builder later
 2. puts the alt text on every image of the bundle;
 3. drops the text formats and wraps the bundle in a ``figure`` node with the
    caption and the name, so Sphinx numbers it and ``{numref}`` can point to it;
-4. puts the figure's "Data" disclosure (an HTML block after the caption: the longer
-   description and the table of plotted values) right after the figure, and names the
-   description in the image's ``aria-describedby`` (issue 28). It is raw HTML, so the PDF
+4. puts the figure's description and "Data" disclosure (an HTML block after the caption:
+   the longer description and the table of plotted values) right after the figure, and
+   names the description in the image's ``aria-describedby`` (issue 28). It is raw HTML, so the PDF
    leaves it out: the PDF keeps the caption, and the table and description stay online.
 
 The page therefore carries one line per figure and never repeats its words.

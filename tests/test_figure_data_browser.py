@@ -83,9 +83,14 @@ def figures(site_dir) -> dict[str, dict]:
 
 
 def _accessible_description(page, image) -> str | None:
-    """What Chromium's accessibility tree gives the image as its description."""
+    """What Chromium's accessibility tree gives the image as its description (a figure in
+    a worked solution is shown first: a closed one is not in the tree)."""
     if image is None:
         return None
+    if not image.is_visible():
+        solution = image.locator("xpath=ancestor::*[contains(@class, 'dropdown')][1]")
+        solution.locator("button.toggle-button").first.click()
+        image.wait_for(state="visible")
     session = page.context.new_cdp_session(page)
     try:
         tree = session.send("Accessibility.getFullAXTree")["nodes"]

@@ -29,6 +29,7 @@ from dataclasses import dataclass
 
 from matplotlib.figure import Figure
 
+from ..notation import join_units
 from .style import book_style
 
 #: First word of the MyST comment that marks a figure output for the Sphinx extension.
@@ -62,12 +63,13 @@ class FigureData:
         the caption, focusable so that a keyboard can scroll it."""
         head = "".join(f'<th scope="col">{html.escape(h)}</th>' for h in self.headings)
         body = "".join(
-            "<tr>" + "".join(f"<td>{html.escape(cell)}</td>" for cell in row) + "</tr>"
+            "<tr>" + "".join(f"<td>{html.escape(join_units(cell))}</td>" for cell in row) + "</tr>"
             for row in self.rows
         )
         return (
             f'<div class="figure-data-scroll" role="region" tabindex="0" aria-labelledby="{caption_id}">'
-            f'<table class="figure-data-table"><caption id="{caption_id}">{html.escape(self.caption)}</caption>'
+            f'<table class="figure-data-table"><caption id="{caption_id}">'
+            f"{html.escape(join_units(self.caption))}</caption>"
             f"<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table></div>"
         )
 

@@ -8,7 +8,7 @@ import pytest
 
 from physics_figures import scenarios
 from physics_figures.figures import book
-from physics_figures.figures._data import Column, curve_rows, figure_data, round_steps
+from physics_figures.figures._data import Column, curve_rows, description, figure_data, round_steps
 from physics_figures.figures.book_figure import FigureData, description_id
 from physics_figures.notation import UNIT_SPACE, VALUE_WITH_UNIT
 
@@ -67,6 +67,10 @@ def test_a_row_with_the_wrong_number_of_cells_is_refused():
 def test_columns_of_different_lengths_are_refused():
     with pytest.raises(ValueError, match=r"columns have \[1, 2\] values"):
         figure_data("caption", [Column("a / s", [1.0], 2), Column("b / m", [1.0, 2.0], 2)])
+
+
+def test_a_description_writes_the_true_minus_and_joins_units():
+    assert description("ends at -20 m s⁻¹.", "Velocity-time") == "ends at \u221220\u00a0m\u00a0s⁻¹. Velocity-time"
 
 
 def test_round_steps_are_round_and_cover_the_range():

@@ -8,12 +8,13 @@ second model run), and its marked points are listed as they are drawn.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 from typing import NamedTuple
 
 import numpy as np
 
-from ..notation import format_number, join_units
+from ..notation import MINUS, format_number, join_units
 from .book_figure import FigureData
 
 #: A curve is read at about this many round values of its x-axis (plus its marked points):
@@ -93,6 +94,7 @@ def axes_sentence(horizontal: str, vertical: str) -> str:
 
 
 def description(*sentences: str) -> str:
-    """A description as the page prints it: numbers joined to their units (no line break
-    between them)."""
-    return join_units(" ".join(s.strip() for s in sentences if s.strip()))
+    """A description as the page prints it: the true minus sign (alt text words write
+    "-20"), and numbers joined to their units (no line break between them)."""
+    text = " ".join(s.strip() for s in sentences if s.strip())
+    return join_units(re.sub(r"(?<![\w.])-(?=\d)", MINUS, text))

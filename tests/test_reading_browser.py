@@ -69,9 +69,10 @@ def split_values(texts: list[str], symbols: list[str]) -> list[str]:
     return [m[0] for text in texts for m in value.finditer(text) if breakable.search(m[0])]
 
 
+# (a figure's "Data and description" disclosure is a figure's output, not a code toggle)
 SHOWN_CODE = """() => {
   const out = [];
-  for (const el of document.querySelectorAll('.cell_input, .cell .highlight, details.hide, .toggle-details, summary'))
+  for (const el of document.querySelectorAll('.cell_input, .cell .highlight, details.hide, .toggle-details, summary:not(details.figure-data > summary)'))
     if (el.closest('.cell')) out.push(el.className || el.tagName);
   if (/Show code cell (source|content)/.test(document.body.innerText)) out.push('Show code cell source');
   return out;

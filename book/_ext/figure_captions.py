@@ -10,7 +10,11 @@ myst-nb renders every format into the doctree and picks one per builder later
    (CommonMark by default: emphasis, Unicode units such as m s⁻¹);
 2. puts the alt text on every image of the bundle;
 3. drops the text formats and wraps the bundle in a ``figure`` node with the
-   caption and the name, so Sphinx numbers it and ``{numref}`` can point to it.
+   caption and the name, so Sphinx numbers it and ``{numref}`` can point to it;
+4. puts the figure's description and "Data" disclosure (an HTML block after the caption:
+   the longer description and the table of plotted values) right after the figure, and
+   names the description in the image's ``aria-describedby`` (issue 28). It is raw HTML, so the PDF
+   leaves it out: the PDF keeps the caption, and the table and description stay online.
 
 The page therefore carries one line per figure and never repeats its words.
 """
@@ -21,6 +25,7 @@ from docutils import nodes
 from sphinx.application import Sphinx
 from sphinx.transforms import SphinxTransform
 from sphinx.util import logging
+from sphinx.writers.html5 import HTML5Translator
 
 logger = logging.getLogger(__name__)
 
@@ -52,6 +57,12 @@ def _figure_name(markdown: nodes.Element | None) -> str | None:
     if len(words) == 2 and words[0] == FIGURE_MARKER:
         return words[1]
     return None
+
+
+def _description_id(name: str) -> str:
+    from physics_figures.figures.book_figure import description_id  # (see _figure_name)
+
+    return description_id(name)
 
 
 class FigureFromOutput(SphinxTransform):
@@ -87,11 +98,21 @@ class FigureFromOutput(SphinxTransform):
                     type="figure_captions",
                 )
                 continue
+            disclosure = [n for n in markdown.children[1:] if isinstance(n, nodes.raw)]
+            if not disclosure:
+                logger.warning(
+                    "figure %r has no data table and description (BookFigure.data_html)",
+                    name,
+                    location=bundle,
+                    type="figure_captions",
+                )
             bundle.remove(markdown)
             if plain is not None:
                 bundle.remove(plain)
             for image in bundle.findall(nodes.image):
                 image["alt"] = alt
+                if disclosure:
+                    image[DESCRIBED_BY] = _description_id(name)
                 # the theme dims images in dark mode unless they are marked as ready for
                 # it; _static/figures.css gives ours a light paper card instead
                 image["classes"].append("dark-light")
@@ -105,8 +126,25 @@ class FigureFromOutput(SphinxTransform):
             figure += caption
             figure["names"].append(nodes.fully_normalize_name(name))
             self.document.note_explicit_target(figure, figure)
+            figure.parent.insert(figure.parent.index(figure) + 1, disclosure)
+
+
+#: Image attribute naming the element that describes it (written as aria-describedby).
+DESCRIBED_BY = "describedby"
+
+
+def visit_image_described(self, node: nodes.image) -> None:
+    """HTML: the standard <img>, plus aria-describedby when the figure has a description
+    (docutils images carry no ARIA attributes of their own)."""
+    HTML5Translator.visit_image(self, node)
+    target = node.get(DESCRIBED_BY)
+    if target and self.body and self.body[-1].startswith("<img "):
+        tag = self.body[-1]
+        end = tag.rindex("/>") if tag.rstrip().endswith("/>") else tag.rindex(">")
+        self.body[-1] = f'{tag[:end].rstrip()} aria-describedby="{target}" {tag[end:]}'
 
 
 def setup(app: Sphinx) -> dict:
     app.add_transform(FigureFromOutput)
+    app.add_node(nodes.image, override=True, html=(visit_image_described, HTML5Translator.depart_image))
     return {"parallel_read_safe": True, "parallel_write_safe": True}

@@ -15,8 +15,9 @@ from matplotlib.text import Annotation, Text
 
 from ..models import stick_together, total_kinetic_energy, total_momentum
 from ..notation import format_number
+from ._data import Column, description, figure_data
 from ._text import MOMENTUM_UNIT, VELOCITY_UNIT, a_or_an, plain
-from .book_figure import BookFigure
+from .book_figure import BookFigure, FigureData
 from .style import INK, MAIN, PAPER, SECOND, SMALL_TEXT, new_axes, styled
 
 
@@ -151,13 +152,39 @@ def collision_caption(masses, velocities_before, velocities_after) -> str:
 
 
 def collision_alt(masses, velocities_before, velocities_after) -> str:
+    return plain(_collision_words(masses, velocities_before, velocities_after))
+
+
+def _collision_words(masses, velocities_before, velocities_after) -> str:
     p0, e0, p1, e1 = _totals(masses, velocities_before, velocities_after)
-    return plain(
+    return (
         f"Before: {a_or_an(format_number(masses[0], 2))} {format_number(masses[0], 2)} kg block moving right at {format_number(velocities_before[0], 2)} "
         f"{VELOCITY_UNIT} towards {a_or_an(format_number(masses[1], 2))} {format_number(masses[1], 2)} kg block at rest; total momentum "
         f"{format_number(p0, 2)} {MOMENTUM_UNIT}, total kinetic energy {format_number(e0, 2)} J. After: the blocks "
         f"joined, moving right at {format_number(velocities_after[0], 2)} {VELOCITY_UNIT}; total momentum "
         f"{format_number(p1, 2)} {MOMENTUM_UNIT}, total kinetic energy {format_number(e1, 2)} J."
+    )
+
+
+def collision_data(masses, velocities_before, velocities_after) -> FigureData:
+    """Each drawn body's mass and velocities, and the totals the figure prints."""
+    p0, e0, p1, e1 = _totals(masses, velocities_before, velocities_after)
+    bodies = [f"{format_number(m, 2)} kg block" for m in masses]
+    return figure_data(
+        "Velocities (right positive) before and after the collision, and the totals",
+        [Column("body or total", [*bodies, "total momentum / kg m s⁻¹", "total kinetic energy / J"]),
+         Column(f"before (velocity / {VELOCITY_UNIT}, or total)", [*velocities_before, p0, e0], 2),
+         Column(f"after (velocity / {VELOCITY_UNIT}, or total)", [*velocities_after, p1, e1], 2)],
+    )
+
+
+def collision_description(masses, velocities_before, velocities_after) -> str:
+    return description(
+        "A diagram in two rows, without axes: before the collision above, after it below, "
+        "each block labelled with its mass, each moving block with an arrow to the right, its "
+        "length in proportion to its speed, and the totals at the right of each row.",
+        _collision_words(masses, velocities_before, velocities_after),
+        "The Data table lists each block's velocity before and after, and the totals.",
     )
 
 
@@ -174,4 +201,6 @@ def collision_before_after(*, m1: float, u1: float, m2: float, u2: float) -> Boo
         graph.axes.figure,
         collision_caption(masses, before, after),
         collision_alt(masses, before, after),
+        collision_description(masses, before, after),
+        collision_data(masses, before, after),
     )

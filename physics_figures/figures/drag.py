@@ -14,8 +14,18 @@ from matplotlib.lines import Line2D
 from ..models import drag_force
 from ..models.drag import Skydive, ThrowUp
 from ..notation import format_number
+from ._data import (
+    Column,
+    axes_sentence,
+    axis_words,
+    curve_rows,
+    description,
+    figure_data,
+    read_along,
+    round_steps,
+)
 from ._text import VELOCITY_UNIT, plain
-from .book_figure import BookFigure
+from .book_figure import BookFigure, FigureData
 from .style import (
     FIGSIZE,
     GUIDE,
@@ -50,10 +60,8 @@ def plot_drag_against_speed(
     """
     ax = new_axes(ax)
     v_t = skydive.terminal_velocity_freefall
-    speeds = np.linspace(0, 1.3 * v_t, samples)
-    (curve,) = ax.plot(
-        speeds, drag_force(skydive.drag_constant_freefall, speeds), color=MAIN, label="drag"
-    )
+    speeds, drags = _drag_curve(skydive, samples)
+    (curve,) = ax.plot(speeds, drags, color=MAIN, label="drag")
     weight_line = ax.axhline(skydive.weight, color=SECOND, linestyle="--", label="weight")
     (crossing,) = ax.plot(
         [v_t],
@@ -97,6 +105,34 @@ def plot_drag_against_speed(
     return DragGraph(ax, curve, weight_line, crossing)
 
 
+def _drag_curve(skydive: Skydive, samples: int = 200) -> tuple[np.ndarray, np.ndarray]:
+    """The drag curve the figure draws and its table reads: speeds from 0 to 1.3 v_t."""
+    speeds = np.linspace(0, 1.3 * skydive.terminal_velocity_freefall, samples)
+    return speeds, drag_force(skydive.drag_constant_freefall, speeds)
+
+
+def drag_against_speed_data(skydive: Skydive) -> FigureData:
+    """The drawn drag curve read at round speeds, and where it crosses the weight."""
+    speeds, drags = _drag_curve(skydive)
+    crossing = {"terminal velocity": (skydive.terminal_velocity_freefall, skydive.weight)}
+    labels, at, forces = curve_rows(speeds, drags, crossing)
+    return figure_data(
+        f"Drag on the {format_number(skydive.mass, 2)} kg skydiver against speed "
+        f"(weight {format_number(skydive.weight, 3)} N)",
+        [Column("point", labels), Column(f"speed v / {VELOCITY_UNIT}", at, 3),
+         Column("drag / N", forces, 3)],
+    )
+
+
+def drag_against_speed_description(skydive: Skydive) -> str:
+    return description(
+        axes_sentence(axis_words("speed v", 0, 1.3 * skydive.terminal_velocity_freefall, VELOCITY_UNIT),
+                      axis_words("force", 0, 1.8 * skydive.weight, "N")),
+        _drag_against_speed_words(skydive),
+        "The Data table reads the drag curve at round speeds.",
+    )
+
+
 def drag_against_speed_caption(skydive: Skydive) -> str:
     return (
         f"Drag on the {format_number(skydive.mass, 2)} kg skydiver against speed. The drag grows from zero "
@@ -107,7 +143,11 @@ def drag_against_speed_caption(skydive: Skydive) -> str:
 
 
 def drag_against_speed_alt(skydive: Skydive) -> str:
-    return plain(
+    return plain(_drag_against_speed_words(skydive))
+
+
+def _drag_against_speed_words(skydive: Skydive) -> str:
+    return (
         f"Graph of force against speed. The drag curve starts at the origin and rises ever "
         f"more steeply. A dashed horizontal line marks the weight of the {format_number(skydive.mass, 2)} "
         f"kg skydiver, {format_number(skydive.weight, 3)} N. The curve crosses the line at "
@@ -181,7 +221,11 @@ def thrown_upwards_caption(with_drag: ThrowUp, without_drag: ThrowUp) -> str:
 
 
 def thrown_upwards_alt(with_drag: ThrowUp, without_drag: ThrowUp) -> str:
-    return plain(
+    return plain(_thrown_upwards_words(with_drag, without_drag))
+
+
+def _thrown_upwards_words(with_drag: ThrowUp, without_drag: ThrowUp) -> str:
+    return (
         f"Two graphs against time for a ball thrown up at {format_number(with_drag.launch_speed, 2)} "
         f"{VELOCITY_UNIT}, each with two curves. Velocity, up positive: in a vacuum (dashed) "
         f"a straight line from {format_number(without_drag.launch_speed, 2)} down to "
@@ -196,6 +240,52 @@ def thrown_upwards_alt(with_drag: ThrowUp, without_drag: ThrowUp) -> str:
     )
 
 
+def thrown_upwards_data(with_drag: ThrowUp, without_drag: ThrowUp) -> FigureData:
+    """Both drawn throws read at the same round times (a dash once a ball has landed),
+    with the marked tops in their places."""
+    throws = (with_drag, without_drag)
+    times = round_steps(0.0, max(t.time_of_flight for t in throws), count=8)
+
+    def reading(throw: ThrowUp, quantity: str, t: float) -> float | None:
+        if t > throw.time_of_flight:
+            return None
+        return float(read_along(throw.time, getattr(throw, quantity), [t])[0])
+
+    rows = [("", float(t), *(reading(throw, q, t) for q in ("velocity", "height") for throw in throws))
+            for t in times]
+    for label, throw in (("top, with air resistance", with_drag), ("top, in a vacuum", without_drag)):
+        velocity = [0.0 if other is throw else None for other in throws]
+        height = [throw.max_height if other is throw else None for other in throws]
+        rows.append((label, throw.time_to_top, *velocity, *height))
+    rows.sort(key=lambda row: row[1])
+    columns = list(zip(*rows, strict=True))
+    headings = [
+        ("point", None),
+        ("time t / s", 3),
+        (f"velocity with air resistance / {VELOCITY_UNIT}", 3),
+        (f"velocity in a vacuum / {VELOCITY_UNIT}", 3),
+        ("height with air resistance / m", 3),
+        ("height in a vacuum / m", 3),
+    ]
+    return figure_data(
+        f"Velocity (up positive) and height of the ball thrown up at "
+        f"{format_number(with_drag.launch_speed, 2)} {VELOCITY_UNIT}",
+        [Column(h, values, sig) for (h, sig), values in zip(headings, columns, strict=True)],
+    )
+
+
+def thrown_upwards_description(with_drag: ThrowUp, without_drag: ThrowUp) -> str:
+    end = max(with_drag.time_of_flight, without_drag.time_of_flight)
+    u = without_drag.launch_speed
+    return description(
+        f"Two graphs share the horizontal axis, {axis_words('time t', 0, end, 's')}. The upper "
+        f"graph's vertical axis is {axis_words('velocity, up positive', -1.1 * u, 1.1 * u, VELOCITY_UNIT)}; "
+        f"the lower graph's is {axis_words('height', 0, 1.2 * without_drag.max_height, 'm')}.",
+        _thrown_upwards_words(with_drag, without_drag),
+        "The Data table reads both throws at the same times; a dash means that ball has landed.",
+    )
+
+
 # --- The book's figures from this module (see book_figure.py); a page calls one of these. ---
 
 
@@ -206,6 +296,8 @@ def drag_against_speed(skydive: Skydive) -> BookFigure:
         graph.axes.figure,
         drag_against_speed_caption(skydive),
         drag_against_speed_alt(skydive),
+        drag_against_speed_description(skydive),
+        drag_against_speed_data(skydive),
     )
 
 
@@ -216,4 +308,6 @@ def thrown_upwards(with_drag: ThrowUp, without_drag: ThrowUp) -> BookFigure:
         graph.figure,
         thrown_upwards_caption(with_drag, without_drag),
         thrown_upwards_alt(with_drag, without_drag),
+        thrown_upwards_description(with_drag, without_drag),
+        thrown_upwards_data(with_drag, without_drag),
     )

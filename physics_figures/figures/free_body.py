@@ -18,8 +18,9 @@ from matplotlib.text import Annotation
 from ..models.drag import Skydive
 from ..notation import format_number
 from ..style import colour
+from ._data import Column, description, figure_data
 from ._text import ACCELERATION_UNIT, VELOCITY_UNIT, plain
-from .book_figure import BookFigure
+from .book_figure import BookFigure, FigureData
 from .style import FORCE_COLOURS, INK, PAPER, SMALL_TEXT, book_style, styled
 
 #: Line style of each kind of force, so pairs match in greyscale too.
@@ -155,6 +156,10 @@ def _at_d(skydive: Skydive) -> str:
 
 
 def skydiver_free_bodies_alt(skydive: Skydive, points=("A", "C", "D")) -> str:
+    return plain(_skydiver_free_bodies_words(skydive, points))
+
+
+def _skydiver_free_bodies_words(skydive: Skydive, points=("A", "C", "D")) -> str:
     parts = []
     for p in points:
         d = _drag_at(skydive, p)
@@ -169,7 +174,7 @@ def skydiver_free_bodies_alt(skydive: Skydive, points=("A", "C", "D")) -> str:
             f"at {p} (speed {format_number(v, 2)} {VELOCITY_UNIT}): weight "
             f"{format_number(skydive.weight, 3)} N downwards and {drag}"
         )
-    return plain(
+    return (
         f"Three free-body diagrams of the {format_number(skydive.mass, 2)} kg skydiver, a circle with "
         "vertical arrows: " + "; ".join(parts) + ". "
         + (_at_d(skydive)[0].upper() + _at_d(skydive)[1:] + "." if "D" in points else "")
@@ -258,6 +263,60 @@ def book_on_table_caption() -> str:
     )
 
 
+def skydiver_free_bodies_data(skydive: Skydive, points=("A", "C", "D")) -> FigureData:
+    """The forces each panel draws (the arrows' lengths are in proportion to them)."""
+    drags = [_drag_at(skydive, p) for p in points]
+    return figure_data(
+        f"Forces on the {format_number(skydive.mass, 2)} kg skydiver at each point",
+        [Column("point", list(points)),
+         Column(f"speed / {VELOCITY_UNIT}", [skydive.points[p][1] for p in points], 2),
+         Column("weight, down / N", [skydive.weight] * len(points), 3),
+         Column("drag, up / N", drags, 3),
+         Column("resultant force, down / N", [skydive.weight - d for d in drags], 3)],
+    )
+
+
+_COUNT_WORDS = {1: "One", 2: "Two", 3: "Three", 4: "Four", 5: "Five"}
+
+
+def skydiver_free_bodies_description(skydive: Skydive, points=("A", "C", "D")) -> str:
+    return description(
+        f"{_COUNT_WORDS.get(len(points), str(len(points)))} panels side by side, one for each point, without axes; in each the "
+        "skydiver is a circle, the weight an arrow down from it and the drag an arrow up, "
+        "lengths in proportion to the forces.",
+        _skydiver_free_bodies_words(skydive, points),
+        "The Data table lists the forces at each point.",
+    )
+
+
+#: The forces the book-on-a-table diagram draws: (label, what it is, on, by, direction,
+#: panel); the notes give no mass, so there are no values, only the pairs.
+_BOOK_FORCES = (
+    ("W", "weight (gravitational)", "book", "Earth", "down", "left: forces on the book"),
+    ("R", "contact", "book", "table", "up", "left: forces on the book"),
+    ("W", "gravitational", "Earth", "book", "up", "right: their third-law pairs"),
+    ("R", "contact", "table", "book", "down", "right: their third-law pairs"),
+)
+
+
+def book_on_table_data() -> FigureData:
+    """The four drawn forces: each pair acts on different bodies, same type, opposite ways."""
+    return figure_data(
+        "The forces in the diagram of a book on a table",
+        [Column(heading, [force[i] for force in _BOOK_FORCES])
+         for i, heading in enumerate(("force", "type", "acts on", "exerted by", "direction", "panel"))],
+    )
+
+
+def book_on_table_description() -> str:
+    return description(
+        "Two panels side by side, without axes or values (the notes give no mass).",
+        book_on_table_alt(),
+        "The Data table lists each force: its type, the body it acts on, the body that exerts it, "
+        "and its direction.",
+    )
+
+
 def book_on_table_alt() -> str:
     return (
         "Two diagrams of a book on a table above the Earth. Left, forces on the book: the "
@@ -278,6 +337,8 @@ def free_body_skydiver(skydive: Skydive) -> BookFigure:
         figure,
         skydiver_free_bodies_caption(skydive),
         skydiver_free_bodies_alt(skydive),
+        skydiver_free_bodies_description(skydive),
+        skydiver_free_bodies_data(skydive),
     )
 
 
@@ -287,4 +348,6 @@ def free_body_book() -> BookFigure:
         plot_book_on_table().figure,
         book_on_table_caption(),
         book_on_table_alt(),
+        book_on_table_description(),
+        book_on_table_data(),
     )

@@ -18,8 +18,9 @@ from matplotlib.text import Text
 from ..models import impulse
 from ..models.momentum_history import MomentumHistory
 from ..notation import format_number
+from ._data import Column, axes_sentence, axis_words, description, figure_data
 from ._text import IMPULSE_UNIT, MOMENTUM_UNIT, VELOCITY_UNIT, a_or_an, plain, seconds
-from .book_figure import BookFigure
+from .book_figure import BookFigure, FigureData
 from .style import GUIDE, MAIN, PAPER, SHADE, new_axes, styled, unit_label
 
 
@@ -143,6 +144,10 @@ def momentum_time_caption(history: MomentumHistory, *, mass: float) -> str:
 
 
 def momentum_time_alt(history: MomentumHistory, *, mass: float) -> str:
+    return plain(_momentum_time_words(history, mass=mass))
+
+
+def _momentum_time_words(history: MomentumHistory, *, mass: float) -> str:
     parts = []
     for s in history.segments:
         if s.force == 0:
@@ -156,11 +161,32 @@ def momentum_time_alt(history: MomentumHistory, *, mass: float) -> str:
             f"from {seconds(s.t0)} to {seconds(s.t1)} it {how} (gradient {_force_text(s.force)})"
         )
     speed = max(history.velocity_at(history.times, mass))
-    return plain(
+    return (
         f"Momentum-time graph of {a_or_an(format_number(mass, 2))} {format_number(mass, 2)} kg car: "
         + "; ".join(parts)
         + ". "
         f"The top speed is {format_number(speed, 2)} {VELOCITY_UNIT}."
+    )
+
+
+def momentum_time_data(history: MomentumHistory, *, mass: float) -> FigureData:
+    """The drawn corners, each with the gradient (resultant force) of the segment after it."""
+    gradients = [*history.segment_forces, None]  # the last corner starts no segment
+    return figure_data(
+        f"Momentum of the {format_number(mass, 2)} kg car at each corner of the graph",
+        [Column("time t / s", list(history.times), decimals=1),
+         Column(f"momentum p / {MOMENTUM_UNIT}", list(history.momenta), 3),
+         Column("gradient until the next corner (resultant force) / N", gradients, 2)],
+    )
+
+
+def momentum_time_description(history: MomentumHistory, *, mass: float) -> str:
+    return description(
+        axes_sentence(axis_words("time t", history.times[0], history.times[-1], "s"),
+                      axis_words("momentum p", min(0, min(history.momenta)), 1.3 * max(history.momenta),
+                                 MOMENTUM_UNIT)),
+        _momentum_time_words(history, mass=mass),
+        "The Data table lists each corner of the graph and the gradient of the segment after it.",
     )
 
 
@@ -173,6 +199,10 @@ def force_time_caption(history: MomentumHistory) -> str:
 
 
 def force_time_alt(history: MomentumHistory) -> str:
+    return plain(_force_time_words(history))
+
+
+def _force_time_words(history: MomentumHistory) -> str:
     parts = [
         f"{_force_text(s.force)} from {seconds(s.t0)} to {seconds(s.t1)}"
         + (
@@ -182,10 +212,33 @@ def force_time_alt(history: MomentumHistory) -> str:
         )
         for s in history.segments
     ]
-    return plain(
+    return (
         "Force-time graph of the car, made of horizontal steps: "
         + "; ".join(parts)
         + ". Each shaded area is the change in momentum over that time."
+    )
+
+
+def force_time_data(history: MomentumHistory) -> FigureData:
+    """Each drawn step: its times, its force and its area (the change in momentum)."""
+    segments = history.segments
+    return figure_data(
+        "Resultant force on the car in each interval, and the area under it",
+        [Column("from t / s", [s.t0 for s in segments], decimals=1),
+         Column("to t / s", [s.t1 for s in segments], decimals=1),
+         Column("resultant force F / N", [s.force for s in segments], 2),
+         Column(f"area = change in momentum Δp / {IMPULSE_UNIT}",
+                [impulse(s.force, s.t1 - s.t0) for s in segments], 2)],
+    )
+
+
+def force_time_description(history: MomentumHistory) -> str:
+    forces = history.segment_forces
+    return description(
+        axes_sentence(axis_words("time t", history.times[0], history.times[-1], "s"),
+                      axis_words("resultant force F", 1.15 * min(min(forces), 0), 1.15 * max(max(forces), 0), "N")),
+        _force_time_words(history),
+        "The Data table lists each step with its area.",
     )
 
 
@@ -199,6 +252,8 @@ def car_momentum_time(history: MomentumHistory, *, mass: float) -> BookFigure:
         graph.axes.figure,
         momentum_time_caption(history, mass=mass),
         momentum_time_alt(history, mass=mass),
+        momentum_time_description(history, mass=mass),
+        momentum_time_data(history, mass=mass),
     )
 
 
@@ -209,4 +264,6 @@ def force_time_area(history: MomentumHistory) -> BookFigure:
         graph.axes.figure,
         force_time_caption(history),
         force_time_alt(history),
+        force_time_description(history),
+        force_time_data(history),
     )

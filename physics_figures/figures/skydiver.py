@@ -17,8 +17,9 @@ from matplotlib.text import Text
 
 from ..models.drag import Skydive
 from ..notation import format_number
+from ._data import Column, axes_sentence, axis_words, curve_rows, description, figure_data
 from ._text import ACCELERATION_UNIT, VELOCITY_UNIT, a_or_an, plain
-from .book_figure import BookFigure
+from .book_figure import BookFigure, FigureData
 from .style import GUIDE, INK, MAIN, PAPER, SMALL_TEXT, new_axes, styled, unit_label
 
 POINT_LABELS = ("A", "B", "C", "D", "E")
@@ -198,6 +199,10 @@ def velocity_time_caption(skydive: Skydive) -> str:
 
 
 def velocity_time_alt(skydive: Skydive) -> str:
+    return plain(_velocity_time_words(skydive))
+
+
+def _velocity_time_words(skydive: Skydive) -> str:
     p = skydive.points
     text = (
         f"Velocity-time graph of {a_or_an(format_number(skydive.mass, 2))} {format_number(skydive.mass, 2)} kg skydiver, taking down as positive. "
@@ -211,7 +216,7 @@ def velocity_time_alt(skydive: Skydive) -> str:
         f"{format_number(skydive.terminal_velocity_parachute, 2)} {VELOCITY_UNIT} (E, at about "
         f"{_time(skydive, 'E')} s). Dashed horizontal lines mark the two terminal velocities."
     )
-    return plain(text)
+    return text
 
 
 def resultant_force_caption(skydive: Skydive) -> str:
@@ -225,7 +230,11 @@ def resultant_force_caption(skydive: Skydive) -> str:
 
 
 def resultant_force_alt(skydive: Skydive) -> str:
-    text = (
+    return plain(_resultant_force_words(skydive))
+
+
+def _resultant_force_words(skydive: Skydive) -> str:
+    return (
         f"Graph of resultant force against time for {a_or_an(format_number(skydive.mass, 2))} {format_number(skydive.mass, 2)} kg skydiver, "
         f"down positive. At A the resultant force is the whole weight, "
         f"{format_number(skydive.weight, 3)} N. It decreases through B "
@@ -238,7 +247,48 @@ def resultant_force_alt(skydive: Skydive) -> str:
         f"shrinks back to zero at E as the skydiver slows to "
         f"{format_number(skydive.terminal_velocity_parachute, 2)} {VELOCITY_UNIT}."
     )
-    return plain(text)
+
+
+def velocity_time_data(skydive: Skydive) -> FigureData:
+    """The drawn velocity curve read at round times, with A to E where they are drawn."""
+    labels, times, velocities = curve_rows(skydive.time, skydive.velocity, dict(skydive.points))
+    return figure_data(
+        f"Velocity of the {format_number(skydive.mass, 2)} kg skydiver against time, down positive",
+        [Column("point", labels), Column("time t / s", times, 3),
+         Column(f"velocity v / {VELOCITY_UNIT}", velocities, 3)],
+    )
+
+
+def resultant_force_data(skydive: Skydive) -> FigureData:
+    """The drawn resultant-force curve read at round times, with A to E at the model's values."""
+    marked = {p: (t, _resultant_at(skydive, p)) for p, (t, _) in skydive.points.items()}
+    labels, times, forces = curve_rows(skydive.time, skydive.resultant_force, marked)
+    return figure_data(
+        f"Resultant force on the {format_number(skydive.mass, 2)} kg skydiver against time, down positive",
+        [Column("point", labels), Column("time t / s", times, 3),
+         Column("resultant force / N", forces, decimals=0)],
+    )
+
+
+def velocity_time_description(skydive: Skydive) -> str:
+    top = skydive.terminal_velocity_freefall * 1.18  # the plot's y-limit
+    return description(
+        axes_sentence(axis_words("time t", 0, skydive.duration, "s"),
+                      axis_words("velocity v, down positive", 0, top, VELOCITY_UNIT)),
+        _velocity_time_words(skydive),
+        "The Data table reads the curve every few seconds, with A to E in their places.",
+    )
+
+
+def resultant_force_description(skydive: Skydive, *, clip_at_weights: float = 5.0) -> str:
+    w = skydive.weight
+    return description(
+        axes_sentence(axis_words("time t", 0, skydive.duration, "s"),
+                      axis_words("resultant force, down positive", -clip_at_weights * w * 1.08,
+                                 w * 1.35, "N")),
+        _resultant_force_words(skydive),
+        "The Data table reads the curve every few seconds, with A to E in their places.",
+    )
 
 
 # --- The book's figures from this module (see book_figure.py); a page calls one of these. ---
@@ -251,6 +301,8 @@ def skydiver_velocity_time(skydive: Skydive) -> BookFigure:
         graph.axes.figure,
         velocity_time_caption(skydive),
         velocity_time_alt(skydive),
+        velocity_time_description(skydive),
+        velocity_time_data(skydive),
     )
 
 
@@ -261,4 +313,6 @@ def skydiver_resultant_force(skydive: Skydive) -> BookFigure:
         graph.axes.figure,
         resultant_force_caption(skydive),
         resultant_force_alt(skydive),
+        resultant_force_description(skydive),
+        resultant_force_data(skydive),
     )

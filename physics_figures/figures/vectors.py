@@ -18,8 +18,9 @@ from matplotlib.text import Annotation
 
 from ..models.two_d import GlancingCollision
 from ..notation import format_number
+from ._data import Column, description, figure_data
 from ._text import IMPULSE_UNIT, plain
-from .book_figure import BookFigure
+from .book_figure import BookFigure, FigureData
 from .style import GUIDE, MAIN, PALETTE, SECOND, SMALL_TEXT, new_axes, styled
 
 
@@ -150,10 +151,14 @@ def momentum_triangle_caption(collision: GlancingCollision, *, names=("P", "Q"))
 def momentum_triangle_alt(
     collision: GlancingCollision, *, names=("P", "Q"), figures: int = 2
 ) -> str:
+    return plain(momentum_triangle_words(collision, names=names, figures=figures))
+
+
+def momentum_triangle_words(collision: GlancingCollision, *, names=("P", "Q"), figures: int = 2) -> str:
     moving, struck = names
     m = collision.missing
     along_m, across_m = collision.known_vector
-    return plain(
+    return (
         f"Vector triangle. A dashed arrow along the original line shows {moving}'s momentum "
         f"before, {format_number(collision.p_before, 3)} {IMPULSE_UNIT}. From its start, an arrow for "
         f"{moving} after, {format_number(collision.p_known, figures)} {IMPULSE_UNIT} at "
@@ -163,6 +168,34 @@ def momentum_triangle_alt(
         f"degrees below the line (components {format_number(m.along, 3)} along, {format_number(m.across, 3)} "
         f"across), ending at the tip of the dashed arrow: the momentum before is the "
         f"resultant of the two momenta after."
+    )
+
+
+def momentum_triangle_data(collision: GlancingCollision, *, names=("P", "Q"), figures: int = 2) -> FigureData:
+    """The three drawn arrows: size, angle to the original line, and the components the
+    dotted lines show (across is + on the moving body's side)."""
+    moving, struck = names
+    m = collision.missing
+    arrows = (
+        (f"{moving} before (dashed)", collision.p_before, 0.0, collision.before_vector),
+        (f"{moving} after", collision.p_known, collision.angle_known_deg, collision.known_vector),
+        (f"{struck} after", m.magnitude, -m.angle_deg, collision.missing_vector),
+    )
+    return figure_data(
+        f"The momenta in the vector triangle for {moving} hitting {struck}",
+        [Column("arrow", [a[0] for a in arrows]),
+         Column(f"momentum / {IMPULSE_UNIT}", [a[1] for a in arrows], max(figures, 3)),
+         Column("angle to the original line / ° (+ towards the first arrow after)", [a[2] for a in arrows], 3),
+         Column(f"along the line / {IMPULSE_UNIT}", [a[3][0] for a in arrows], 3),
+         Column(f"across the line / {IMPULSE_UNIT}", [a[3][1] for a in arrows], 3)],
+    )
+
+
+def momentum_triangle_description(collision: GlancingCollision, *, names=("P", "Q"), figures: int = 2) -> str:
+    return description(
+        "A vector diagram drawn to scale, without axes; the original line runs left to right.",
+        momentum_triangle_words(collision, names=names, figures=figures),
+        "The Data table lists each arrow with its components along and across the line.",
     )
 
 
@@ -176,6 +209,8 @@ def _triangle(name: str, collision: GlancingCollision, names: tuple[str, str], f
         graph.axes.figure,
         momentum_triangle_caption(collision, names=names),
         momentum_triangle_alt(collision, names=names, figures=figures),
+        momentum_triangle_description(collision, names=names, figures=figures),
+        momentum_triangle_data(collision, names=names, figures=figures),
     )
 
 

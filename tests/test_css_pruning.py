@@ -72,10 +72,12 @@ def _same(first: Image.Image, second: Image.Image) -> bool:
 @pytest.mark.parametrize("width", WIDTHS.values(), ids=list(WIDTHS))
 def test_pruned_css_draws_every_page_as_the_full_css_does(browser, site_dir, unpruned, width, mode):
     with serve_site(site_dir) as pruned_url, serve_site(unpruned) as full_url:
-        # a page whose explorable is still drawing may differ once: a CSS difference stays
+        # a page whose explorable is still drawing may differ once, and Chromium's software raster
+        # sometimes draws a figure's rounded corner 2 px apart (both bundles alike, about one shot
+        # in three on the drag page at 390 px, dark): a CSS difference stays in every try
         changed = [path for path in PAGES
                    if not any(_same(_shot(browser, pruned_url, path, width, mode),
-                                    _shot(browser, full_url, path, width, mode)) for _ in range(2))]
+                                    _shot(browser, full_url, path, width, mode)) for _ in range(4))]
     assert not changed, f"pruning the CSS changed {changed} at {width} px, {mode}"
 
 

@@ -33,6 +33,7 @@ from . import (
     print_form,
     progress,
     rules_table,
+    schedule,
     self_test,
     sheet_builder,
     store,
@@ -78,7 +79,8 @@ def setup(app):
     app.add_node(directive.worked_answer, html=(form.visit_worked_answer, form.depart_worked_answer))
     app.add_node(directive.graph_view, html=(form.visit_graph_view, form.depart_graph_view))
     app.add_directive("question", directive.QuestionDirective)
-    for job in (answer_key, progress, try_similar, book_map, self_test, rules_table, class_page, sheet_builder):
+    for job in (answer_key, progress, try_similar, book_map, self_test, rules_table, class_page, sheet_builder,
+                schedule):
         job.setup(app)
     app.connect("config-inited", add_static_path)
     app.connect("env-purge-doc", store.purge)

@@ -21,53 +21,6 @@ const kind = {
   ],
 };
 
-test("nothing stored reads as empty progress, format 1", () => {
-  assert.deepEqual(P.readProgress(null), { ok: true, progress: { version: 1, attempts: [] } });
-});
-
-test("a good file is read whole, unknown fields kept", () => {
-  const text = JSON.stringify({ version: 1, attempts: [attempt("d1", 3, 10, ["g = 10"])], note: "kept" });
-  const read = P.readProgress(text);
-  assert.equal(read.ok, true);
-  assert.equal(read.progress.note, "kept");
-  assert.equal(read.progress.attempts.length, 1);
-});
-
-test("a bad file is refused with what is wrong", () => {
-  const cases = [
-    ["not json {", /not JSON/],
-    ["[1, 2]", /no format version/],
-    ['{"attempts": []}', /no format version/],
-    ['{"version": 2, "attempts": []}', /newer version of the book \(format 2\)/],
-    ['{"version": "x", "attempts": []}', /format version \(x\)/],
-    ['{"version": 1}', /no list of attempts/],
-    [
-      JSON.stringify({ version: 1, attempts: [attempt("d1", 3, 1), { question: "d2" }] }),
-      /attempt 2 of 2 has no question type/,
-    ],
-    [JSON.stringify({ version: 1, attempts: [attempt("d1", 5, 1)] }), /attempt 1 of 1 has marks earned/],
-    [JSON.stringify({ version: 1, attempts: [attempt("d1", 3, 1, [7])] }), /no list of mistakes/],
-  ];
-  for (const [text, message] of cases) {
-    const read = P.readProgress(text);
-    assert.equal(read.ok, false, text);
-    assert.match(read.message, message, text);
-  }
-});
-
-test("merging adds each attempt once, oldest first", () => {
-  const kept = [attempt("d1", 1, 5), attempt("d1", 4, 20)];
-  const incoming = [attempt("d1", 4, 20), attempt("d2", 2, 10)];
-  const merged = P.mergeAttempts(kept, incoming);
-  assert.equal(merged.added, 1);
-  assert.equal(merged.already, 1);
-  assert.deepEqual(
-    merged.attempts.map((a) => a.at),
-    [5, 10, 20],
-  );
-  assert.equal(P.mergeAttempts(merged.attempts, incoming).added, 0);
-});
-
 test("a type's summary: templates tried, best marks per template, mistakes most often", () => {
   const attempts = [
     attempt("d1", 1, 1, ["drag as resultant"]),
@@ -85,6 +38,8 @@ test("a type's summary: templates tried, best marks per template, mistakes most 
     { name: "drag as resultant", count: 1 },
   ]);
   assert.equal(s.templates.d1.attempts, 2);
+  assert.equal(s.templates.d1.withHelp, 0);
+  assert.equal(P.summarise(kind, [attempt("d1", 2, 1, [], { help: 2 }), attempt("d1", 4, 2)]).templates.d1.withHelp, 1);
   assert.equal(s.templates.d3.best, null);
 });
 
@@ -112,4 +67,25 @@ test("marks and counts are written as the book writes them", () => {
   assert.equal(P.marksText(1, 1), "1/1 mark");
   assert.equal(P.times(1), "once");
   assert.equal(P.times(12), "12 times");
+});
+
+test("a type's line: marks, tried, due today", () => {
+  const s = P.summarise(kind, [attempt("d1", 3, 1), attempt("d2", 1, 2)]);
+  assert.equal(P.typeLine(s, 1), "4/8 marks · 2 of 3 tried · 1 due");
+  assert.equal(P.typeLine(P.summarise(kind, []), 0), "no marks yet · 0 of 3 tried");
+  assert.equal(P.typeLine({ inBank: 0 }, 0), "not in the bank yet");
+});
+
+test("due dates read as a student says them", () => {
+  const now = new Date(2026, 10, 26, 9).getTime();
+  const ends = new Date(2026, 10, 27).getTime();
+  assert.equal(P.dueText(now - 1000, now, ends), "due today");
+  assert.equal(P.dueText(new Date(2026, 10, 28, 9).getTime(), now, ends), "due 28 Nov");
+  assert.equal(P.dueText(new Date(2027, 0, 3).getTime(), now, ends), "due 3 Jan 2027");
+});
+
+test("a mock test's result: paper, date, score", () => {
+  const mock = { paper: "1", at: new Date(2026, 10, 26, 9).getTime(), earned: 14, available: 20, ended: "submitted" };
+  assert.equal(P.mockText(mock), "Paper 1, 26 Nov 2026: 14/20 marks (70\u202f%)");
+  assert.match(P.mockText({ ...mock, ended: "time" }), /ended when time ran out$/);
 });

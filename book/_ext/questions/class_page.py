@@ -21,7 +21,7 @@ from fresh_figures import uses_modules  # book/_ext: re-read the page when the b
 from notation import add_notation_script
 from sphinx.util.docutils import SphinxDirective
 
-from . import store
+from . import schedule, store
 from .progress import book_types
 
 DIRECTIVE = "class-progress"
@@ -89,6 +89,7 @@ def add_assets(app, pagename, templatename, context, doctree):
     if pagename in store.docs(app.env, DIRECTIVE):
         app.add_css_file("class.css")
         add_notation_script(app)
+        schedule.add_store_script(app)  # reads a file of format 1 or 2
         for script in ("progress-file.js", "progress.js", "class.js"):  # each uses the ones before
             app.add_js_file(script, loading_method="defer")
 

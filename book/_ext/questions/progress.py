@@ -1,16 +1,20 @@
-"""Your practice: what a student has done with the bank's templates, by question type::
+"""Your practice: a plan for today, then what a student has done, by question type::
 
     ```{practice-progress}
     ```
 
-The build writes every type with its templates, their marks and the page that places
-each; static/progress.js adds the attempts this browser keeps (questions.js records them).
+The build writes every type with its templates (marks, the page that places each, the section
+each named mistake sends a student back to), the self-test's definitions and the page that
+holds them. In the browser, static/progress-plan.js writes the plan (cards due, Start, the
+weakest type, the most frequent mistake) from the store (progress-store.js) and the schedule
+(schedule.js); static/progress.js writes the record and moves it to and from a file.
 Without JavaScript, and in print, the page still lists and links each type's questions.
 """
 
 from __future__ import annotations
 
 import json
+import re
 from html import escape
 
 from docutils import nodes
@@ -18,7 +22,12 @@ from fresh_figures import uses_modules  # book/_ext: re-read a page when its mod
 from notation import add_notation_script  # book/_ext/notation: the browser's number writer
 from sphinx.util.docutils import SphinxDirective
 
-from . import store
+from . import form, schedule, store
+
+#: The slips the marking engine names itself (questions.js records them by these names) and the
+#: rule table's row that explains each (getting-the-marks): Your practice links them there.
+GENERIC_MISTAKES = {"sign or direction": "rule:direction", "unit missing or wrong": "rule:missing-unit",
+                    "1 s.f. answer": "rule:too-few-sf"}
 
 
 class practice_progress(nodes.General, nodes.Element):
@@ -42,6 +51,41 @@ def book_types(config) -> list[tuple]:
             for topic in store.topics(config) for kind in topic.types]
 
 
+def _mistake_sections(template) -> dict[str, str]:
+    """{mistake name: section id} for a template: where its feedback sends a student who made
+    it (the mistake's own section, else its part's), as marking.js's sectionFor does."""
+    out = {}
+    for part in template.variant(0).parts:
+        for mistake in getattr(part, "mistakes", None) or ():
+            see = getattr(mistake, "see", None) or getattr(part, "see", None)
+            if see:
+                out.setdefault(mistake.name, see)
+    return out
+
+
+def definition_slug(term: str) -> str:
+    """A definition's card id, as selftest.js names it (its slug)."""
+    return re.sub(r"[^a-z0-9]+", "-", term.lower()).strip("-")
+
+
+def _definitions(app, fromdoc: str) -> dict | None:
+    """The self-test's cards: {page, cards: [{slug, term}]}, from the first page holding one."""
+    env = app.env
+    for docname in sorted(store.docs(env, store.SELF_TEST)):
+        cards = []
+        for box in env.get_doctree(docname).findall(nodes.admonition):
+            if "self-test" not in box["classes"]:
+                continue
+            for item in box.findall(nodes.list_item):
+                strong = next(iter(item.findall(nodes.strong)), None)
+                if strong is not None:
+                    term = strong.astext().rstrip().rstrip(":").strip()
+                    cards.append({"slug": definition_slug(term), "term": term})
+        if cards:
+            return {"page": app.builder.get_relative_uri(fromdoc, docname), "cards": cards}
+    return None
+
+
 def _progress_data(app, fromdoc: str) -> dict:
     """Every template of the book's topics by type (each type's title and method page as its
     topic declares them), with its title, marks and the page placing it (None if no page
@@ -54,52 +98,83 @@ def _progress_data(app, fromdoc: str) -> dict:
     types = []
     for kind, entries in book_types(app.config):
         templates = [{**entry, "page": app.builder.get_relative_uri(fromdoc, placed[entry["key"]])
-                      if entry["key"] in placed else None} for entry in entries]
+                      if entry["key"] in placed else None, "see": _mistake_sections(store.template(app.config, entry["key"]))}
+                     for entry in entries]
         method = app.builder.get_relative_uri(fromdoc, kind.method) if kind.method in env.all_docs else None
         types.append({"type": kind.key, "name": kind.title, "templates": templates, "method": method})
-    return {"book": store.book_id(app.config), "types": types}
+    return {"book": store.book_id(app.config), "types": types, "generic": GENERIC_MISTAKES,
+            "definitions": _definitions(app, fromdoc)}
 
 
 NEEDS_BROWSER = ("Your practice is kept in the web browser you practise in: open this page in the "
                  "web version of the book, with JavaScript on, to see it.")
 
 
+def _plan_html() -> list[str]:
+    """The plan's frame (progress-plan.js fills it): in the page, so filling it shifts nothing."""
+    return ['<section class="pp-plan" aria-labelledby="pp-plan-heading"><h2 id="pp-plan-heading">Your plan</h2>'
+            '<p class="pp-due"><span class="pp-due-text"></span> '
+            '<button type="button" class="pp-start" disabled>Start</button></p>'
+            '<p class="pp-weakest"></p><p class="pp-often"></p></section>']
+
+
+def _type_html(kind: dict) -> list[str]:
+    """One type: a line (marks, tried, due) whose details (its questions, mistakes, links) fold."""
+    name = escape(kind["name"])
+    placed = [t for t in kind["templates"] if t["page"]]
+    if kind["templates"]:
+        summary = store.count(len(kind["templates"]), "question", "questions") + " in the bank."
+    else:
+        summary = "Not in the bank yet: no question of this type to practise here so far."
+    html = [f'<details class="pp-type" id="pp-type-{kind["type"]}" data-type="{kind["type"]}"><summary><span class="pp-name">{name}</span>'
+            f' <span class="pp-line"></span></summary>'
+            f'<p class="pp-summary">{summary}</p><p class="pp-mistakes" hidden></p>']
+    if kind["templates"]:
+        html.append('<ul class="pp-templates">')
+        for t in kind["templates"]:
+            title = escape(t["title"])
+            link = f'<a href="{escape(t["page"])}#question-{escape(t["key"])}">{title}</a>' if t["page"] else title
+            html.append(f'<li data-key="{escape(t["key"])}">{link} '
+                        f'<span class="pp-marks">({store.count(t["marks"], "mark", "marks")})</span></li>')
+        html.append("</ul>")
+    actions = []
+    if placed:
+        first = placed[0]
+        actions.append(f'<a class="pp-practise" href="{escape(first["page"])}#question-{escape(first["key"])}">'
+                       f'Practise this type<span class="pp-hidden-text">: {name}</span></a>')
+    if kind["method"]:
+        actions.append(f'<a class="pp-method" href="{escape(kind["method"])}">The method for this type'
+                       f'<span class="pp-hidden-text">: {name}</span></a>')
+    if actions:
+        html.append(f'<p class="pp-actions">{" ".join(actions)}</p>')
+    html.append("</details>")
+    return html
+
+
 def visit_practice_progress(self, node):
     """Without JavaScript (and in print) the page still lists each type's questions and
-    links to them; progress.js adds what this browser has kept."""
+    links to them; progress-plan.js and progress.js add what this browser has kept."""
     data = node["data"]
-    payload = json.dumps(data, ensure_ascii=False).replace("</", "<\\/")
+    # Only the sections a template's named mistakes (or the engine's own slips) send a student to.
+    links = form.section_links(self)
+    used = {see for kind in data["types"] for t in kind["templates"] for see in t["see"].values()}
+    used.update(data["generic"].values())
+    data = {**data, "sections": {ident: links[ident] for ident in sorted(used) if ident in links}}
+    payload = json.dumps(data, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
     html = ['<div class="pp">', f'<script type="application/json" class="pp-data">{payload}</script>',
-            f'<p class="pp-needs-js">{escape(NEEDS_BROWSER)}</p>']
+            f'<p class="pp-needs-js">{escape(NEEDS_BROWSER)}</p>', *_plan_html(),
+            '<section class="pp-types" aria-labelledby="pp-types-heading">'
+            '<h2 id="pp-types-heading">By type</h2>']
     for kind in data["types"]:
-        ident, name = f"pp-type-{kind['type']}", escape(kind["name"])
-        placed = [t for t in kind["templates"] if t["page"]]
-        html.append(f'<section class="pp-type" data-type="{kind["type"]}" aria-labelledby="{ident}">'
-                    f'<h2 id="{ident}">{name}</h2>')
-        if kind["templates"]:
-            summary = store.count(len(kind["templates"]), "question", "questions") + " in the bank."
-        else:
-            summary = "Not in the bank yet: no question of this type to practise here so far."
-        html.append(f'<p class="pp-summary">{summary}</p><p class="pp-mistakes" hidden></p>')
-        if kind["templates"]:
-            html.append('<ul class="pp-templates">')
-            for t in kind["templates"]:
-                title = escape(t["title"])
-                link = f'<a href="{escape(t["page"])}#question-{escape(t["key"])}">{title}</a>' if t["page"] else title
-                html.append(f'<li data-key="{escape(t["key"])}">{link} '
-                            f'<span class="pp-marks">({store.count(t["marks"], "mark", "marks")})</span></li>')
-            html.append("</ul>")
-        actions = []
-        if placed:
-            first = placed[0]
-            actions.append(f'<a class="pp-practise" href="{escape(first["page"])}#question-{escape(first["key"])}">'
-                           f'Practise this type<span class="pp-hidden-text">: {name}</span></a>')
-        if kind["method"]:
-            actions.append(f'<a class="pp-method" href="{escape(kind["method"])}">The method for this type'
-                           f'<span class="pp-hidden-text">: {name}</span></a>')
-        if actions:
-            html.append(f'<p class="pp-actions">{" ".join(actions)}</p>')
-        html.append("</section>")
+        html.extend(_type_html(kind))
+    html.append("</section>")
+    if data["definitions"]:
+        html.append('<section class="pp-defs" aria-labelledby="pp-defs-heading">'
+                    f'<h2 id="pp-defs-heading">Definitions self-test</h2><p class="pp-defs-line">'
+                    f'{len(data["definitions"]["cards"])} definitions to learn: '
+                    f'<a href="{escape(data["definitions"]["page"])}">the self-test</a>.</p></section>')
+    html.append('<section class="pp-mocks" aria-labelledby="pp-mocks-heading" hidden>'
+                '<h2 id="pp-mocks-heading">Mock tests</h2><ul class="pp-mock-list"></ul></section>')
     html.append(
         '<section class="pp-file" aria-labelledby="pp-file-heading" hidden>'
         '<h2 id="pp-file-heading">Move or clear your progress</h2>'
@@ -128,11 +203,22 @@ def add_assets(app, pagename, templatename, context, doctree):
     if pagename in store.docs(app.env, "practice-progress"):
         app.add_css_file("progress.css")
         add_notation_script(app)
-        app.add_js_file("progress-file.js", loading_method="defer")  # what Export writes
-        app.add_js_file("progress.js", loading_method="defer")
+        schedule.add_plan_scripts(app)  # the store, ts-fsrs and the schedule
+        app.add_js_file("progress-file.js", loading_method="defer", priority=433)  # what Export writes
+        app.add_js_file("progress.js", loading_method="defer", priority=434)  # the record, the file
+        app.add_js_file("progress-plan.js", loading_method="defer", priority=435)  # the plan, Start
+
+
+def add_review_script(app, pagename, templatename, context, doctree):
+    """Where Start's cards are served (a question's page, the self-test's): review.js, which
+    moves the student on to the next card after the Check or the mark."""
+    if pagename in store.questions(app.env) or pagename in store.docs(app.env, store.SELF_TEST):
+        app.add_css_file("review.css")
+        app.add_js_file("review.js", loading_method="defer", priority=510)  # after questions.js
 
 
 def setup(app):
+    app.connect("html-page-context", add_review_script)
     app.add_node(practice_progress, html=(visit_practice_progress, None))
     app.add_directive("practice-progress", PracticeProgressDirective)
     app.connect("html-page-context", add_assets)

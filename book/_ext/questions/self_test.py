@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from docutils import nodes
 
-from . import store
+from . import schedule, store
 
 
 def find(app, doctree):
@@ -34,6 +34,7 @@ def add_bars(app, doctree, docname):
 def add_assets(app, pagename, templatename, context, doctree):
     if pagename in store.docs(app.env, store.SELF_TEST):
         app.add_css_file("selftest.css")
+        schedule.add_store_script(app)  # each mark is kept in the progress store
         app.add_js_file("selftest.js", loading_method="defer")
 
 

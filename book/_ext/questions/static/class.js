@@ -6,7 +6,8 @@
  *
  * A file is refused, with its name and why, when it is not JSON, has no format version, is
  * from another book or its records do not match their checksum (progress-file.js), or an
- * attempt in it is not one Your practice would keep (progress.js, readProgress). The others
+ * attempt in it is not one Your practice would keep (progress-store.js, read: formats 1 and 2,
+ * format 1 upgraded; the checksum is of the attempts as the file holds them). The others
  * still load. A student is the file's name without its extension: "amira-khan.json" is
  * amira-khan; a file of a name loaded before replaces it (a later export holds all of an
  * earlier one's attempts). Marks count as Your practice counts them (summarise: the best
@@ -17,6 +18,7 @@
 
   var Notation = root.Notation || require("../../notation/static/notation.js");
   var Progress = root.PracticeProgress || require("./progress.js");
+  var Store = root.ProgressStore || require("./progress-store.js");
   var ProgressFile = root.ProgressFile || require("./progress-file.js");
 
   function count(n) {
@@ -38,9 +40,11 @@
       return { ok: false, name: name, message: message };
     }
     if (!text.trim()) return Promise.resolve(refused("it is empty."));
-    var read = Progress.readProgress(text);
+    var read = Store.read(text);
     if (!read.ok) return Promise.resolve(refused(read.message));
-    return ProgressFile.exportProblem(read.progress, book).then(function (problem) {
+    // The checksum is of the records as exported (a format 1 file's, before its upgrade).
+    var file = JSON.parse(text);
+    return ProgressFile.exportProblem(file, book).then(function (problem) {
       if (problem) return refused(problem);
       return { ok: true, name: name, student: studentName(name), attempts: read.progress.attempts };
     });

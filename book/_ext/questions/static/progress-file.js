@@ -1,7 +1,8 @@
 /* The file "Export progress" writes (progress.js, Your practice) and the class page reads
- * (class.js): the progress of format 1 as the browser keeps it, plus two fields
+ * (class.js): the progress as the browser keeps it (format 2, progress-store.js, with the
+ * schedule), plus two fields
  *
- *   {version: 1, book: "dynamics", sha256: "…64 hex digits…", attempts: [...], ...}
+ *   {version: 2, book: "dynamics", sha256: "…64 hex digits…", attempts: [...], ...}
  *
  * book: the id of the book that wrote it (the build writes it into the page's data: the
  * keys of the book's topics, book/_ext/questions/store.py book_id), so a file from another
@@ -10,8 +11,8 @@
  * JSON.parse reads it back (so the file's spacing does not count; any change to a record
  * does). Anyone can compute it again: it catches a casual edit, not a determined student.
  *
- * The format version stays 1: readProgress (progress.js) reads these files as it reads any
- * format-1 progress, and still reads the exports written before these two fields.
+ * ProgressStore.read reads these files, and the format 1 exports written before (with or
+ * without these two fields; a format 1 file's checksum is of its attempts as written).
  * Plain JavaScript; Web Crypto (crypto.subtle: https, http://localhost and file:// pages).
  * Runs under Node for the tests. */
 (function (root) {

@@ -1,24 +1,21 @@
-/* "Your practice": what a student has done with the bank, by question type, from the
- * attempts questions.js keeps in this browser. Plain JavaScript, offline, no physics.
- * The pure part (top) runs under Node for the tests; the page code (bottom) in a browser.
+/* "Your practice", the record: what a student has done with the bank, by question type (a
+ * line each: marks, tried, due; its questions folded beneath), the mock tests, and moving the
+ * record to and from a file. Plain JavaScript, offline, no physics. The plan at the top of
+ * the page is progress-plan.js's. The pure part (top) runs under Node for the tests; the page
+ * code (bottom) in a browser.
  *
- * Storage: localStorage "dynamics-progress-v1" holds
- *   {version: 1, attempts: [{question, type, variant, earned, available, at, mistakes: [names]}]}.
- * Versioning: this page reads format 1 only. A later build that changes the format must bump
- * the version and keep its data under a new key (upgrading a v1 store it finds, never
- * deleting it). If this page meets any other version, in the store or in an imported file,
- * it reads nothing from it and writes nothing over it: the store is left exactly as it is
- * (export still copies it out whole), and such a file is refused with the reason.
- * Export adds the book's id and a checksum of the attempts (progress-file.js, for the
- * teacher's class page); import reads files with or without them. */
+ * Storage: the progress store (progress-store.js, format 2, "dynamics-progress-v2"; a format 1
+ * store is upgraded on reading and never deleted). A store of a format this page does not know
+ * is left exactly as it is (Export still copies it out whole) and nothing is written over it.
+ * Export writes format 2 with the schedule (schedule.js), the book's id and a checksum of the
+ * attempts (progress-file.js, for the teacher's class page); Import reads formats 1 and 2 and
+ * adds each attempt once. */
 (function (root) {
   "use strict";
 
   var Notation = root.Notation || require("../../notation/static/notation.js");
-  var ProgressFile = root.ProgressFile || require("./progress-file.js");
 
-  var STORE = "dynamics-progress-v1";
-  var VERSION = 1;
+  var MONTHS = ["Jan", "Feb", "Mar", "Apr", "May", "Jun", "Jul", "Aug", "Sep", "Oct", "Nov", "Dec"];
 
   function count(n) {
     return Notation.formatNumber(n, null, { decimals: 0 });
@@ -30,100 +27,19 @@
     return n === 1 ? "once" : n === 2 ? "twice" : count(n) + " times";
   }
 
-  // What is wrong with one attempt, or null.
-  function attemptProblem(a) {
-    if (!a || typeof a !== "object" || Array.isArray(a)) return "is not an attempt";
-    if (typeof a.question !== "string" || !a.question) return "names no question";
-    if (typeof a.type !== "string") return "has no question type";
-    if (!Number.isInteger(a.variant) || a.variant < 0) return "has no variant number";
-    if (!Number.isInteger(a.available) || a.available < 1) return "has no marks available";
-    if (!Number.isInteger(a.earned) || a.earned < 0 || a.earned > a.available) {
-      return "has marks earned that are not between 0 and the marks available";
-    }
-    if (typeof a.at !== "number" || !isFinite(a.at)) return "has no time";
-    if (
-      !Array.isArray(a.mistakes) ||
-      a.mistakes.some(function (m) {
-        return typeof m !== "string";
-      })
-    ) {
-      return "has no list of mistakes";
-    }
-    return null;
-  }
-
-  /* Read stored or exported progress (text). {ok: true, progress} or {ok: false, message},
-   * the message saying what is wrong. Nothing stored reads as empty progress. */
-  function readProgress(text) {
-    if (text === null || text === undefined || text === "") {
-      return { ok: true, progress: { version: VERSION, attempts: [] } };
-    }
-    var data;
-    try {
-      data = JSON.parse(text);
-    } catch {
-      return { ok: false, message: "it is not a progress file from this book (it is not JSON)." };
-    }
-    if (!data || typeof data !== "object" || Array.isArray(data) || !("version" in data)) {
-      return { ok: false, message: "it is not a progress file from this book (it has no format version)." };
-    }
-    if (data.version !== VERSION) {
-      return {
-        ok: false,
-        message:
-          typeof data.version === "number" && data.version > VERSION
-            ? "it was saved by a newer version of the book (format " +
-              count(data.version) +
-              "); this page reads format " +
-              count(VERSION) +
-              ". Open it in the newer book."
-            : "its format version (" + String(data.version).slice(0, 20) + ") is not one this book wrote.",
-      };
-    }
-    if (!Array.isArray(data.attempts)) {
-      return { ok: false, message: "it has no list of attempts." };
-    }
-    for (var i = 0; i < data.attempts.length; i++) {
-      var problem = attemptProblem(data.attempts[i]);
-      if (problem) {
-        return {
-          ok: false,
-          message: "attempt " + count(i + 1) + " of " + count(data.attempts.length) + " " + problem + ".",
-        };
-      }
-    }
-    return { ok: true, progress: data };
-  }
-
-  function identity(a) {
-    return JSON.stringify([a.question, a.variant, a.at, a.earned, a.available, a.mistakes]);
-  }
-
-  /* Attempts of both, each once, oldest first: importing the same file twice adds nothing.
-   * Returns {attempts, added, already}. */
-  function mergeAttempts(kept, incoming) {
-    var seen = {},
-      out = kept.slice(),
-      added = 0;
-    kept.forEach(function (a) {
-      seen[identity(a)] = true;
-    });
-    incoming.forEach(function (a) {
-      var id = identity(a);
-      if (seen[id]) return;
-      seen[id] = true;
-      out.push(a);
-      added += 1;
-    });
-    out.sort(function (a, b) {
-      return a.at - b.at;
-    });
-    return { attempts: out, added: added, already: incoming.length - added };
+  /* When a card is due, as a student reads it: "due today" up to the end of today (dayEnds,
+   * local midnight), else "due 28 Nov" (with the year when it is not this one). */
+  function dueText(due, now, dayEnds) {
+    if (due < dayEnds) return "due today";
+    var day = new Date(due);
+    var year = day.getFullYear() === new Date(now).getFullYear() ? "" : " " + day.getFullYear();
+    return "due " + day.getDate() + " " + MONTHS[day.getMonth()] + year;
   }
 
   /* One type's progress. kind: {type, name, templates: [{key, title, marks, page}]} (the
    * build's list). Attempts count by their question's key, so a template the bank no longer
-   * has is kept in the store but not shown. Marks: the best attempt at each template tried. */
+   * has is kept in the store but not shown. Marks: the best attempt at each template tried.
+   * withHelp: the attempts that used help before their Check. */
   function summarise(kind, attempts) {
     var byKey = {},
       mistakes = {},
@@ -150,12 +66,14 @@
     kind.templates.forEach(function (t) {
       var entry = byKey[t.key],
         best = null,
-        last = null;
+        last = null,
+        withHelp = 0;
       entry.attempts.forEach(function (a) {
         if (!best || a.earned / a.available > best.earned / best.available) best = a;
         if (!last || a.at >= last.at) last = a;
+        if (a.help > 0) withHelp += 1;
       });
-      templates[t.key] = { attempts: entry.attempts.length, best: best, last: last };
+      templates[t.key] = { attempts: entry.attempts.length, best: best, last: last, withHelp: withHelp };
       if (best) {
         tried += 1;
         earned += best.earned;
@@ -210,36 +128,72 @@
     return template.page + "?new=" + key + "#question-" + key;
   }
 
+  /* A type's line: "3/8 marks · 2 of 9 tried · 1 due" (due: its cards due today). */
+  function typeLine(summary, dueToday) {
+    if (!summary.inBank) return "not in the bank yet";
+    var parts = [
+      summary.tried ? marksText(summary.earned, summary.available) : "no marks yet",
+      count(summary.tried) + " of " + count(summary.inBank) + " tried",
+    ];
+    if (dueToday) parts.push(count(dueToday) + " due");
+    return parts.join(" · ");
+  }
+
+  /* A mock test as Your practice lists it: "Paper 1, 26 Nov 2026: 14/20 marks (70 %)". */
+  function mockText(mock) {
+    var day = new Date(mock.at);
+    var share = mock.available ? Math.round((100 * mock.earned) / mock.available) : 0;
+    return (
+      "Paper " +
+      mock.paper +
+      ", " +
+      day.getDate() +
+      " " +
+      MONTHS[day.getMonth()] +
+      " " +
+      day.getFullYear() +
+      ": " +
+      marksText(mock.earned, mock.available) +
+      " (" +
+      count(share) +
+      "\u202f%)" +
+      (mock.ended === "time" ? ", ended when time ran out" : "")
+    );
+  }
+
   var api = {
-    STORE: STORE,
-    VERSION: VERSION,
-    readProgress: readProgress,
-    mergeAttempts: mergeAttempts,
     summarise: summarise,
     nextTemplate: nextTemplate,
     practiseUrl: practiseUrl,
     marksText: marksText,
     times: times,
+    dueText: dueText,
+    typeLine: typeLine,
+    mockText: mockText,
+    count: count,
   };
   if (typeof module === "object" && module.exports) module.exports = api;
   else root.PracticeProgress = api;
 
   // ------------------------------------------------------------------ page
 
-  if (typeof document === "undefined") return;
+  if (typeof document === "undefined" || !root.ProgressStore) return;
+  var Store = root.ProgressStore;
+  var Schedule = root.Schedule;
+  var ProgressFile = root.ProgressFile;
 
-  function getStored() {
+  function getStored(key) {
     try {
-      return localStorage.getItem(STORE);
+      return localStorage.getItem(key);
     } catch {
       return null;
     }
   }
 
-  function setStored(text) {
+  function setStored(key, text) {
     try {
-      if (text === null) localStorage.removeItem(STORE);
-      else localStorage.setItem(STORE, text);
+      if (text === null) localStorage.removeItem(key);
+      else localStorage.setItem(key, text);
       return true;
     } catch {
       return false;
@@ -263,17 +217,32 @@
       status.textContent = message;
     }
 
-    function current() {
-      return readProgress(getStored());
+    // Each card's schedule: {id: {due, today}} (schedule.js replays the attempts).
+    function dueByCard(progress, now) {
+      var out = {};
+      Schedule.cardsByDue(progress, now).forEach(function (c) {
+        out[c.id] = c;
+      });
+      return out;
     }
 
     function render() {
-      var read = current();
-      var attempts = read.ok ? read.progress.attempts : [];
+      var read = Store.load();
+      var progress = read.ok ? read.progress : Store.empty();
+      var now = Date.now(),
+        dayEnds = Schedule.endOfDay(now),
+        due = dueByCard(progress, now);
       data.types.forEach(function (kind) {
         var section = box.querySelector('.pp-type[data-type="' + kind.type + '"]');
-        if (!kind.templates.length) return; // the static "not in the bank yet" stands
-        var s = summarise(kind, attempts);
+        if (!kind.templates.length) {
+          section.querySelector(".pp-line").textContent = typeLine({ inBank: 0 }, 0);
+          return; // the static "not in the bank yet" stands
+        }
+        var s = summarise(kind, progress.attempts);
+        var dueToday = kind.templates.filter(function (t) {
+          return due[t.key] && due[t.key].today;
+        }).length;
+        section.querySelector(".pp-line").textContent = typeLine(s, dueToday);
         var bank = count(s.inBank) + " question" + (s.inBank === 1 ? "" : "s") + " in the bank";
         section.querySelector(".pp-summary").textContent = s.tried
           ? "Tried " +
@@ -300,7 +269,13 @@
           var entry = s.templates[t.key];
           var marks = section.querySelector('li[data-key="' + t.key + '"] .pp-marks');
           marks.textContent = entry.best
-            ? "(best " + marksText(entry.best.earned, entry.best.available) + ", tried " + times(entry.attempts) + ")"
+            ? "(best " +
+              marksText(entry.best.earned, entry.best.available) +
+              ", tried " +
+              times(entry.attempts) +
+              (entry.withHelp ? ", " + times(entry.withHelp) + " with help" : "") +
+              (due[t.key] ? ", " + dueText(due[t.key].due, now, dayEnds) : "") +
+              ")"
             : "(" + count(t.marks) + " mark" + (t.marks === 1 ? "" : "s") + ", not tried)";
         });
         var link = section.querySelector(".pp-practise");
@@ -312,7 +287,19 @@
             "Next: " + next.title + (s.templates[next.key].last ? "" : " (not tried yet)") + ", with new numbers";
         }
       });
-      clearButton.disabled = !read.ok ? false : attempts.length === 0;
+      var mocks = box.querySelector(".pp-mocks");
+      mocks.hidden = !progress.mocks.length;
+      var list = mocks.querySelector(".pp-mock-list");
+      list.textContent = "";
+      progress.mocks
+        .slice()
+        .reverse()
+        .forEach(function (mock) {
+          var item = document.createElement("li");
+          item.textContent = mockText(mock);
+          list.appendChild(item);
+        });
+      clearButton.disabled = !read.ok ? false : progress.attempts.length + progress.mocks.length === 0;
       if (!read.ok) {
         say(
           "The progress kept in this browser cannot be read here: " +
@@ -320,6 +307,8 @@
             " It is kept as it is; Export copies it out.",
         );
       }
+      // The plan (progress-plan.js) follows the same record.
+      box.dispatchEvent(new CustomEvent("pp-changed"));
     }
 
     function download(text, name) {
@@ -335,28 +324,31 @@
       }, 1000);
     }
 
-    // The file carries the book's id and its records' checksum (progress-file.js).
+    function plural(n, one) {
+      return count(n) + " " + one + (n === 1 ? "" : "s");
+    }
+
+    // The file carries the schedule, the book's id and its records' checksum (progress-file.js).
     box.querySelector(".pp-export").addEventListener("click", function () {
-      var stored = getStored();
-      var read = readProgress(stored);
+      var read = Store.load();
       var name = "dynamics-progress-" + new Date().toISOString().slice(0, 10) + ".json";
       if (!read.ok) {
-        download(stored, name); // a format this page cannot read: copied out whole
+        // a format this page cannot read: copied out whole
+        download(getStored(Store.STORE) || getStored(Store.OLD_STORE), name);
         say("Exported your progress to " + name + ".");
         return;
       }
-      ProgressFile.exportFile(read.progress, data.book).then(function (file) {
-        download(JSON.stringify(file, null, 1), name);
-        var n = file.attempts.length;
+      var progress = read.progress;
+      progress.schedule = Schedule.replay(progress);
+      ProgressFile.exportFile(progress, data.book).then(function (out) {
+        download(JSON.stringify(out, null, 1), name);
         say(
           "Exported " +
-            count(n) +
-            " attempt" +
-            (n === 1 ? "" : "s") +
+            plural(out.attempts.length, "attempt") +
             " to " +
             name +
             ". Import that file on another device to carry on there" +
-            (file.sha256 ? ", or give it to your teacher." : "."),
+            (out.sha256 ? ", or give it to your teacher." : "."),
         );
       });
     });
@@ -367,13 +359,13 @@
       var reader = new FileReader();
       reader.onload = function () {
         importInput.value = ""; // the same file can be chosen again
-        var incoming = readProgress(String(reader.result));
+        var incoming = Store.read(String(reader.result));
         var name = chosen.name;
         if (!incoming.ok) {
           say("Nothing was imported from " + name + ": " + incoming.message + " Your progress here is unchanged.");
           return;
         }
-        var here = current();
+        var here = Store.load();
         if (!here.ok) {
           say(
             "Nothing was imported: the progress kept in this browser is in a format this page " +
@@ -381,19 +373,16 @@
           );
           return;
         }
-        var merged = mergeAttempts(here.progress.attempts, incoming.progress.attempts);
-        var progress = here.progress;
-        progress.attempts = merged.attempts;
-        if (!setStored(JSON.stringify(progress))) {
+        var merged = Store.merge(here.progress, incoming.progress);
+        merged.progress.schedule = Schedule.replay(merged.progress);
+        if (!Store.save(merged.progress)) {
           say("Nothing was imported: this browser does not let the page keep data (private mode?).");
           return;
         }
         render();
         say(
           "Imported " +
-            count(merged.added) +
-            " attempt" +
-            (merged.added === 1 ? "" : "s") +
+            plural(merged.added, "attempt") +
             " from " +
             name +
             (merged.already ? " (" + count(merged.already) + " were here already)" : "") +
@@ -407,9 +396,11 @@
       reader.readAsText(chosen);
     });
 
+    /* Clear keeps an empty format 2 store (the format 1 one, never deleted, would otherwise
+     * be read again); Undo puts back what was there, with any attempt made since. */
     clearButton.addEventListener("click", function () {
-      cleared = getStored();
-      setStored(null);
+      cleared = getStored(Store.STORE);
+      Store.save(Store.empty());
       render();
       undoButton.hidden = false;
       undoButton.focus();
@@ -417,14 +408,11 @@
     });
 
     undoButton.addEventListener("click", function () {
-      var now = current();
-      var before = readProgress(cleared);
-      if (now.ok && now.progress.attempts.length && before.ok) {
-        // attempts made since: keep both
-        now.progress.attempts = mergeAttempts(before.progress.attempts, now.progress.attempts).attempts;
-        setStored(JSON.stringify(now.progress));
-      } else {
-        setStored(cleared);
+      var since = Store.load();
+      setStored(Store.STORE, cleared);
+      var before = Store.load();
+      if (since.ok && before.ok && since.progress.attempts.length + since.progress.mocks.length) {
+        Store.save(Store.merge(before.progress, since.progress).progress); // attempts made since: keep both
       }
       cleared = null;
       undoButton.hidden = true;
@@ -435,7 +423,13 @@
 
     // Another tab checking an answer updates this page.
     window.addEventListener("storage", function (event) {
-      if (event.key === STORE || event.key === null) render();
+      if (event.key === Store.STORE || event.key === Store.OLD_STORE || event.key === null) render();
+    });
+    // Printed, every type's questions show.
+    window.addEventListener("beforeprint", function () {
+      Array.prototype.forEach.call(box.querySelectorAll("details.pp-type"), function (d) {
+        d.open = true;
+      });
     });
     render();
   }

@@ -3,16 +3,17 @@
  * each one, reveals it and marks it known or not yet. Native buttons only: it works by
  * keyboard. Plain JavaScript, offline.
  *
- * Storage: with the rest of the student's progress, in localStorage "dynamics-progress-v1"
- * (questions.js, progress.js), as a versioned field of that object:
- *   {version: 1, attempts: [...], definitions: {version: 1, cards: {slug: {mark, at}}}}
- * mark is "known" or "not-yet"; slug is the term in lower case with hyphens ("newton-s-first-law").
- * A store of another version (or a definitions field of another version) is left untouched. */
+ * Storage: with the rest of the student's progress, in the progress store (progress-store.js,
+ * format 2): ProgressStore.recordDefinition keeps each mark in definitions.cards ({slug: {mark,
+ * at}}, mark "known" or "not-yet") and as an attempt at the card "definition:SLUG", which the
+ * spaced review (schedule.js) rates. slug is the term in lower case with hyphens
+ * ("newton-s-first-law"); the build names the cards the same way (questions/progress.py).
+ *
+ * One card: PAGE?card=SLUG (Your practice's Start, review.js) opens the test at that card. A
+ * mark dispatches a bubbling "st-marked" event ({slug, known}) from the card. */
 (function (root) {
   "use strict";
 
-  var STORE = "dynamics-progress-v1";
-  var VERSION = 1; // of the definitions field
   var MARKS = { known: "Known", "not-yet": "Not yet" };
 
   function slug(term) {
@@ -22,45 +23,22 @@
       .replace(/^-|-$/g, "");
   }
 
-  /* The cards' marks kept in this browser: {slug: {mark, at}}; {} when none or unreadable. */
-  function readCards(text) {
-    try {
-      var progress = JSON.parse(text);
-      var d = progress && progress.version === 1 && progress.definitions;
-      return d && d.version === VERSION && d.cards && typeof d.cards === "object" ? d.cards : {};
-    } catch {
-      return {};
-    }
+  /* The cards' marks in a progress object (format 2): {slug: {mark, at}}; {} when none. */
+  function readCards(progress) {
+    var d = progress && progress.definitions;
+    return d && d.cards && typeof d.cards === "object" ? d.cards : {};
   }
 
-  /* The store with one card's mark set (text), or null when the store is not one to write into. */
-  function withMark(text, key, mark, at) {
-    var progress;
-    try {
-      progress = text ? JSON.parse(text) : { version: 1, attempts: [] };
-    } catch {
-      return null;
-    }
-    if (!progress || progress.version !== 1 || !Array.isArray(progress.attempts)) return null;
-    var d = progress.definitions;
-    if (d === undefined) d = progress.definitions = { version: VERSION, cards: {} };
-    if (!d || d.version !== VERSION || typeof d.cards !== "object") return null;
-    d.cards[key] = { mark: mark, at: at };
-    return JSON.stringify(progress);
-  }
-
-  var api = { slug: slug, readCards: readCards, withMark: withMark };
+  var api = { slug: slug, readCards: readCards };
   if (typeof module === "object" && module.exports) module.exports = api;
   else root.DefinitionsSelfTest = api;
 
-  if (typeof document === "undefined") return;
+  if (typeof document === "undefined" || !root.ProgressStore) return;
+  var Store = root.ProgressStore;
 
   function stored() {
-    try {
-      return localStorage.getItem(STORE);
-    } catch {
-      return null;
-    }
+    var read = Store.load();
+    return read.ok ? read.progress : null;
   }
 
   function setUp(box, index) {
@@ -100,6 +78,7 @@
       reveal.textContent = "Show the definition of " + named;
       reveal.setAttribute("aria-controls", definition.id);
       item.classList.add("st-card");
+      item.id = "st-card-" + slug(term);
       return {
         item: item,
         key: slug(term),
@@ -156,18 +135,19 @@
       });
       Array.prototype.forEach.call(card.buttons, function (button) {
         button.addEventListener("click", function () {
-          var text = withMark(stored(), card.key, button.getAttribute("data-mark"), Date.now());
-          if (text === null) {
+          var known = button.getAttribute("data-mark") === "known";
+          if (!stored()) {
             status.textContent = "Your marks cannot be kept: the progress stored in this browser is in another format.";
             return;
           }
-          try {
-            localStorage.setItem(STORE, text);
-          } catch {
+          if (!Store.recordDefinition(card.key, known, Date.now())) {
             status.textContent = "This browser does not let the page keep your marks (private mode?).";
             return;
           }
           render();
+          card.item.dispatchEvent(
+            new CustomEvent("st-marked", { bubbles: true, detail: { slug: card.key, known: known } }),
+          );
           var next = cards[i + 1];
           if (next && !next.controls.hidden) (next.reveal.hidden ? next.buttons[0] : next.reveal).focus();
           else toggle.focus();
@@ -176,9 +156,20 @@
     });
 
     window.addEventListener("storage", function (event) {
-      if (event.key === STORE || event.key === null) render();
+      if (event.key === Store.STORE || event.key === Store.OLD_STORE || event.key === null) render();
     });
     render();
+
+    // One card asked for (?card=SLUG): the test opens, at that card.
+    var asked = new URLSearchParams(location.search).get("card");
+    var one = cards.filter(function (card) {
+      return card.key === asked;
+    })[0];
+    if (one) {
+      toggle.click();
+      one.item.scrollIntoView({ block: "center" });
+      one.reveal.focus({ preventScroll: true });
+    }
   }
 
   function start() {

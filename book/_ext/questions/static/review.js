@@ -1,0 +1,61 @@
+/* Start's review, on the pages that serve its cards (a question's page, the self-test's): after
+ * the Check of the card being served (questions.js's "q-checked") or its self-test mark
+ * (selftest.js's "st-marked"), a line says "Card 2 of 7" and offers the next card, or, after
+ * the last, the way back to Your practice. The queue is progress-plan.js's, in localStorage
+ * "dynamics-review-v1" ({home, position, cards: [{id, type, url}]}). Plain JavaScript, offline. */
+(function () {
+  "use strict";
+
+  var QUEUE = "dynamics-review-v1";
+  var DEFINITION = "definition:";
+
+  function read() {
+    try {
+      var queue = JSON.parse(localStorage.getItem(QUEUE));
+      return queue && queue.version === 1 && Array.isArray(queue.cards) ? queue : null;
+    } catch {
+      return null;
+    }
+  }
+
+  function start() {
+    var queue = read();
+    var card = queue && queue.cards[queue.position];
+    if (!card || new URL(card.url, location.href).pathname !== location.pathname) return;
+    var definition = card.id.indexOf(DEFINITION) === 0;
+    var slug = card.id.slice(DEFINITION.length);
+    var place = definition
+      ? document.getElementById("st-card-" + slug)
+      : document.querySelector('form.q-form[data-question="' + CSS.escape(card.id) + '"]');
+    if (!place) return;
+    if (!definition) place = place.closest("section.q") || place;
+
+    function show() {
+      var last = queue.position + 1 >= queue.cards.length;
+      var bar = document.querySelector(".rv-bar") || document.createElement("p");
+      bar.className = "rv-bar";
+      bar.textContent = "Card " + (queue.position + 1) + " of " + queue.cards.length + " · ";
+      var go = document.createElement("a");
+      go.className = "rv-next";
+      go.href = last ? queue.home : queue.cards[queue.position + 1].url;
+      go.textContent = last ? "Back to Your practice" : "Next card";
+      go.addEventListener("click", function () {
+        queue.position += 1; // the last one done: the queue is used up
+        try {
+          localStorage.setItem(QUEUE, JSON.stringify(queue));
+        } catch {
+          /* private mode: the link still goes on */
+        }
+      });
+      bar.appendChild(go);
+      place.insertAdjacentElement(definition ? "beforeend" : "afterend", bar);
+    }
+
+    document.addEventListener(definition ? "st-marked" : "q-checked", function (event) {
+      if (definition ? event.detail.slug === slug : place.contains(event.target)) show();
+    });
+  }
+
+  if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", start);
+  else start();
+})();

@@ -112,8 +112,7 @@ NEEDS_BROWSER = ("Your practice is kept in the web browser you practise in: open
 
 def _plan_html() -> list[str]:
     """The plan's frame (progress-plan.js fills it): in the page, so filling it shifts nothing."""
-    return ['<section class="pp-plan" aria-labelledby="pp-plan-heading"><h2 id="pp-plan-heading">Your plan</h2>'
-            '<p class="pp-due"><span class="pp-due-text"></span> '
+    return ['<section class="pp-plan" aria-label="Your plan"><p class="pp-due"><span class="pp-due-text"></span> '
             '<button type="button" class="pp-start" disabled>Start</button></p>'
             '<p class="pp-weakest"></p><p class="pp-often"></p></section>']
 
@@ -167,7 +166,6 @@ def visit_practice_progress(self, node):
             '<h2 id="pp-types-heading">By type</h2>']
     for kind in data["types"]:
         html.extend(_type_html(kind))
-    html.append("</section>")
     if data["definitions"]:
         html.append('<section class="pp-defs" aria-labelledby="pp-defs-heading">'
                     f'<h2 id="pp-defs-heading">Definitions self-test</h2><p class="pp-defs-line">'
@@ -178,8 +176,8 @@ def visit_practice_progress(self, node):
     html.append(
         '<section class="pp-file" aria-labelledby="pp-file-heading" hidden>'
         '<h2 id="pp-file-heading">Move or clear your progress</h2>'
-        "<p>Export saves your progress to a file. Import it in the browser of another device (or "
-        "this one) to add it to what is kept there: nothing already kept is lost.</p>"
+        "<p>Your progress is kept in this browser only, never sent anywhere. Export saves it to a file; "
+        "import that file on another device to carry on there (nothing kept there is lost).</p>"
         '<div class="pp-buttons">'
         '<button type="button" class="pp-export">Export progress</button>'
         '<label class="pp-import-label" for="pp-import">Import progress from a file'

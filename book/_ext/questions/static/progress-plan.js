@@ -223,10 +223,9 @@
       served = queue(data, byDue);
       var more = served.cards.length - served.due;
       line(".pp-due-text", [
-        (served.due ? plural(served.due, "card", "cards") : "No cards") +
-          " due today" +
-          (more ? (served.due ? ", then " : "; ") + plural(more, "more", "more") : "") +
-          ". Start serves them one by one, with new numbers.",
+        served.due
+          ? plural(served.due, "card", "cards") + " due today" + (more ? ", then " + count(more) + " more" : "") + "."
+          : "No cards due today" + (more ? ": Start serves " + count(more) + " new." : "."),
       ]);
       startButton.disabled = !served.cards.length;
       var weakest = weakestType(data.types, progress.attempts);
@@ -257,16 +256,16 @@
       var defs = definitionsRecord(data, progress, byDue);
       if (data.definitions) {
         line(".pp-defs-line", [
-          "Known " +
+          "known " +
             count(defs.known) +
             ", not yet " +
             count(defs.notYet) +
             ", of " +
-            plural(defs.cards, "definition", "definitions") +
-            (defs.due ? "; " + count(defs.due) + " due today" : "") +
-            ": ",
+            count(defs.cards) +
+            (defs.due ? "; " + count(defs.due) + " due" : "") +
+            " (",
           link(data.definitions.page, "the self-test"),
-          ".",
+          ").",
         ]);
       }
     }

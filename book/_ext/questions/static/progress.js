@@ -229,6 +229,12 @@
     function render() {
       var read = Store.load();
       var progress = read.ok ? read.progress : Store.empty();
+      // The store keeps the schedule as last worked out (the export carries it too).
+      var schedule = Schedule.replay(progress);
+      if (read.ok && JSON.stringify(schedule) !== JSON.stringify(progress.schedule)) {
+        progress.schedule = schedule;
+        Store.save(progress);
+      }
       var now = Date.now(),
         dayEnds = Schedule.endOfDay(now),
         due = dueByCard(progress, now);

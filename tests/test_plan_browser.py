@@ -1,0 +1,279 @@
+"""Spaced review and the plan of Your practice, as a student meets them, in Chromium with a
+fixed clock: real questions of the quick-check page answered right, partly (a named mistake)
+and wrong, and one right after help; the ratings and the stored schedule, with each due date
+checked against ts-fsrs called directly in Node (request retention 0.9, its defaults); Start
+serving the due cards interleaved, each with new numbers, card after card to the end; the
+first screen at 390 x 844 and the page's height; a real format 1 export (made on the site
+before format 2, tests/fixtures/progress_v1) imported with every attempt kept.
+
+Answers come from the variant data the site ships (window.QuestionVariants) or the bank's
+variant 0; templates are picked from the page's embedded list, so the bank can grow."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+from datetime import datetime, timedelta, timezone
+from pathlib import Path
+
+import pytest
+from browser import node_module, open_browser, progress_checksum, serve_site
+
+from physics_figures import bank
+
+pytestmark = [pytest.mark.site, pytest.mark.browser]
+
+ROOT = Path(__file__).resolve().parents[1]
+PROGRESS = "/book/exam/your-practice.html"
+QUICK_CHECK = "/book/exam/quick-check.html"
+STORE = "dynamics-progress-v2"
+V1_FILE = ROOT / "tests" / "fixtures" / "progress_v1" / "progress-v1.json"
+PHONE = {"width": 390, "height": 844}
+# A school morning, in UTC (Chromium's zone here): the plan's "today" ends at midnight.
+MORNING = datetime(2026, 11, 26, 9, 0, tzinfo=timezone.utc)
+AGAIN, HARD, GOOD, EASY = 1, 2, 3, 4
+
+# ts-fsrs called directly: each card's due date after its reviews ([[at, rating], ...]).
+FSRS_IN_NODE = """
+const {fsrs, generatorParameters, createEmptyCard} = require(process.argv[1]);
+const f = fsrs(generatorParameters({request_retention: 0.9}));
+const out = {};
+for (const [id, reviews] of Object.entries(JSON.parse(process.argv[2]))) {
+  let card = createEmptyCard(new Date(reviews[0][0]));
+  for (const [at, rating] of reviews) card = f.next(card, new Date(at), rating).card;
+  out[id] = card.due.getTime();
+}
+console.log(JSON.stringify(out));
+"""
+
+
+@pytest.fixture(scope="module")
+def site(site_dir):
+    with serve_site(site_dir) as base_url, open_browser() as browser:
+        yield browser, base_url
+
+
+@pytest.fixture
+def context(site):
+    browser, base = site
+    context = browser.new_context(viewport=PHONE, accept_downloads=True)
+    context.base = base
+    context.errors = []
+    context.clock.set_fixed_time(MORNING)
+    yield context
+    assert not context.errors
+    context.close()
+
+
+def _open(context, path):
+    page = context.new_page()
+    page.on("pageerror", lambda error: context.errors.append(str(error)))
+    page.goto(context.base + path, wait_until="load")
+    return page
+
+
+def _at(context, when: datetime):
+    context.clock.set_fixed_time(when)
+    return int(when.timestamp() * 1000)
+
+
+def _numeric_on_quick_check(data) -> list[tuple[str, str]]:
+    """(key, type) of each template the quick-check page places whose parts are all numbers."""
+    return [(t["key"], kind["type"]) for kind in data["types"] for t in kind["templates"]
+            if t["page"] == "quick-check.html" and all(p.unit for p in bank.TEMPLATES[t["key"]].variant(0).parts)]
+
+
+def _answer(page, key: str, values: list[float] | None = None):
+    """Answer the question as shown, from the variant data the site ships (its key's values, or
+    `values`), and Check: the score shown."""
+    form = page.locator(f'form.q-form[data-question="{key}"]')
+    variant = int(form.get_attribute("data-variant"))
+    parts = page.evaluate(
+        """([key, index]) => new Promise(done => {
+            const ready = () => window.QuestionVariants && window.QuestionVariants[key];
+            if (ready()) return done(ready()[index].parts);
+            const s = document.createElement("script");
+            s.src = document.querySelector('script[src*="questions.js"]').src.replace(/questions\\.js.*/,
+                "questions/" + key + ".js");
+            s.onload = () => done(ready()[index].parts);
+            document.head.appendChild(s);
+        })""", [key, variant])
+    for index, part in enumerate(parts):
+        box = form.locator("fieldset.q-part").nth(index)
+        value = (values or [p["value"] for p in parts])[index]
+        box.locator("input.q-value").fill(f"{value if part['direction'] == 'signed' else abs(value):.3g}")
+        box.locator("input.q-unit").fill(part["unit"])
+        if part["direction"] == "choice":
+            box.locator("select.q-direction").select_option(part["answerDirection"])
+    form.locator("button.q-check").click()
+    return form.locator(".q-score").inner_text()
+
+
+def _stored(page) -> dict:
+    return json.loads(page.evaluate(f"localStorage.getItem({STORE!r})"))
+
+
+def _fsrs_due(reviews: dict[str, list[tuple[int, int]]]) -> dict[str, int]:
+    out = subprocess.run(["node", "-e", FSRS_IN_NODE, str(node_module("ts-fsrs")), json.dumps(reviews)],
+                         capture_output=True, text=True, check=True)
+    return json.loads(out.stdout)
+
+
+def _practise(context):
+    """Right, partly right (a named mistake), wrong, and right after a step of help: four real
+    templates of the quick-check page, two of one type (so interleaving has work to do).
+    Returns {"right"|"partly"|"wrong"|"helped": (key, type)} and the page."""
+    page = _open(context, PROGRESS)
+    numeric = _numeric_on_quick_check(json.loads(page.locator("script.pp-data").text_content()))
+    partly = next(k for k in numeric if any(m.unit is None and m.direction is None
+                                            for m in bank.TEMPLATES[k[0]].variant(0).parts[0].mistakes))
+    rest = [k for k in numeric if k != partly]
+    wrong = rest[0]
+    helped = next((k for k in rest[1:] if k[1] == wrong[1]), rest[1])  # the wrong one's type, if any
+    right = next(k for k in rest[1:] if k not in (helped,))
+    chosen = {"right": right, "partly": partly, "wrong": wrong, "helped": helped}
+    quick = _open(context, QUICK_CHECK)
+    minute = 0
+    for name, (key, _) in chosen.items():
+        minute += 1
+        _at(context, MORNING + timedelta(minutes=minute))
+        parts = bank.TEMPLATES[key].variant(0).parts
+        if name == "partly":
+            mistake = next(m for m in parts[0].mistakes if m.unit is None and m.direction is None)
+            _answer(quick, key, [mistake.value] + [p.value for p in parts[1:]])
+        elif name == "wrong":
+            _answer(quick, key, [p.value * 7.3 + 1 for p in parts])
+        else:
+            if name == "helped":
+                step = quick.locator(f'form.q-form[data-question="{key}"] button.q-step').first
+                if step.count():
+                    step.click()  # help before the answer (the help steps' button)
+                else:  # without it: the attempt says help was used, as the button records it
+                    quick.evaluate("() => { const r = ProgressStore.recordAttempt;"
+                                   " ProgressStore.recordAttempt = (a, t) => r(Object.assign(a, {help: 1}), t); }")
+            _answer(quick, key)
+    return chosen, quick
+
+
+def test_ratings_and_due_dates_follow_fsrs_and_the_wrong_one_comes_back_first(context):
+    chosen, quick = _practise(context)
+    page = _open(context, PROGRESS)  # works the schedule out and keeps it
+    progress = _stored(page)
+    assert progress["version"] == 2
+    rating = {a["question"]: a["rating"] for a in progress["attempts"]}
+    key = {name: k for name, (k, _) in chosen.items()}
+    assert rating[key["wrong"]] == AGAIN
+    assert rating[key["partly"]] == HARD
+    assert rating[key["helped"]] <= HARD  # help used: never above Hard
+    assert rating[key["right"]] == EASY  # first try, no help, at once (the clock stood still)
+
+    schedule = progress["schedule"]
+    reviews = {a["question"]: [(a["at"], a["rating"])] for a in progress["attempts"]}
+    expected = _fsrs_due(reviews)
+    assert {card: schedule[card]["due"] for card in expected} == expected
+    due = {name: schedule[k]["due"] for name, k in key.items()}
+    assert due["wrong"] < due["partly"] < due["right"]
+    assert due["wrong"] == min(due.values())
+
+    # the page says so: three due today (right was Easy: days away), the weakest type, the mistake
+    assert page.locator(".pp-due-text").inner_text().startswith("3 cards due today")
+    mistake = next(m for m in bank.TEMPLATES[key["partly"]].variant(0).parts[0].mistakes
+                   if m.unit is None and m.direction is None)
+    assert page.locator(".pp-often").inner_text().startswith(f"Most frequent mistake: {mistake.name} (once).")
+    assert page.locator(".pp-weakest").inner_text().startswith(f"Weakest type: {_weakest(page, progress)}")
+
+
+def _weakest(page, progress) -> str:
+    """The type with the lowest share of marks over its tried templates (best attempt at each),
+    the first in the book on a tie: its name."""
+    best: dict[str, tuple[int, int]] = {}
+    for a in progress["attempts"]:
+        if a["question"] in bank.TEMPLATES and a["earned"] / a["available"] >= best.get(a["question"], (-1, 1))[0] / \
+                best.get(a["question"], (-1, 1))[1]:
+            best[a["question"]] = (a["earned"], a["available"])
+    shares = []
+    for order, kind in enumerate(bank.TOPIC.type_keys):
+        marks = [m for key, m in best.items() if bank.TEMPLATES[key].type == kind]
+        if marks:
+            shares.append((sum(e for e, _ in marks) / sum(a for _, a in marks), order, kind))
+    return page.locator(f'.pp-type[data-type="{min(shares)[2]}"] .pp-name').inner_text()
+
+
+def test_start_serves_the_due_cards_interleaved_each_with_new_numbers_then_back(context):
+    chosen, quick = _practise(context)
+    later = _at(context, MORNING + timedelta(hours=2))
+    page = _open(context, PROGRESS)
+    page.get_by_role("button", name="Start", exact=True).click()
+    queue = json.loads(page.evaluate("localStorage.getItem('dynamics-review-v1')"))
+    due = {k for name, (k, _) in chosen.items() if name != "right"}
+    cards = queue["cards"]
+    assert {c["id"] for c in cards[:3]} == due  # the due ones first, then the next ones
+    assert len(cards) == 3 + 5
+    types = [c["type"] for c in cards]
+    for i in range(1, len(cards)):  # never two of a type in a row while another type is left
+        assert types[i] != types[i - 1] or len(set(types[i:])) == 1, types
+    for position, card in enumerate(cards):
+        page.wait_for_load_state("load")
+        bar = page.locator(".rv-bar")
+        if card["id"].startswith("definition:"):
+            item = page.locator(f"#st-card-{card['id'].split(':', 1)[1]}")
+            item.locator(".st-reveal").click()
+            item.get_by_role("button", name="I knew it").click()
+        else:
+            form = page.locator(f'form.q-form[data-question="{card["id"]}"]')
+            if form.locator("button.q-new").count():  # new numbers: not the ones shown before
+                page.wait_for_function(
+                    f"document.querySelector('form.q-form[data-question=\"{card['id']}\"]').dataset.variant !== '0'")
+            assert "new=" not in page.url
+            if card["id"] in due:
+                _answer(page, card["id"])
+            else:
+                form.locator("button.q-check").click()
+        last = position == len(cards) - 1
+        assert bar.inner_text().startswith(f"Card {position + 1} of {len(cards)} · ")
+        bar.get_by_role("link", name="Back to Your practice" if last else "Next card").click()
+    page.wait_for_url(f"**{PROGRESS}")
+    progress = _stored(page)
+    served = {a["question"] for a in progress["attempts"] if a["at"] == later}
+    assert due <= served  # each due card answered again, on the numbers Start gave
+    assert {c["id"] for c in cards if c["id"].startswith("definition:")} <= served
+
+
+def test_the_first_screen_shows_the_plan_and_the_page_is_at_most_two_screens(context):
+    _practise(context)
+    page = _open(context, PROGRESS)
+    page.evaluate("""ProgressStore.recordMock({id: "m1", paper: "2", at: Date.now(), minutes: 25,
+        ended: "submitted", earned: 14, available: 20, questions: []})""")
+    page.reload(wait_until="load")
+    for selector in (".pp-due-text", ".pp-start", ".pp-weakest", ".pp-often"):
+        box = page.locator(selector).bounding_box()
+        assert box and box["y"] + box["height"] <= PHONE["height"], f"{selector} is below the first screen: {box}"
+    assert page.locator(".pp-often a").count() == 1  # the mistake links to its section
+    assert page.locator("details.pp-type[open]").count() == 0
+    height = page.evaluate("document.documentElement.scrollHeight")
+    assert height <= 2 * PHONE["height"], f"Your practice is {height} px tall at 390 px"
+    assert "Paper 2" in page.locator(".pp-mocks").inner_text()
+
+
+def test_a_real_version_1_export_imports_into_version_2_with_every_attempt_kept(context, tmp_path):
+    v1 = json.loads(V1_FILE.read_text())
+    assert v1["version"] == 1
+    page = _open(context, PROGRESS)
+    page.get_by_label("Import progress from a file").set_input_files(str(V1_FILE))
+    page.wait_for_function("document.querySelector('.pp-status').textContent.startsWith('Imported')")
+    progress = _stored(page)
+    assert progress["version"] == 2
+    fields = ("question", "type", "variant", "earned", "available", "at", "mistakes")
+    kept = [{f: a[f] for f in fields} for a in progress["attempts"]]
+    for attempt in v1["attempts"]:
+        assert attempt in kept
+    for slug, card in v1["definitions"]["cards"].items():
+        assert progress["definitions"]["cards"][slug] == card
+        assert any(a["question"] == f"definition:{slug}" and a["at"] == card["at"] for a in progress["attempts"])
+    # and out again as format 2, with the schedule and the checksum the class page checks
+    with page.expect_download() as download:
+        page.get_by_role("button", name="Export progress").click()
+    saved = json.loads(Path(download.value.path()).read_text())
+    assert saved["version"] == 2 and saved["book"] == "dynamics"
+    assert saved["sha256"] == progress_checksum(saved["attempts"])
+    assert set(saved["schedule"]) == {a["question"] for a in saved["attempts"]}

@@ -109,7 +109,14 @@
     var undone = null; // what Clear my answers cleared, until Undo clear or another change
     var key = form.getAttribute("data-question");
     // Help before the answer (static/help-steps.js), and when these numbers came on screen.
-    var help = root.HelpSteps.attach(form, { load: load, save: save });
+    var help = root.HelpSteps
+      ? root.HelpSteps.attach(form, { load: load, save: save })
+      : {
+          show: function () {},
+          used: function () {
+            return 0;
+          },
+        }; // a page without the help script
     var shownAt = Date.now();
 
     function storeId() {

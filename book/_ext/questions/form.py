@@ -16,7 +16,7 @@ from sphinx.util import logging
 from physics_figures import marking  # the rule table the browser's engine reads
 from physics_figures.notation import join_units  # a number never parts from its unit
 
-from . import store
+from . import schedule, store
 from .directive import question
 
 logger = logging.getLogger(__name__)
@@ -133,6 +133,15 @@ def _numeric_html(base: str, part: dict, label: str = "", hint: bool = False) ->
     return "".join(html)
 
 
+def _help_html(label: str) -> str:
+    """Help before the answer (static/help-steps.js): the steps of the working shown so far,
+    read out as each comes (a polite live region), and the button that shows the next; the
+    script fills both from the question's data, and New numbers changes them."""
+    name = escape(_field_label(label, "Steps of the working"))
+    return (f'<div class="q-help"><ol class="q-steps" aria-live="polite" aria-label="{name}"></ol>'
+            '<button type="button" class="q-step">Show a step</button></div>')
+
+
 def _options_html(base: str, part: dict) -> str:
     """Radio buttons A to D (values A-D: the interface outside tests use)."""
     items = "".join(
@@ -188,8 +197,10 @@ def visit_question_form(self, node):
             hint = not getattr(self, "_q_unit_hint_written", False)
             self._q_unit_hint_written = True  # the translator is one page's: once a page
             html.append(_numeric_html(base, part, label, hint))
-        html.append(f'<p class="q-feedback" id="{base}-feedback" role="status"></p>'
-                    '<p class="q-part-marks"></p></fieldset>')
+        html.append(f'<p class="q-feedback" id="{base}-feedback" role="status"></p><p class="q-part-marks"></p>')
+        if kind not in ("mcq", "explain"):
+            html.append(_help_html(label))
+        html.append("</fieldset>")
     new = ('<button type="button" class="q-new">New numbers</button>'
            if template and template["variants"] > 1 else "")
     html.append('<div class="q-buttons"><button type="submit" class="q-check">Check</button>'
@@ -234,6 +245,8 @@ def add_assets(app, pagename, templatename, context, doctree):
         for kind in KIND_SCRIPTS:  # each part kind's marker, before the engine that finds them
             app.add_js_file(f"question-kinds/{kind}.js", loading_method="defer", priority=450)
         app.add_js_file("marking.js", loading_method="defer", priority=460)
+        schedule.add_store_script(app)  # questions.js records each attempt in it
+        app.add_js_file("help-steps.js", loading_method="defer", priority=470)  # before questions.js (500)
         app.add_js_file("questions.js", loading_method="defer")
         # the enlarged graph view, on the pages that print a question's graph
         if any(item.get("graph") for item in store.questions(app.env).get(pagename, ())):

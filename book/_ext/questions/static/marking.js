@@ -235,6 +235,20 @@
     return formulas[key];
   }
 
+  /* The slips of the rule table a student's record names as mistakes, beside a template's own
+   * named mistakes (CLARIFICATIONS, Plan: a sign error, a missing unit and a 1 s.f. answer count
+   * too): outcome code -> the name an attempt keeps. Your practice reads the names from here. */
+  var OUTCOME_MISTAKES = {
+    sign: "sign or direction",
+    "sign-on-size": "sign or direction",
+    direction: "sign or direction",
+    "missing-direction": "sign or direction",
+    "missing-unit": "unit missing or wrong",
+    "wrong-unit": "unit missing or wrong",
+    "unit-case": "unit missing or wrong",
+    "too-few-sf": "1 s.f. answer",
+  };
+
   // What reads a typed answer, for the tests and scripts that drive the engine under Node.
   var Reading = root.AnswerReading || require("./answer-reading.js");
   var engine = {
@@ -249,6 +263,7 @@
     lostText: lostText,
     marksText: marksText,
     sectionFor: sectionFor,
+    outcomeMistakes: OUTCOME_MISTAKES,
   };
 
   if (typeof module === "object" && module.exports) module.exports = engine;

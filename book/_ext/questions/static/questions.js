@@ -35,36 +35,11 @@
     }
   }
 
-  // Every checked attempt, for the "Your practice" page (versioned: a later build reads it).
-  var PROGRESS = "dynamics-progress-v1";
-
-  /* Keep an attempt. A self-marked part is scored by the ticks that follow its Check: those
-   * update the question's latest attempt (same variant) instead of adding another. */
+  /* Every checked attempt, for "Your practice": kept by the progress store
+   * (static/progress-store.js, format 2). A self-marked part is scored by the ticks that follow
+   * its Check (retick): those update the question's latest attempt instead of adding another. */
   function recordAttempt(attempt, retick) {
-    try {
-      var progress = JSON.parse(localStorage.getItem(PROGRESS)) || { version: 1, attempts: [] };
-      // Another format under this key (a later build's): leave it whole, never append to it.
-      if (progress.version !== 1 || !Array.isArray(progress.attempts)) return;
-      var list = progress.attempts,
-        last = -1;
-      for (var i = list.length - 1; i >= 0 && retick; i--) {
-        if (list[i].question === attempt.question) {
-          last = i;
-          break;
-        }
-      }
-      if (last >= 0 && list[last].variant === attempt.variant) {
-        attempt.at = list[last].at;
-        list[last] = attempt;
-      } else if (!retick) {
-        list.push(attempt);
-      } else {
-        return; // ticks on a question never checked in this browser: nothing to update
-      }
-      localStorage.setItem(PROGRESS, JSON.stringify(progress));
-    } catch {
-      /* private mode: progress is not kept */
-    }
+    if (root.ProgressStore) root.ProgressStore.recordAttempt(attempt, retick);
   }
 
   /* New numbers: each template's variants come in one small script (loaded on the first
@@ -133,6 +108,16 @@
     var undoButton = form.querySelector("button.q-undo");
     var undone = null; // what Clear my answers cleared, until Undo clear or another change
     var key = form.getAttribute("data-question");
+    // Help before the answer (static/help-steps.js), and when these numbers came on screen.
+    var help = root.HelpSteps
+      ? root.HelpSteps.attach(form, { load: load, save: save })
+      : {
+          show: function () {},
+          used: function () {
+            return 0;
+          },
+        }; // a page without the help script
+    var shownAt = Date.now();
 
     function storeId() {
       return data.id + (key ? "@" + form.getAttribute("data-variant") : "");
@@ -254,22 +239,29 @@
             : !!(a.value.trim() || a.unit.trim());
       });
       if (record && key && tried) {
-        recordAttempt(
-          {
-            question: key,
-            type: form.getAttribute("data-type"),
-            variant: Number(form.getAttribute("data-variant")),
-            earned: marked.marks.earned,
-            available: marked.marks.available,
-            at: Date.now(),
-            mistakes: data.parts
-              .map(function (p) {
-                return marked.results[p.id].mistake;
-              })
-              .filter(Boolean),
-          },
-          record === "ticks",
-        );
+        var attempt = {
+          question: key,
+          type: form.getAttribute("data-type"),
+          variant: Number(form.getAttribute("data-variant")),
+          earned: marked.marks.earned,
+          available: marked.marks.available,
+          at: Date.now(),
+          // the template's named mistakes, and the sign, unit and 1 s.f. slips the engine names
+          mistakes: data.parts
+            .map(function (p) {
+              var result = marked.results[p.id];
+              return result.mistake || engine.outcomeMistakes[result.code];
+            })
+            .filter(Boolean),
+        };
+        // A tick re-scores its Check's attempt, which keeps the help, time and first try it had.
+        if (record !== "ticks") {
+          attempt.help = help.used();
+          attempt.seconds = Math.round((Date.now() - shownAt) / 1000);
+          attempt.first = !load("tried:" + storeId());
+          save("tried:" + storeId(), true);
+        }
+        recordAttempt(attempt, record === "ticks");
       }
     }
 
@@ -329,7 +321,8 @@
       });
     }
 
-    function show(index, variant) {
+    /* fresh: New numbers pressed (not the numbers a student had, brought back): no help yet. */
+    function show(index, variant, fresh) {
       data = { id: data.id, parts: variant.parts, marks: variant.marks };
       section.querySelector(".q-text").innerHTML = variant.text;
       var graph = section.querySelector("img.q-graph");
@@ -345,6 +338,8 @@
       if (scheme) scheme.outerHTML = variant.scheme.replace("<ul>", '<ul class="' + scheme.className + '">');
       form.setAttribute("data-variant", String(index));
       save("variant:" + key, { variant: index });
+      shownAt = Date.now();
+      help.show(data, "help:" + storeId(), !!fresh);
       relabel();
       clear();
       restore();
@@ -396,7 +391,7 @@
             return;
           }
           var index = nextVariant(key, variants.length, Number(form.getAttribute("data-variant")));
-          show(index, variants[index]);
+          show(index, variants[index], true);
           section.querySelector(".q-text").focus();
         });
       });
@@ -418,6 +413,7 @@
       else if (text) text.focus();
     }
 
+    help.show(data, "help:" + storeId(), false);
     // A student who had new numbers comes back to the same numbers.
     var last = key && load("variant:" + key);
     if (last && last.variant) {

@@ -1,7 +1,7 @@
 """Offline after one visit, in Chromium: the service worker (book/_ext/offline) keeps the
 whole book, so after the intro has been opened once, with the network gone, every page
-opens with its figures, a question marks and gives new numbers, progress shows, an
-explorable responds and search finds pages with snippets. A new build replaces the cache:
+opens with its figures, a question marks and gives new numbers, progress shows with its plan,
+Start serves a card and the self-test opens one card, an explorable responds and search finds pages with snippets. A new build replaces the cache:
 the student is told, presses Reload, and reads the new text. Served at the root and under a
 subpath (as GitHub Pages serves a project site), by a host that lets browsers reuse files
 for ten minutes, as GitHub Pages does. A teacher's PDF, opened once online, opens again
@@ -83,8 +83,9 @@ def test_after_one_visit_the_whole_book_works_offline(browser, site_dir, subpath
 
         # the attempt shows on Your practice
         page.goto(f"{base_url}/book/exam/your-practice.html")
-        summary = page.locator('.pp-type[data-type="force-momentum"] .pp-summary').inner_text()
+        summary = page.locator('.pp-type[data-type="force-momentum"] .pp-summary').text_content()
         assert "1 of" in summary, summary
+        _plan_start_and_a_definition_card(page, f"{base_url}/book/exam/method-definitions.html")
 
         # an explorable responds
         page.goto(f"{base_url}/{_page_with_explorable(site_dir)}")
@@ -143,6 +144,27 @@ def test_a_teachers_pdf_opened_once_opens_again_offline(browser, site_dir, subpa
         assert "error" in page.evaluate(FETCHED, never_opened), f"{NEVER_OPENED_PDF} came offline unopened"
         context.close()
         assert not errors, errors
+
+
+def _plan_start_and_a_definition_card(page, self_test: str) -> None:
+    """On Your practice: the plan is worked out (ts-fsrs and the schedule load), Start serves
+    its first card with new numbers and the review line; then the self-test opens one card,
+    whose mark is kept as an attempt at that card."""
+    page.wait_for_function("document.querySelector('.pp-due-text').textContent.includes('due today')")
+    assert "Weakest type:" in page.locator(".pp-weakest").inner_text()
+    page.get_by_role("button", name="Start", exact=True).click()
+    page.wait_for_url(lambda url: "#question-" in url)
+    page.wait_for_load_state("load")
+    card = page.evaluate("JSON.parse(localStorage.getItem('dynamics-review-v1')).cards[0]")
+    form = page.locator(f'form.q-form[data-question="{card["id"]}"]')
+    form.locator("button.q-check").click()
+    assert page.locator(".rv-bar").inner_text().startswith("Card 1 of ")
+    page.goto(f"{self_test}?card=mass#st-card-mass", wait_until="load")
+    item = page.locator("#st-card-mass")
+    item.locator(".st-reveal").click()
+    item.get_by_role("button", name="I knew it").click()
+    attempts = page.evaluate("JSON.parse(localStorage.getItem('dynamics-progress-v2')).attempts")
+    assert any(a["question"] == "definition:mass" and a["earned"] == 1 for a in attempts)
 
 
 def _page_with_explorable(site_dir: Path) -> str:
@@ -232,6 +254,8 @@ def test_the_zip_opens_from_disk_with_figures_questions_and_search(browser, unzi
     assert form.locator(".q-score").inner_text() == "4/4 marks"
     form.locator("button.q-new").click()  # the variants come by <script>, which file:// allows
     page.wait_for_function(f"document.querySelector('form[data-question=\"{key}\"]').dataset.variant !== '0'")
+    page.goto((unzipped / "book/exam/your-practice.html").as_uri(), wait_until="load")
+    _plan_start_and_a_definition_card(page, (unzipped / "book/exam/method-definitions.html").as_uri())
 
     page.goto((unzipped / "search.html").as_uri() + "?q=terminal+velocity")
     page.wait_for_function(

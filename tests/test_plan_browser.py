@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import json
 import subprocess
-from datetime import datetime, timedelta, timezone
+from datetime import UTC, datetime, timedelta
 from pathlib import Path
 
 import pytest
@@ -30,7 +30,7 @@ STORE = "dynamics-progress-v2"
 V1_FILE = ROOT / "tests" / "fixtures" / "progress_v1" / "progress-v1.json"
 PHONE = {"width": 390, "height": 844}
 # A school morning, in UTC (Chromium's zone here): the plan's "today" ends at midnight.
-MORNING = datetime(2026, 11, 26, 9, 0, tzinfo=timezone.utc)
+MORNING = datetime(2026, 11, 26, 9, 0, tzinfo=UTC)
 AGAIN, HARD, GOOD, EASY = 1, 2, 3, 4
 
 # ts-fsrs called directly: each card's due date after its reviews ([[at, rating], ...]).
@@ -101,12 +101,18 @@ def _answer(page, key: str, values: list[float] | None = None):
     for index, part in enumerate(parts):
         box = form.locator("fieldset.q-part").nth(index)
         value = (values or [p["value"] for p in parts])[index]
-        box.locator("input.q-value").fill(f"{value if part['direction'] == 'signed' else abs(value):.3g}")
+        box.locator("input.q-value").fill(_written(value if part["direction"] == "signed" else abs(value)))
         box.locator("input.q-unit").fill(part["unit"])
         if part["direction"] == "choice":
             box.locator("select.q-direction").select_option(part["answerDirection"])
     form.locator("button.q-check").click()
     return form.locator(".q-score").inner_text()
+
+
+def _written(value: float) -> str:
+    """A value to 3 s.f. with its trailing zeros (5 is "5.00": a 1 s.f. answer loses the A1)."""
+    text = f"{value:#.3g}"
+    return (f"{value:.3g}" if "e" in text else text).rstrip(".")
 
 
 def _stored(page) -> dict:
@@ -133,9 +139,7 @@ def _practise(context):
     right = next(k for k in rest[1:] if k not in (helped,))
     chosen = {"right": right, "partly": partly, "wrong": wrong, "helped": helped}
     quick = _open(context, QUICK_CHECK)
-    minute = 0
-    for name, (key, _) in chosen.items():
-        minute += 1
+    for minute, (name, (key, _)) in enumerate(chosen.items(), start=1):
         _at(context, MORNING + timedelta(minutes=minute))
         parts = bank.TEMPLATES[key].variant(0).parts
         if name == "partly":
@@ -156,7 +160,7 @@ def _practise(context):
 
 
 def test_ratings_and_due_dates_follow_fsrs_and_the_wrong_one_comes_back_first(context):
-    chosen, quick = _practise(context)
+    chosen, _ = _practise(context)
     page = _open(context, PROGRESS)  # works the schedule out and keeps it
     progress = _stored(page)
     assert progress["version"] == 2
@@ -200,7 +204,7 @@ def _weakest(page, progress) -> str:
 
 
 def test_start_serves_the_due_cards_interleaved_each_with_new_numbers_then_back(context):
-    chosen, quick = _practise(context)
+    chosen, _ = _practise(context)
     later = _at(context, MORNING + timedelta(hours=2))
     page = _open(context, PROGRESS)
     page.get_by_role("button", name="Start", exact=True).click()

@@ -1,7 +1,8 @@
 """'Your practice' as a student meets it, in Chromium: answers checked on the quick-check
-page show up by type (templates tried, marks, the named mistake), survive a reload, go out
-to a file and come back, clear with undo, a bad file is refused without loss, and
-Practise this type lands on a question with new numbers and focus in it.
+page show up by type (a line each, its details folded: templates tried, marks, the named
+mistake), survive a reload, go out to a file (format 2) and come back, clear with undo, a bad
+file is refused without loss, and Practise this type lands on a question with new numbers and
+focus in it. The plan at the top is tests/test_plan_browser.py's.
 
 Templates are found from the list the page embeds (the bank grows; nothing here assumes
 one template)."""
@@ -19,7 +20,7 @@ pytestmark = [pytest.mark.site, pytest.mark.browser]
 
 PROGRESS = "/book/exam/your-practice.html"
 QUICK_CHECK = "/book/exam/quick-check.html"
-STORE = "dynamics-progress-v1"
+STORE = "dynamics-progress-v2"
 
 
 @pytest.fixture(scope="module")
@@ -85,7 +86,11 @@ def _answer_with_a_mistake(page, key: str, mistake) -> str:
 
 
 def _section(page, kind: str):
-    return page.locator(f'.pp-type[data-type="{kind}"]')
+    """A type's details, opened (its line is the summary)."""
+    section = page.locator(f'.pp-type[data-type="{kind}"]')
+    if section.get_attribute("open") is None:
+        section.locator("summary").click()
+    return section
 
 
 def _stored(page):
@@ -98,11 +103,12 @@ def test_every_type_is_listed_by_its_name_with_what_the_bank_has(context):
     assert [kind["type"] for kind in data["types"]] == list(bank.TOPIC.type_keys)
     for kind in data["types"]:
         section = _section(page, kind["type"])
-        assert section.locator("h2").inner_text() == kind["name"]
+        assert section.locator("summary .pp-name").inner_text() == kind["name"]
         assert [t["key"] for t in kind["templates"]] == [t.key for t in bank.by_type(kind["type"])]
         summary = section.locator(".pp-summary").inner_text()
         if kind["templates"]:
             assert "none tried yet" in summary
+            assert section.locator(".pp-line").inner_text() == f"no marks yet · 0 of {len(kind['templates'])} tried"
         else:
             assert summary.startswith("Not in the bank yet")
 
@@ -117,6 +123,7 @@ def test_progress_follows_answers_survives_reload_export_clear_and_import(contex
     section = _section(page, kind["type"])
 
     def shows_the_attempt():
+        section = _section(page, kind["type"])
         summary = section.locator(".pp-summary").inner_text()
         assert summary.startswith(f"Tried 1 of {len(kind['templates'])} question")
         assert f"Marks: {score}" in summary
@@ -133,13 +140,14 @@ def test_progress_follows_answers_survives_reload_export_clear_and_import(contex
     exported = tmp_path / download.value.suggested_filename
     download.value.save_as(exported)
     saved = json.loads(exported.read_text())
-    assert saved["version"] == 1
+    assert saved["version"] == 2
     assert [a["question"] for a in saved["attempts"]] == [entry["key"]]
+    assert list(saved["schedule"]) == [entry["key"]]
     assert saved["attempts"][0]["mistakes"] == [mistake.name]
 
     page.get_by_role("button", name="Clear progress").click()
     assert "none tried yet" in section.locator(".pp-summary").inner_text()
-    assert _stored(page) is None
+    assert json.loads(_stored(page))["attempts"] == []  # kept empty: the format 1 store is never read again
     assert page.evaluate("document.activeElement.textContent") == "Undo clear"
     page.reload(wait_until="load")
     assert "none tried yet" in _section(page, kind["type"]).locator(".pp-summary").inner_text()
@@ -199,7 +207,7 @@ def test_without_javascript_the_page_says_what_it_is_for_and_what_it_needs(site)
     context = browser.new_context(java_script_enabled=False)
     page = context.new_page()
     page.goto(base + PROGRESS, wait_until="load")
-    assert "what you have practised" in page.locator("main").inner_text()
+    assert "The cards due today show here." in page.locator("main").inner_text()  # what it is for
     assert page.locator(".pp-needs-js").is_visible()
     assert "JavaScript" in page.locator(".pp-needs-js").inner_text()
     assert not page.locator(".pp-file").is_visible()  # its buttons would do nothing

@@ -112,9 +112,17 @@ NEEDS_BROWSER = ("Your practice is kept in the web browser you practise in: open
 
 def _plan_html() -> list[str]:
     """The plan's frame (progress-plan.js fills it): in the page, so filling it shifts nothing."""
-    return ['<section class="pp-plan" aria-label="Your plan"><p class="pp-due"><span class="pp-due-text"></span> '
+    return [('<section class="pp-plan" aria-label="Your plan"><p class="pp-due"><span class="pp-due-text">The cards due today show here.</span> '
             '<button type="button" class="pp-start" disabled>Start</button></p>'
-            '<p class="pp-weakest"></p><p class="pp-often"></p></section>']
+            '<p class="pp-weakest">Your weakest type shows here.</p>'
+            '<p class="pp-often">Your most frequent mistake shows here.</p>'
+            '<details class="pp-how"><summary>How the plan works</summary>'
+            "<p>Each question and each definition of the self-test is a card. A card you answer comes back when "
+            "you are about to forget it (the FSRS schedule, as Anki uses): soon when you lost marks, later when "
+            "you were right. Using help makes it Hard at best; right first time at the exam's pace (1.25 minutes "
+            "a mark) makes it Easy. Start serves the cards due today, mixing the types, then new ones. The "
+            "weakest type is the one with the lowest share of the marks over the questions you tried, counting "
+            "your best attempt at each.</p></details></section>")]
 
 
 def _type_html(kind: dict) -> list[str]:
@@ -125,9 +133,9 @@ def _type_html(kind: dict) -> list[str]:
         summary = store.count(len(kind["templates"]), "question", "questions") + " in the bank."
     else:
         summary = "Not in the bank yet: no question of this type to practise here so far."
-    html = [f'<details class="pp-type" id="pp-type-{kind["type"]}" data-type="{kind["type"]}"><summary><span class="pp-name">{name}</span>'
+    html = [(f'<details class="pp-type" id="pp-type-{kind["type"]}" data-type="{kind["type"]}"><summary><span class="pp-name">{name}</span>'
             f' <span class="pp-line"></span></summary>'
-            f'<p class="pp-summary">{summary}</p><p class="pp-mistakes" hidden></p>']
+            f'<p class="pp-summary">{summary}</p><p class="pp-mistakes" hidden></p>')]
     if kind["templates"]:
         html.append('<ul class="pp-templates">')
         for t in kind["templates"]:
@@ -162,22 +170,22 @@ def visit_practice_progress(self, node):
     payload = json.dumps(data, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
     html = ['<div class="pp">', f'<script type="application/json" class="pp-data">{payload}</script>',
             f'<p class="pp-needs-js">{escape(NEEDS_BROWSER)}</p>', *_plan_html(),
-            '<section class="pp-types" aria-labelledby="pp-types-heading">'
-            '<h2 id="pp-types-heading">By type</h2>']
+            ('<section class="pp-types" aria-labelledby="pp-types-heading">'
+            '<h2 id="pp-types-heading">By type</h2>')]
     for kind in data["types"]:
         html.extend(_type_html(kind))
-    if data["definitions"]:
-        html.append('<section class="pp-defs" aria-labelledby="pp-defs-heading">'
-                    f'<h2 id="pp-defs-heading">Definitions self-test</h2><p class="pp-defs-line">'
-                    f'{len(data["definitions"]["cards"])} definitions to learn: '
-                    f'<a href="{escape(data["definitions"]["page"])}">the self-test</a>.</p></section>')
+    if data["definitions"]:  # the self-test's record, a line beside the types'
+        html.append(f'<p class="pp-defs"><strong>Definitions self-test:</strong> <span class="pp-defs-line">'
+                    f'{len(data["definitions"]["cards"])} definitions to learn in '
+                    f'<a href="{escape(data["definitions"]["page"])}">the self-test</a>.</span></p>')
+    html.append("</section>")
     html.append('<section class="pp-mocks" aria-labelledby="pp-mocks-heading" hidden>'
                 '<h2 id="pp-mocks-heading">Mock tests</h2><ul class="pp-mock-list"></ul></section>')
     html.append(
         '<section class="pp-file" aria-labelledby="pp-file-heading" hidden>'
         '<h2 id="pp-file-heading">Move or clear your progress</h2>'
-        "<p>Your progress is kept in this browser only, never sent anywhere. Export saves it to a file; "
-        "import that file on another device to carry on there (nothing kept there is lost).</p>"
+        "<p>It is kept in this browser only. Export saves it to a file to import on another device "
+        "(nothing kept there is lost).</p>"
         '<div class="pp-buttons">'
         '<button type="button" class="pp-export">Export progress</button>'
         '<label class="pp-import-label" for="pp-import">Import progress from a file'

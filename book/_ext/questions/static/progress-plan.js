@@ -239,7 +239,7 @@
                 Progress.marksText(weakest.summary.earned, weakest.summary.available) +
                 " (" +
                 count(Math.round(weakest.share * 100)) +
-                "\u202f%): the lowest share of the marks over the questions you tried, by your best attempt at each.",
+                "\u202f%): the lowest share of the marks over the questions you tried.",
             ]
           : ["Weakest type: none yet. It shows once you have checked an answer."],
       );

@@ -194,7 +194,7 @@ def test_exports_name_the_book_and_carry_the_checksum_of_their_records(site, exp
     assert book == bank.TOPIC.key
     for path in exports:
         saved = json.loads(path.read_text())
-        assert (saved["version"], saved["book"]) == (1, book)
+        assert (saved["version"], saved["book"]) == (2, book)
         assert saved["sha256"] == progress_checksum(saved["attempts"])
     assert len(exports) == 30
     assert len({len(json.loads(p.read_text())["attempts"]) for p in exports}) == ANSWERS_EACH
@@ -297,8 +297,9 @@ def test_from_the_unzipped_site_export_and_load_work_on_file_urls(site, site_dir
     attempts = json.loads(exports[3].read_text())["attempts"]
     page.evaluate("(a) => localStorage.setItem('dynamics-progress-v1', JSON.stringify({version: 1, attempts: a}))",
                   attempts)
-    saved = _export(page, tmp_path / "from-disk.json")
-    assert saved["sha256"] == progress_checksum(attempts) and saved["book"] == bank.TOPIC.key
+    saved = _export(page, tmp_path / "from-disk.json")  # a format 1 store, upgraded: every attempt kept
+    assert [a["at"] for a in saved["attempts"]] == [a["at"] for a in attempts]
+    assert saved["sha256"] == progress_checksum(saved["attempts"]) and saved["book"] == bank.TOPIC.key
     page.goto(site_dir.as_uri() + CLASS_PAGE, wait_until="load")
     _load(page, [tmp_path / "from-disk.json"])
     assert page.locator(".cp-status").inner_text().startswith("Loaded 1 file.")

@@ -179,8 +179,11 @@ def test_definitions_self_test_by_keyboard_kept_with_the_progress(page):
     assert page.evaluate("document.activeElement.dataset.mark") == "not-yet"
     page.keyboard.press("Enter")
     assert box.locator(".st-status").inner_text() == f"Known: 1 of {count} definitions."
-    stored = json.loads(page.evaluate("localStorage.getItem('dynamics-progress-v1')"))
-    assert stored["version"] == 1 and stored["attempts"] == []
+    stored = json.loads(page.evaluate("localStorage.getItem('dynamics-progress-v2')"))
+    # each mark is also an attempt at its card, for the spaced review
+    assert stored["version"] == 2
+    assert [(a["question"], a["earned"]) for a in stored["attempts"]] == [("definition:mass", 1),
+                                                                          ("definition:weight", 0)]
     assert stored["definitions"]["version"] == 1
     assert stored["definitions"]["cards"]["mass"]["mark"] == "known"
     assert stored["definitions"]["cards"]["weight"]["mark"] == "not-yet"

@@ -89,7 +89,10 @@ test("a file that is not this book's unedited export is refused, saying why", as
     ["{not json", /not JSON/],
     ['{"attempts": []}', /no format version/],
     [JSON.stringify({ ...good, version: 3 }), /newer version/],
-    [await exported([attempt("d1", "drag", 3, 4, 1)], "waves"), /another book \(waves\)/],
+    [
+      await exported([attempt("d1", "drag", 3, 4, 1)], "waves"),
+      /another book \("waves"\), not this one \("dynamics"\)/,
+    ],
     [JSON.stringify(noBook), /does not say which book/],
     [JSON.stringify(noSum), /no checksum/],
     [JSON.stringify(edited), /do not match their checksum: it was changed after it was exported/],

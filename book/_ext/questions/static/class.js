@@ -40,10 +40,19 @@
       return { ok: false, name: name, message: message };
     }
     if (!text.trim()) return Promise.resolve(refused("it is empty."));
+    var file = null;
+    try {
+      file = JSON.parse(text);
+    } catch {
+      /* Store.read says it is not JSON */
+    }
+    // Another book's file: said as the export's format says it (which book, and this one).
+    if (file && typeof file.book === "string" && file.book !== book) {
+      return ProgressFile.exportProblem(file, book).then(refused);
+    }
     var read = Store.read(text);
     if (!read.ok) return Promise.resolve(refused(read.message));
     // The checksum is of the records as exported (a format 1 file's, before its upgrade).
-    var file = JSON.parse(text);
     return ProgressFile.exportProblem(file, book).then(function (problem) {
       if (problem) return refused(problem);
       return { ok: true, name: name, student: studentName(name), attempts: read.progress.attempts };

@@ -176,7 +176,7 @@ def test_an_explanation_is_self_marked_against_its_marking_points(open_page):
     ticks.nth(1).check()  # with the M1 it does
     assert form.locator(".q-score").inner_text() == "3/3 marks"
 
-    # the ticks are the attempt's marks: Your practice keeps 3/3 for it, as one attempt
+    # the ticks are the attempt's marks: Your practice keeps 3/3 for it, as one attempt (progress store, format 2)
     progress = page.evaluate("JSON.parse(localStorage.getItem('dynamics-progress-v2'))")
     mine = [a for a in progress["attempts"] if a["question"] == key]
     assert [(a["earned"], a["available"]) for a in mine] == [(3, 3)]

@@ -39,13 +39,12 @@
     return found;
   }
 
-  /* Does a number, as written, give a value away: the value rounded to the number's own
-   * significant figures, 2 or more (a 1 s.f. "2" says little about 2.4)? */
+  /* Does a number, as written, give a value away: the value rounds to it at its own last
+   * digit, with 2 or more significant figures (a 1 s.f. "2" says little about 2.4)? */
   function gives(number, value) {
-    var target = Math.abs(value);
     for (var sf = Math.max(2, number.sfMin); sf <= number.sfMax; sf++) {
-      var rounded = Number(target.toPrecision(Math.min(sf, 21)));
-      if (Math.abs(Math.abs(number.value) - rounded) <= 1e-9 * Math.max(rounded, 1e-300)) return true;
+      var half = 0.5 * Math.pow(10, number.lead - sf + 1);
+      if (Math.abs(Math.abs(number.value) - Math.abs(value)) <= half * (1 + 1e-9)) return true;
     }
     return false;
   }

@@ -1,6 +1,8 @@
 """The {practice-progress} directive in small Sphinx builds: the HTML page embeds every
 template of the bank by type with the page that places it (kept current when another page
-changes), and loads its script only there; print builds say where the progress lives."""
+changes), the sections its named mistakes send a student to and the self-test's cards, and
+loads its scripts (the plan's ts-fsrs among them) only there; a question's page loads the
+review line; print builds say where the progress lives."""
 
 from __future__ import annotations
 
@@ -29,7 +31,10 @@ def _project(tmp_path: Path, asked: str) -> Path:
         question_topics = ["physics_figures.bank"]
         root_doc = "index"
         """))
-    (tmp_path / "index.md").write_text("# Book\n\n```{toctree}\nasked\nprogress\n```\n")
+    (tmp_path / "index.md").write_text("# Book\n\n```{toctree}\nasked\nprogress\ndefs\n```\n")
+    (tmp_path / "defs.md").write_text("# Definitions\n\n```{admonition} Learn these\n:class: self-test\n\n"
+                                      "- **Mass:** what resists a change in motion.\n"
+                                      "- **Newton\u2019s first law:** at rest or constant velocity.\n```\n")
     (tmp_path / "asked.md").write_text("# Questions\n\n" + asked)
     (tmp_path / "progress.md").write_text("# Your practice\n\nWhat you practised.\n\n```{practice-progress}\n```\n")
     return tmp_path
@@ -62,7 +67,26 @@ def test_the_page_embeds_the_bank_by_type_with_the_page_that_places_each(tmp_pat
     page = (source / "_out" / "html" / "progress.html").read_text()
     assert "_static/progress.js" in page and "_static/progress.css" in page
     assert f'href="asked.html#question-{key}"' in page  # without JavaScript: the question itself
-    assert "progress.js" not in (source / "_out" / "html" / "asked.html").read_text()
+    asked = (source / "_out" / "html" / "asked.html").read_text()
+    assert "progress.js" not in asked
+    # the plan's scripts, each after the ones it uses; the scheduler on no other page
+    scripts = re.findall(r'<script[^>]* src="_static/([^"?]+)', page)
+    plan = ["notation.js", "progress-store.js", "ts-fsrs.js", "schedule.js", "progress-file.js", "progress.js",
+            "progress-plan.js"]
+    assert [name for name in scripts if name in plan] == plan
+    assert "ts-fsrs.js" not in asked and "progress-plan.js" not in asked
+    assert asked.index("_static/questions.js") < asked.index("_static/review.js")  # Start's cards are served here
+    # a named mistake's section, and the engine's own slips' rows, as the question's feedback links them
+    see, parts = entries[key]["see"], bank.TEMPLATES[key].variant(0).parts
+    named = [(m.name, m.see or p.see) for p in parts for m in (p.mistakes or ()) if m.see or p.see]
+    assert set(see) == {name for name, _ in named}
+    assert all((name, ident) in named for name, ident in see.items())
+    assert set(data["generic"]) == {"sign or direction", "unit missing or wrong", "1 s.f. answer"}
+    # the self-test's cards, named as selftest.js names them
+    assert data["definitions"] == {"page": "defs.html", "cards": [
+        {"slug": "mass", "term": "Mass"}, {"slug": "newton-s-first-law", "term": "Newton\u2019s first law"}]}
+    defs = (source / "_out" / "html" / "defs.html").read_text()
+    assert defs.index("_static/progress-store.js") < defs.index("_static/selftest.js") < defs.index("_static/review.js")
 
     # The question moves off the page: the progress page is rewritten though it did not change.
     (source / "asked.md").write_text("# Questions\n\nNone today.\n")

@@ -1,6 +1,6 @@
 """Spaced review and the plan of Your practice, as a student meets them, in Chromium with a
-fixed clock: real questions of the quick-check page answered right, partly (a named mistake)
-and wrong, and one right after help; the ratings and the stored schedule, with each due date
+fixed clock: real questions of the site answered right, partly (a named mistake) and wrong,
+and one right after help; the ratings and the stored schedule, with each due date
 checked against ts-fsrs called directly in Node (request retention 0.9, its defaults); Start
 serving the due cards interleaved, each with new numbers, card after card to the end; the
 first screen at 390 x 844 and the page's height; a real format 1 export (made on the site
@@ -15,6 +15,7 @@ import json
 import subprocess
 from datetime import UTC, datetime, timedelta
 from pathlib import Path
+from urllib.parse import urljoin
 
 import pytest
 from browser import node_module, open_browser, progress_checksum, serve_site
@@ -25,7 +26,6 @@ pytestmark = [pytest.mark.site, pytest.mark.browser]
 
 ROOT = Path(__file__).resolve().parents[1]
 PROGRESS = "/book/exam/your-practice.html"
-QUICK_CHECK = "/book/exam/quick-check.html"
 STORE = "dynamics-progress-v2"
 V1_FILE = ROOT / "tests" / "fixtures" / "progress_v1" / "progress-v1.json"
 PHONE = {"width": 390, "height": 844}
@@ -77,15 +77,16 @@ def _at(context, when: datetime):
     return int(when.timestamp() * 1000)
 
 
-def _numeric_on_quick_check(data) -> list[tuple[str, str]]:
-    """(key, type) of each template the quick-check page places whose parts are all numbers."""
-    return [(t["key"], kind["type"]) for kind in data["types"] for t in kind["templates"]
-            if t["page"] == "quick-check.html" and all(p.unit for p in bank.TEMPLATES[t["key"]].variant(0).parts)]
+def _numeric(data) -> list[tuple[str, str, str]]:
+    """(key, type, page) of each placed template whose parts are all numbers, quick-check's first."""
+    found = [(t["key"], kind["type"], t["page"]) for kind in data["types"] for t in kind["templates"]
+             if t["page"] and all(getattr(p, "unit", None) for p in bank.TEMPLATES[t["key"]].variant(0).parts)]
+    return sorted(found, key=lambda k: k[2] != "quick-check.html")
 
 
-def _answer(page, key: str, values: list[float] | None = None):
+def _answer(page, key: str, values: list[float | None] | None = None):
     """Answer the question as shown, from the variant data the site ships (its key's values, or
-    `values`), and Check: the score shown."""
+    `values`, None leaving a part blank), and Check: the score shown."""
     form = page.locator(f'form.q-form[data-question="{key}"]')
     variant = int(form.get_attribute("data-variant"))
     parts = page.evaluate(
@@ -101,6 +102,8 @@ def _answer(page, key: str, values: list[float] | None = None):
     for index, part in enumerate(parts):
         box = form.locator("fieldset.q-part").nth(index)
         value = (values or [p["value"] for p in parts])[index]
+        if value is None:
+            continue
         box.locator("input.q-value").fill(_written(value if part["direction"] == "signed" else abs(value)))
         box.locator("input.q-unit").fill(part["unit"])
         if part["direction"] == "choice":
@@ -126,27 +129,31 @@ def _fsrs_due(reviews: dict[str, list[tuple[int, int]]]) -> dict[str, int]:
 
 
 def _practise(context):
-    """Right, partly right (a named mistake), wrong, and right after a step of help: four real
-    templates of the quick-check page, two of one type (so interleaving has work to do).
-    Returns {"right"|"partly"|"wrong"|"helped": (key, type)} and the page."""
+    """Right, wrong, right after a step of help, and partly right (a named mistake), a minute
+    apart: four real templates, the helped one of the wrong one's type, so that they fall due
+    side by side (wrong after 1 minute, helped after about 5) and interleaving has work to do.
+    Returns {"right"|"wrong"|"helped"|"partly": (key, type)} and the last question page."""
     page = _open(context, PROGRESS)
-    numeric = _numeric_on_quick_check(json.loads(page.locator("script.pp-data").text_content()))
-    partly = next(k for k in numeric if any(m.unit is None and m.direction is None
-                                            for m in bank.TEMPLATES[k[0]].variant(0).parts[0].mistakes))
-    rest = [k for k in numeric if k != partly]
-    wrong = rest[0]
-    helped = next((k for k in rest[1:] if k[1] == wrong[1]), rest[1])  # the wrong one's type, if any
-    right = next(k for k in rest[1:] if k not in (helped,))
-    chosen = {"right": right, "partly": partly, "wrong": wrong, "helped": helped}
-    quick = _open(context, QUICK_CHECK)
-    for minute, (name, (key, _)) in enumerate(chosen.items(), start=1):
+    numeric = _numeric(json.loads(page.locator("script.pp-data").text_content()))
+    wrong = numeric[0]
+    helped = next(k for k in numeric if k[1] == wrong[1] and k != wrong)
+    partly = next(k for k in numeric if k[1] != wrong[1] and any(
+        m.unit is None and m.direction is None for m in bank.TEMPLATES[k[0]].variant(0).parts[0].mistakes))
+    right = next(k for k in numeric if k[1] not in (wrong[1], partly[1]))
+    chosen = {"right": right, "wrong": wrong, "helped": helped, "partly": partly}
+    pages = {}
+    for minute, (name, (key, _, where)) in enumerate(chosen.items(), start=1):
+        if where not in pages:
+            pages[where] = _open(context, urljoin(PROGRESS, where))
+        quick = pages[where]
         _at(context, MORNING + timedelta(minutes=minute))
         parts = bank.TEMPLATES[key].variant(0).parts
         if name == "partly":
             mistake = next(m for m in parts[0].mistakes if m.unit is None and m.direction is None)
             _answer(quick, key, [mistake.value] + [p.value for p in parts[1:]])
         elif name == "wrong":
-            _answer(quick, key, [p.value * 7.3 + 1 for p in parts])
+            # the first part wrong, the rest left blank (a wrong answer carried forward could earn ecf)
+            _answer(quick, key, [parts[0].value * 7.3 + 1] + [None] * (len(parts) - 1))
         else:
             if name == "helped":
                 step = quick.locator(f'form.q-form[data-question="{key}"] button.q-step').first
@@ -156,6 +163,7 @@ def _practise(context):
                     quick.evaluate("() => { const r = ProgressStore.recordAttempt;"
                                    " ProgressStore.recordAttempt = (a, t) => r(Object.assign(a, {help: 1}), t); }")
             _answer(quick, key)
+    chosen = {name: (key, kind) for name, (key, kind, _) in chosen.items()}
     return chosen, quick
 
 
@@ -212,6 +220,8 @@ def test_start_serves_the_due_cards_interleaved_each_with_new_numbers_then_back(
     due = {k for name, (k, _) in chosen.items() if name != "right"}
     cards = queue["cards"]
     assert {c["id"] for c in cards[:3]} == due  # the due ones first, then the next ones
+    # by due date wrong, helped (its type), partly: served mixed, partly between the two
+    assert [c["id"] for c in cards[:3]] == [chosen[name][0] for name in ("wrong", "partly", "helped")]
     assert len(cards) == 3 + 5
     types = [c["type"] for c in cards]
     for i in range(1, len(cards)):  # never two of a type in a row while another type is left

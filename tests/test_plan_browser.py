@@ -256,8 +256,9 @@ def test_start_serves_the_due_cards_interleaved_each_with_new_numbers_then_back(
 def test_the_first_screen_shows_the_plan_and_the_page_is_at_most_two_screens(context):
     _practise(context)
     page = _open(context, PROGRESS)
-    page.evaluate("""ProgressStore.recordMock({id: "m1", paper: "2", at: Date.now(), minutes: 25,
-        ended: "submitted", earned: 14, available: 20, questions: []})""")
+    for n in range(4):  # the latest three show, then how many earlier
+        page.evaluate(f"""ProgressStore.recordMock({{id: "m{n}", paper: "{1 + n % 2}", at: Date.now() + {n},
+            minutes: 25, ended: "submitted", earned: {10 + n}, available: 20, questions: []}})""")
     page.reload(wait_until="load")
     for selector in (".pp-due-text", ".pp-start", ".pp-weakest", ".pp-often"):
         box = page.locator(selector).bounding_box()
@@ -266,7 +267,9 @@ def test_the_first_screen_shows_the_plan_and_the_page_is_at_most_two_screens(con
     assert page.locator("details.pp-type[open]").count() == 0
     height = page.evaluate("document.documentElement.scrollHeight")
     assert height <= 2 * PHONE["height"], f"Your practice is {height} px tall at 390 px"
-    assert "Paper 2" in page.locator(".pp-mocks").inner_text()
+    mocks = page.locator(".pp-mock-list li").all_inner_texts()
+    assert mocks == ["Paper 2, 26 Nov 2026: 13/20 marks (65\u202f%)", "Paper 1, 26 Nov 2026: 12/20 marks (60\u202f%)",
+                     "Paper 2, 26 Nov 2026: 11/20 marks (55\u202f%)", "and 1 earlier mock test."]
 
 
 def test_a_real_version_1_export_imports_into_version_2_with_every_attempt_kept(context, tmp_path):

@@ -15,6 +15,7 @@
 
   var Notation = root.Notation || require("../../notation/static/notation.js");
 
+  var MOCKS_SHOWN = 3;
   var MONTHS = ["Jan", "Feb", "Mar", "Apr", "May", "Jun", "Jul", "Aug", "Sep", "Oct", "Nov", "Dec"];
 
   function count(n) {
@@ -297,14 +298,19 @@
       mocks.hidden = !progress.mocks.length;
       var list = mocks.querySelector(".pp-mock-list");
       list.textContent = "";
-      progress.mocks
-        .slice()
-        .reverse()
-        .forEach(function (mock) {
-          var item = document.createElement("li");
-          item.textContent = mockText(mock);
-          list.appendChild(item);
-        });
+      // The latest few, so the page stays short; Export keeps every one.
+      var latest = progress.mocks.slice(-MOCKS_SHOWN).reverse();
+      latest.forEach(function (mock) {
+        var item = document.createElement("li");
+        item.textContent = mockText(mock);
+        list.appendChild(item);
+      });
+      var earlier = progress.mocks.length - latest.length;
+      if (earlier) {
+        var more = document.createElement("li");
+        more.textContent = "and " + count(earlier) + " earlier mock test" + (earlier === 1 ? "" : "s") + ".";
+        list.appendChild(more);
+      }
       clearButton.disabled = !read.ok ? false : progress.attempts.length + progress.mocks.length === 0;
       if (!read.ok) {
         say(

@@ -179,8 +179,9 @@ def visit_practice_progress(self, node):
                     f'{len(data["definitions"]["cards"])} definitions to learn in '
                     f'<a href="{escape(data["definitions"]["page"])}">the self-test</a>.</span></p>')
     html.append("</section>")
-    html.append('<section class="pp-mocks" aria-labelledby="pp-mocks-heading" hidden>'
-                '<h2 id="pp-mocks-heading">Mock tests</h2><ul class="pp-mock-list"></ul></section>')
+    html.append('<section class="pp-mocks" aria-label="Mock tests" hidden><p><strong>Mock tests:</strong> '
+                '<span class="pp-mock-latest"></span></p><details class="pp-mock-earlier" hidden><summary></summary>'
+                '<ul class="pp-mock-list"></ul></details></section>')
     html.append(
         '<section class="pp-file" aria-labelledby="pp-file-heading" hidden>'
         '<h2 id="pp-file-heading">Move or clear your progress</h2>'

@@ -15,7 +15,6 @@
 
   var Notation = root.Notation || require("../../notation/static/notation.js");
 
-  var MOCKS_SHOWN = 3;
   var MONTHS = ["Jan", "Feb", "Mar", "Apr", "May", "Jun", "Jul", "Aug", "Sep", "Oct", "Nov", "Dec"];
 
   function count(n) {
@@ -296,21 +295,20 @@
       });
       var mocks = box.querySelector(".pp-mocks");
       mocks.hidden = !progress.mocks.length;
-      var list = mocks.querySelector(".pp-mock-list");
+      // The latest in a line; the earlier ones folded, newest first, so the page stays short.
+      var newest = progress.mocks.slice().reverse();
+      mocks.querySelector(".pp-mock-latest").textContent = newest.length ? mockText(newest[0]) : "";
+      var earlier = mocks.querySelector(".pp-mock-earlier");
+      earlier.hidden = newest.length < 2;
+      earlier.querySelector("summary").textContent =
+        count(newest.length - 1) + " earlier mock test" + (newest.length === 2 ? "" : "s");
+      var list = earlier.querySelector(".pp-mock-list");
       list.textContent = "";
-      // The latest few, so the page stays short; Export keeps every one.
-      var latest = progress.mocks.slice(-MOCKS_SHOWN).reverse();
-      latest.forEach(function (mock) {
+      newest.slice(1).forEach(function (mock) {
         var item = document.createElement("li");
         item.textContent = mockText(mock);
         list.appendChild(item);
       });
-      var earlier = progress.mocks.length - latest.length;
-      if (earlier) {
-        var more = document.createElement("li");
-        more.textContent = "and " + count(earlier) + " earlier mock test" + (earlier === 1 ? "" : "s") + ".";
-        list.appendChild(more);
-      }
       clearButton.disabled = !read.ok ? false : progress.attempts.length + progress.mocks.length === 0;
       if (!read.ok) {
         say(

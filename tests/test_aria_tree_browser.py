@@ -1,4 +1,3 @@
-# ruff: noqa: RUF001  (typeset text: the true minus)
 """A screen reader's view of the questions and the explorables (issue 28, item 5), in Chromium.
 
 Chromium's accessibility tree (Playwright's aria snapshot) is checked against the shapes in

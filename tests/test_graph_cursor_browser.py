@@ -15,6 +15,7 @@ to the nearest half small square, and draws it where the SVG's own grid lines pu
 
 from __future__ import annotations
 
+import itertools
 import json
 import math
 import re
@@ -101,7 +102,7 @@ def levels(readings):
     """The line's level start and end, and where it leaves the first and meets the last: the
     last time at the first value and the first time at the last value (the turns a student reads)."""
     drawn = [(t, v) for t, v in readings if v is not None]
-    (t0, first), (_, last) = drawn[0], drawn[-1]
+    (_, first), (_, last) = drawn[0], drawn[-1]
     leaves = max(t for t, v in drawn if v == first and all(w == first for s, w in drawn if s <= t))
     meets = min(t for t, v in drawn if v == last and all(w == last for s, w in drawn if s >= t))
     return first, last, leaves, meets
@@ -112,7 +113,7 @@ def runs(readings) -> list[tuple[str, float]]:
     readings' successive differences (the sign survives the rounding to half a square)."""
     drawn = [(t, v) for t, v in readings if v is not None]
     pieces: list[list] = []
-    for (t1, v1), (t2, v2) in zip(drawn, drawn[1:]):
+    for (t1, v1), (t2, v2) in itertools.pairwise(drawn):
         way = "0" if v2 == v1 else ("+" if v2 > v1 else "−")
         if pieces and pieces[-1][0] == way:
             pieces[-1][3:] = [t2, v2]
@@ -139,7 +140,7 @@ def ball(q):
 def kick(q):
     drawn = [(t, v) for t, v in q.readings if v is not None]
     largest = max(v for _, v in drawn)
-    area = sum((t2 - t1) * (v1 + v2) / 2 for (t1, v1), (t2, v2) in zip(drawn, drawn[1:]))
+    area = sum((t2 - t1) * (v1 + v2) / 2 for (t1, v1), (t2, v2) in itertools.pairwise(drawn))
     mass = given(q.text, r"of mass (\S+) kg")
     return {"a": (largest, "N"), "b": (sig3(area), "N s"), "c": (sig3(area / mass), "m s^-1")}, [largest]
 
@@ -183,7 +184,8 @@ def force_choice(q):
                                                     label)] == signs]
     assert len(chosen) == 1, f"the gradients' signs {signs} fit {chosen} of {q.options}"
     drawn = [(t, v) for t, v in q.readings if v is not None]
-    corners = [v for (_, u), (_, v), (_, w) in zip(drawn, drawn[1:], drawn[2:]) if (v - u) * (w - v) <= 0 and u != w]
+    corners = [v for (_, u), (_, v), (_, w) in zip(drawn, drawn[1:], drawn[2:], strict=False)
+               if (v - u) * (w - v) <= 0 and u != w]
     return {"a": chosen[0]}, corners
 
 
@@ -363,7 +365,7 @@ def test_no_alt_text_of_any_site_variant_gives_a_reading_a_part_asks_for(site_di
         html = (site_dir / path).read_text(encoding="utf-8")
         section = html[html.index(f'data-q="{key}"'):]
         printed = json.loads(re.search(r'<script type="application/json" class="q-data">(.*?)</script>',
-                                       section, re.S)[1])
+                                       section, re.DOTALL)[1])
         alt = re.search(r'<img alt="([^"]*)"[^>]*class="q-graph"', section)[1]
         variants = [(printed, alt)]
         script = site_dir / "_static" / "questions" / f"{key}.js"

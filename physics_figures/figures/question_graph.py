@@ -16,7 +16,7 @@ from matplotlib.axes import Axes
 from matplotlib.lines import Line2D
 from matplotlib.ticker import FixedLocator, FuncFormatter, MultipleLocator
 
-from ..notation import LARGEST_PLAIN, format_number
+from ..notation import LARGEST_PLAIN, format_number, round_number
 from ..questions import Graph
 from ..style import colour
 from ._text import plain
@@ -196,7 +196,7 @@ def cursor_data(svg: str, graph: Graph) -> dict:
         "time": _axis_data("time", "s", 0.0, graph.time_max, graph.time_division),
         "value": _axis_data(graph.quantity, graph.unit, graph.value_min, graph.value_max, graph.value_division),
         "readings": list(graph.readings()),
-        "area": [round(left / width, 5), round(top / height, 5), round(right / width, 5), round(bottom / height, 5)],
+        "area": [float(round_number(side, decimals=5)) for side in (left / width, top / height, right / width, bottom / height)],
     }
 
 

@@ -10,6 +10,7 @@ import math
 from dataclasses import dataclass, field
 from typing import ClassVar
 
+from ..notation import round_number
 from .common import _require
 from .numeric import Part
 
@@ -131,7 +132,8 @@ class Graph:
                 continue
             steps = (self.value_at(min(max(time, first), last)) - self.value_min) / half_value
             whole = math.floor(abs(steps) + 0.5 + 1e-9) * (1 if steps >= 0 else -1)
-            out.append(float(f"{self.value_min + whole * half_value:.12g}"))  # no float dust: 1.2, not 1.2000000000000002
+            # no float dust: 1.2, not 1.2000000000000002
+            out.append(float(round_number(self.value_min + whole * half_value, 12)))
         return tuple(out)
 
 

@@ -124,16 +124,20 @@ class Graph:
         question's graph announces these (book/_ext/questions/static/graph-cursor.js)."""
         half_time, half_value = self.time_division / 2, self.value_division / 2
         first, last = self.points[0][0], self.points[-1][0]
+        # the half squares' lines counted from zero (a tie goes away from zero), or from the
+        # axis's low end when zero is not on one of them
+        lines_from_zero = math.isclose(self.value_min / half_value, round(self.value_min / half_value), abs_tol=1e-9)
+        origin = 0.0 if lines_from_zero else self.value_min
         out: list[float | None] = []
         for index in range(round(self.time_max / half_time) + 1):
             time = index * half_time
             if not first - 1e-9 <= time <= last + 1e-9:
                 out.append(None)
                 continue
-            steps = (self.value_at(min(max(time, first), last)) - self.value_min) / half_value
+            steps = (self.value_at(min(max(time, first), last)) - origin) / half_value
             whole = math.floor(abs(steps) + 0.5 + 1e-9) * (1 if steps >= 0 else -1)
             # no float dust: 1.2, not 1.2000000000000002
-            out.append(float(round_number(self.value_min + whole * half_value, 12)))
+            out.append(float(round_number(origin + whole * half_value, 12)))
         return tuple(out)
 
 

@@ -234,6 +234,7 @@ def add_assets(app, pagename, templatename, context, doctree):
         for kind in KIND_SCRIPTS:  # each part kind's marker, before the engine that finds them
             app.add_js_file(f"question-kinds/{kind}.js", loading_method="defer", priority=450)
         app.add_js_file("marking.js", loading_method="defer", priority=460)
+        app.add_js_file("question-relabel.js", loading_method="defer")  # New numbers' words, shared
         app.add_js_file("questions.js", loading_method="defer")
         # the enlarged graph view, on the pages that print a question's graph
         if any(item.get("graph") for item in store.questions(app.env).get(pagename, ())):

@@ -159,6 +159,12 @@ def _explain_html(base: str, part: dict, data: dict) -> str:
             f'<div class="q-model-text">{part["model"]}</div></div></div>')
 
 
+def rules_script() -> str:
+    """The rule table the marking engine reads (physics_figures/marking_rules.json), once a page."""
+    table = json.dumps({"outcomes": marking.outcome_losses(), "sigFigs": marking.sig_figs()})
+    return f'<script type="application/json" class="q-rules">{table}</script>'
+
+
 def visit_question_form(self, node):
     data, template = node["data"], node.get("template")
     attributes = ""
@@ -171,9 +177,7 @@ def visit_question_form(self, node):
         self._q_ideas_written = True
         links = json.dumps(section_links(self), ensure_ascii=False).replace("</", "<\\/")
         html.insert(0, f'<script type="application/json" class="q-sections">{links}</script>')
-        # the rule table the marking engine reads (physics_figures/marking_rules.json)
-        table = json.dumps({"outcomes": marking.outcome_losses(), "sigFigs": marking.sig_figs()})
-        html.insert(0, f'<script type="application/json" class="q-rules">{table}</script>')
+        html.insert(0, rules_script())
     labels = node.get("labels") or [""] * len(data["parts"])
     for part, legend, label in zip(data["parts"], node["legends"], labels, strict=True):
         base = f"q-{data['id']}-{part['id']}"

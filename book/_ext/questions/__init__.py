@@ -35,6 +35,7 @@ from . import (
     print_form,
     progress,
     rules_table,
+    schedule,
     self_test,
     sheet_builder,
     store,
@@ -81,7 +82,7 @@ def setup(app):
     app.add_node(directive.graph_view, html=(form.visit_graph_view, form.depart_graph_view))
     app.add_directive("question", directive.QuestionDirective)
     for job in (answer_key, progress, try_similar, book_map, self_test, rules_table, class_page, sheet_builder,
-                mock_test):
+                schedule, mock_test):
         job.setup(app)
     app.connect("config-inited", add_static_path)
     app.connect("env-purge-doc", store.purge)

@@ -18,23 +18,22 @@ from __future__ import annotations
 
 import json
 from html import escape
-from pathlib import Path
 
 from docutils import nodes
 from fresh_figures import uses_modules  # book/_ext: re-read the page when the bank changes
 from notation import add_notation_script  # book/_ext/notation: the browser's number writer
 from sphinx.util.docutils import SphinxDirective
 
-from . import form, store
+from . import form, schedule, store
 
 DIRECTIVE = "mock-test"
-STATIC = Path(__file__).parent / "static"
 NEEDS_BROWSER = ("The mock test runs in your web browser: open this page in the web version of the book, "
                  "with JavaScript on, to take one.")
-#: The scripts the page runs, in order: the engine's (as a question's page loads them), the
-#: shared relabelling and draws, then the page's own. progress-store.js keeps the result.
-SCRIPTS = ("question-relabel.js", "question-draw.js", "mock-draw.js", "mock-questions.js", "progress-store.js",
-           "graph-view.js", "mock-test.js")
+#: The scripts the page runs, after the engine's (as a question's page loads them) and the
+#: store that keeps the result (progress-store.js): the shared relabelling and draws, then the
+#: page's own.
+SCRIPTS = ("question-relabel.js", "question-draw.js", "mock-draw.js", "mock-questions.js", "graph-view.js",
+           "mock-test.js")
 
 
 class mock_test(nodes.General, nodes.Element):
@@ -120,9 +119,9 @@ def add_assets(app, pagename, templatename, context, doctree):
     for kind in form.KIND_SCRIPTS:
         app.add_js_file(f"question-kinds/{kind}.js", loading_method="defer", priority=450)
     app.add_js_file("marking.js", loading_method="defer", priority=460)
+    schedule.add_store_script(app)
     for script in SCRIPTS:
-        if script != "progress-store.js" or (STATIC / script).is_file():
-            app.add_js_file(script, loading_method="defer")
+        app.add_js_file(script, loading_method="defer")
 
 
 def setup(app):

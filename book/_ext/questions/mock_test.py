@@ -48,12 +48,18 @@ class MockTestDirective(SphinxDirective):
 
 
 def mock_index(env, config) -> dict:
-    """What the draw reads: every template placed on a page whose variants a data file ships
-    (two or more site variants: variants.py), in the bank's order, and each type's title and
-    exam count. No numbers of a question: those come with its data file."""
+    """What the draw reads, from the templates the book's pages place (index_of)."""
     placed = {key for keys in store.templates_used(env).values() for key in keys}
+    return index_of(store.topics(config), placed)
+
+
+def index_of(topics, placed: set[str]) -> dict:
+    """What the draw reads: every template of `placed` whose variants a data file ships (two or
+    more site variants: variants.py), in the bank's order, with its type, marks, part kinds and
+    number of site variants; and each type's title and exam count. No numbers of a question:
+    those come with its data file."""
     types, templates = [], []
-    for topic in store.topics(config):
+    for topic in topics:
         types += [{"key": kind.key, "title": kind.title, "examCount": kind.exam_count} for kind in topic.types]
         templates += [{"key": t.key, "type": t.type, "marks": t.variant(0).marks, "kinds": list(t.kinds),
                        "variants": len(t.site_variants)}

@@ -42,15 +42,16 @@
     return size * paperOf(paper).minutesEach;
   }
 
-  /* Each template once per variant it has (its copies): a test longer than a type's templates
-   * asks one again, with other numbers. A type's copies are tried round by round (every
-   * template's first copy, in the seed's order, then every second copy...), so a template comes
-   * twice only when its type has no other left. Paper 1 counts questions: each copy weighs 1. */
-  function copies(index, paper) {
+  /* Each template up to `most` times (its copies), never more than it has variants: a test
+   * longer than the templates allow asks some again, with other numbers (draw() allows as few
+   * copies as the test needs). A type's copies are tried round by round (every template's
+   * first copy, in the seed's order, then every second copy...), so a template comes twice only
+   * when its type has no other left. Paper 1 counts questions: each copy weighs 1. */
+  function copies(index, paper, most) {
     var out = [];
     index.templates.forEach(function (template) {
       if (!asks(paper, template)) return;
-      for (var copy = 0; copy < template.variants; copy++) {
+      for (var copy = 0; copy < Math.min(most, template.variants); copy++) {
         out.push({ key: template.key, type: template.type, marks: paper === "1" ? 1 : template.marks, copy: copy });
       }
     });
@@ -80,7 +81,21 @@
       "must be one of " + paperOf(paper).sizes.join(", ") + " " + paperOf(paper).unit[1],
     );
     Draw.check(Draw.isWhole(seed) && seed >= 0, "seed", seed, "must be a whole number, 0 or more");
-    var chosen = Draw.chooseTemplates(index, copies(index, paper), size, seed, roundByRound);
+    var chosen = null;
+    var most = Math.max.apply(
+      null,
+      index.templates.map(function (t) {
+        return t.variants;
+      }),
+    );
+    // each template once if the size can be made so, else twice, and so on
+    for (var times = 1; !chosen; times++) {
+      try {
+        chosen = Draw.chooseTemplates(index, copies(index, paper, times), size, seed, roundByRound);
+      } catch (error) {
+        if (!(error instanceof Draw.DrawError) || times >= most) throw error;
+      }
+    }
     var counts = {};
     var total = {};
     index.templates.forEach(function (template) {

@@ -129,12 +129,12 @@ def least_straying(paper: str, size: int) -> float:
     times = next(t for t in range(1, 11) if makeable(paper, size, t))
     counts = {kind["key"]: kind["examCount"] for kind in INDEX["types"]}
     best = {0: 0.0}
-    for kind in counts:
+    for kind, count in counts.items():
         sums = {0}
         for template in [t for t in asked(paper) if t["type"] == kind]:
             for _ in range(min(times, template["variants"])):
                 sums |= {s + weight(paper, template) for s in sums if s + weight(paper, template) <= size}
-        share = size * counts[kind] / sum(counts.values())
+        share = size * count / sum(counts.values())
         following: dict[int, float] = {}
         for total, cost in best.items():
             for amount in sums:
@@ -167,7 +167,7 @@ def test_the_types_are_weighted_by_their_exam_counts(drawn):
 
 def test_a_seed_gives_the_same_test_and_seeds_give_different_ones(drawn):
     again = run({"index": INDEX, "cases": [{"paper": "2", "size": 20, "seed": 7}] * 2})["tests"]
-    assert again[0] == again[1] == [t for t in drawn if (t["paper"], t["size"], t["seed"]) == ("2", 20, 7)][0]
+    assert again[0] == again[1] == next(t for t in drawn if (t["paper"], t["size"], t["seed"]) == ("2", 20, 7))
     tests = {json.dumps(t["questions"]) for t in drawn if (t["paper"], t["size"]) == ("1", 10)}
     assert len(tests) > len(SEEDS) * 0.9
 

@@ -14,11 +14,12 @@ before is not drawn again.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import json
-from types import SimpleNamespace
 from importlib.metadata import version
 from pathlib import Path
+from types import SimpleNamespace
 
 from docutils import nodes
 from fresh_figures import modules_digest  # book/_ext: the files a module runs, by content
@@ -135,8 +136,6 @@ def form_html(template) -> str:
     once above its first form (the rule table, feedback links, the units hint): the mock test's
     page holds those. form.py writes through a page's translator; this collects what it writes."""
     page = SimpleNamespace(body=[], _q_ideas_written=True, _q_unit_hint_written=True)
-    try:
+    with contextlib.suppress(nodes.SkipNode):
         form.visit_question_form(page, form_node(template.variant(0), _template_data(template)))
-    except nodes.SkipNode:
-        pass
     return "".join(page.body)

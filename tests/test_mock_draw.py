@@ -170,6 +170,12 @@ def test_a_seed_gives_the_same_test_and_seeds_give_different_ones(drawn):
     assert again[0] == again[1] == next(t for t in drawn if (t["paper"], t["size"], t["seed"]) == ("2", 20, 7))
     tests = {json.dumps(t["questions"]) for t in drawn if (t["paper"], t["size"]) == ("1", 10)}
     assert len(tests) > len(SEEDS) * 0.9
+    # and fresh numbers: a template's variant changes with the seed
+    numbers: dict[str, set[int]] = {}
+    for test in drawn:
+        for q in test["questions"]:
+            numbers.setdefault(q["question"], set()).add(q["variant"])
+    assert all(len(seen) > 1 for seen in numbers.values()), numbers
 
 
 def test_a_size_the_paper_does_not_offer_is_refused_with_what_it_offers():

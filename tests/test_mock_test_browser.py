@@ -12,7 +12,8 @@ page's clock in the test's hands (Playwright's page.clock):
   shows its marks and its worked answer;
 - the result is kept (ProgressStore: the mock in the contract's shape, each answered question
   an attempt of the mock), once;
-- it works from the built folder opened as files, and offline after one visit.
+- it works from the built folder opened as files, and offline after one visit;
+- axe finds nothing, light or dark, in the test and in its result.
 Everything expected is read from the variant data the site ships and the engine itself."""
 
 from __future__ import annotations
@@ -21,7 +22,7 @@ import re
 from datetime import UTC, datetime
 
 import pytest
-from browser import serve_site
+from browser import axe_violations, serve_site
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
@@ -259,3 +260,41 @@ def test_a_test_runs_offline_after_one_visit(browser, site_dir):
             i.decode().then(() => i.naturalWidth > 0, () => i.src)))""")
         assert all(result is True for result in shown), shown
         context.close()
+
+
+#: A Paper 2 test of 30 marks with a graph to read, kept as the page keeps a test it started.
+WITH_A_GRAPH = """() => {
+    const index = JSON.parse(document.querySelector('script.mock-index').textContent);
+    const graph = (q) => index.templates.find(t => t.key === q.question).kinds.includes('graph');
+    for (let seed = 0; ; seed++) {
+        const test = MockDraw.draw(index, '2', 30, seed);
+        if (test.questions.some(graph)) {
+            Object.assign(test, {version: 1, at: Date.now(), answers: {}, warned: []});
+            localStorage.setItem('dynamics-mock-v1', JSON.stringify(test));
+            return test;
+        }
+    }
+}"""
+
+
+@pytest.mark.parametrize("mode", ["light", "dark"])
+def test_no_axe_violations_in_a_test_and_its_result(browser, base_url, mode):
+    context = browser.new_context(color_scheme=mode)
+    page = context.new_page()
+    page.goto(f"{base_url}/{PAGE}")
+    page.evaluate(f"document.documentElement.dataset.theme = '{mode}'")
+    assert axe_violations(page, context_selector=".mock") == []
+    test = page.evaluate(WITH_A_GRAPH)
+    page.reload()
+    page.locator(".mock-q").first.wait_for()
+    page.evaluate(f"document.documentElement.dataset.theme = '{mode}'")
+    answer(page, 0, right(variants(page, test)[0]))
+    page.locator(".mock-bar .mock-finish").click()
+    page.locator(".mock-q .q-graph-open").first.hover()  # its hint stays readable under the pointer
+    assert axe_violations(page, context_selector=".mock") == []
+    page.get_by_role("button", name="Yes, finish and mark").click()
+    page.locator(".mock-result").wait_for()
+    page.locator(".mock-q details.q-worked summary").first.click()
+    page.locator(".mock-q .q-graph-open").first.hover()
+    assert axe_violations(page, context_selector=".mock") == []
+    context.close()

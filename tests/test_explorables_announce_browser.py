@@ -131,8 +131,14 @@ def test_holding_an_arrow_key_is_announced_at_most_twice_a_second_then_the_final
         # (the parachute's opening time changes no read-out once she is at terminal velocity)
         changed = {label: text for label, text in after.items() if before.get(label) != text}
         read_outs_changed += bool(changed)
-        missing = [f"{label} {text}" for label, text in changed.items() if words(f"{label} {text}") not in final]
-        assert not missing, f"the final announcement leaves out {missing}: {final!r}"
+        # Each changed read-out is last heard with its final text. That is the final announcement,
+        # unless the keys came more than the gap apart (a loaded machine): then the slider stopped
+        # in between, and what changed before is said then, not again.
+        spoken = [words(text) for _, text in heard]
+        missing = [f"{label} {text}" for label, text in changed.items()
+                   if not any(words(f"{label} ") in said for said in spoken)
+                   or words(f"{label} {text}") not in [s for s in spoken if words(f"{label} ") in s][-1]]
+        assert not missing, f"the read-outs that changed are not last heard as they end: {missing}; {where}"
     assert read_outs_changed, f"no slider of the {name} explorable changed a read-out: the test proves nothing"
     page.close()
 

@@ -16,7 +16,7 @@ from matplotlib.axes import Axes
 from matplotlib.lines import Line2D
 from matplotlib.ticker import FixedLocator, FuncFormatter, MultipleLocator
 
-from ..notation import LARGEST_PLAIN, format_number
+from ..notation import LARGEST_PLAIN, format_number, round_number
 from ..questions import Graph
 from ..style import colour
 from ._text import plain
@@ -150,21 +150,54 @@ def question_graph_alt(graph: Graph) -> str:
     )
 
 
-def small_square(svg: str, graph: Graph) -> tuple[float, float]:
-    """A small square's width and height as fractions of the drawn image's width, measured in
-    its SVG (the plot area's frame over the viewBox): the enlarged view zooms until half a
-    square is big enough to read from (book/_ext/questions/static/graph-view.js)."""
+def _plot_area(svg: str) -> tuple[float, float, float, float, float, float]:
+    """The plot area's frame in the SVG's own units, (left, top, right, bottom), and the
+    viewBox's width and height."""
     view = re.search(r'viewBox="([\d.\s-]+)"', svg)
     area = re.search(rf'<g id="{PLOT_AREA_ID}">\s*<path d="([^"]+)"', svg)
     if view is None or area is None:
         raise ValueError(f"svg must hold a viewBox and the plot area <g id={PLOT_AREA_ID!r}> "
                          "(plot_question_graph draws it)")
-    width = float(view[1].split()[2])
+    width, height = (float(x) for x in view[1].split()[2:4])
     numbers = [float(x) for x in re.findall(r"-?\d+(?:\.\d+)?", area[1])]
     xs, ys = numbers[0::2], numbers[1::2]
+    return min(xs), min(ys), max(xs), max(ys), width, height
+
+
+def small_square(svg: str, graph: Graph) -> tuple[float, float]:
+    """A small square's width and height as fractions of the drawn image's width, measured in
+    its SVG (the plot area's frame over the viewBox): the enlarged view zooms until half a
+    square is big enough to read from (book/_ext/questions/static/graph-view.js)."""
+    left, top, right, bottom, width, _ = _plot_area(svg)
     across = round(graph.time_max / graph.time_division)
     up = round((graph.value_max - graph.value_min) / graph.value_division)
-    return ((max(xs) - min(xs)) / across / width, (max(ys) - min(ys)) / up / width)
+    return ((right - left) / across / width, (bottom - top) / up / width)
+
+
+#: How a reading names each quantity: "t = 1.5 s, v = 12.5 m s⁻¹".
+SYMBOLS = {"time": "t", "velocity": "v", "momentum": "p", "force": "F"}
+
+
+def _axis_data(label: str, unit: str, low: float, high: float, division: float) -> dict:
+    return {"symbol": SYMBOLS.get(label, label), "label": label, "unit": unit, "min": low, "max": high,
+            "square": division, "large": _label_step(high - low, division),
+            # places of a reading on a small square's line, and of one half-way between two
+            "places": [_decimals(division), _decimals(division / 2)]}
+
+
+def cursor_data(svg: str, graph: Graph) -> dict:
+    """What the graph cursor (book/_ext/questions/static/graph-cursor.js) reads: both axes as
+    drawn here (label, unit, ends, small and large square), the line's readings at each half
+    small square of time (Graph.readings: the question's own numbers, to half a small square),
+    and the plot area as fractions of the image's width and height (left, top, right, bottom),
+    where a tap on the enlarged graph is turned into a time."""
+    left, top, right, bottom, width, height = _plot_area(svg)
+    return {
+        "time": _axis_data("time", "s", 0.0, graph.time_max, graph.time_division),
+        "value": _axis_data(graph.quantity, graph.unit, graph.value_min, graph.value_max, graph.value_division),
+        "readings": list(graph.readings()),
+        "area": [float(round_number(side, decimals=5)) for side in (left / width, top / height, right / width, bottom / height)],
+    }
 
 
 # --- The book's figures from this module (see book_figure.py); a page calls one of these. ---

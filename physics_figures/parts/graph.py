@@ -10,6 +10,7 @@ import math
 from dataclasses import dataclass, field
 from typing import ClassVar
 
+from ..notation import round_number
 from .common import _require
 from .numeric import Part
 
@@ -115,6 +116,29 @@ class Graph:
                 return v0 + (v1 - v0) * (time - t0) / (t1 - t0)
         raise ValueError(f"time must lie on the drawn line, {self.points[0][0]} to "
                          f"{self.points[-1][0]} s (got time={time!r})")
+
+    def readings(self) -> tuple[float | None, ...]:
+        """What a student with a ruler reads off the drawn line at every half small square of
+        time from 0 to ``time_max``: the value there to the nearest half small square of the
+        value axis (half away from zero), None where no line is drawn. The graph cursor of a
+        question's graph announces these (book/_ext/questions/static/graph-cursor.js)."""
+        half_time, half_value = self.time_division / 2, self.value_division / 2
+        first, last = self.points[0][0], self.points[-1][0]
+        # the half squares' lines counted from zero (a tie goes away from zero), or from the
+        # axis's low end when zero is not on one of them
+        lines_from_zero = math.isclose(self.value_min / half_value, round(self.value_min / half_value), abs_tol=1e-9)
+        origin = 0.0 if lines_from_zero else self.value_min
+        out: list[float | None] = []
+        for index in range(round(self.time_max / half_time) + 1):
+            time = index * half_time
+            if not first - 1e-9 <= time <= last + 1e-9:
+                out.append(None)
+                continue
+            steps = (self.value_at(min(max(time, first), last)) - origin) / half_value
+            whole = math.floor(abs(steps) + 0.5 + 1e-9) * (1 if steps >= 0 else -1)
+            # no float dust: 1.2, not 1.2000000000000002
+            out.append(float(round_number(origin + whole * half_value, 12)))
+        return tuple(out)
 
 
 

@@ -15,6 +15,7 @@ template's other variants go to a small script of data, loaded by New numbers (v
 
 from __future__ import annotations
 
+import json
 import os
 from pathlib import Path
 
@@ -42,7 +43,8 @@ class worked_answer(nodes.General, nodes.Element):
 
 class graph_view(nodes.General, nodes.Element):
     """The question's graph as a button that opens it enlarged (static/graph-view.js): ``square``
-    is a small square's width and height as fractions of the image's width. In HTML only; print
+    is a small square's width and height as fractions of the image's width, ``cursor`` the graph
+    cursor's data (JSON, static/graph-cursor.js). In HTML only; print
     shows the image alone (print_form.py)."""
 
 
@@ -104,7 +106,8 @@ class QuestionDirective(SphinxDirective):
         here = Path(self.env.srcdir) / Path(self.env.docname).parent
         uri = Path(os.path.relpath(folder / f"{key}-0", here)).as_posix() + ".*"
         return graph_view("", nodes.image(uri=uri, alt=drawn.alt, classes=["q-graph"]),
-                          square=square_text(folder / f"{key}-0.svg", graph))
+                          square=square_text(folder / f"{key}-0.svg", graph),
+                          cursor=cursor_text(folder / f"{key}-0.svg", graph))
 
     def _record(self, node: question, data, title: str, worked: worked_answer) -> None:
         for docname, asked in store.questions(self.env).items():
@@ -209,6 +212,14 @@ def square_text(svg: Path, graph) -> str:
     from physics_figures.figures.question_graph import small_square
 
     return " ".join(f"{fraction:.5g}" for fraction in small_square(svg.read_text(encoding="utf-8"), graph))
+
+
+def cursor_text(svg: Path, graph) -> str:
+    """The graph cursor's data (static/graph-cursor.js) as compact JSON: axes, readings at
+    each half small square, the plot area (physics_figures/figures/question_graph.py)."""
+    from physics_figures.figures.question_graph import cursor_data
+
+    return json.dumps(cursor_data(svg.read_text(encoding="utf-8"), graph), ensure_ascii=False, separators=(",", ":"))
 
 
 def write_graph(folder: Path, name: str, graph, *, formats: tuple[str, ...]):

@@ -211,10 +211,11 @@ ENLARGE = "Enlarge the graph to read it"
 def visit_graph_view(self, node):
     """The graph's image inside a button that opens the enlarged view (static/graph-view.js,
     loaded with the questions' scripts). The interface outside tests use: button.q-graph-open
-    with data-square (a small square's width and height over the image's width) around
+    with data-square (a small square's width and height over the image's width) and data-cursor
+    (the graph cursor's axes and readings, static/graph-cursor.js) around
     img.q-graph; the view is dialog.q-graph-view."""
     self.body.append(f'<button type="button" class="q-graph-open" aria-haspopup="dialog" '
-                     f'data-square="{escape(node["square"])}">')
+                     f'data-square="{escape(node["square"])}" data-cursor="{escape(node["cursor"])}">')
 
 
 def depart_graph_view(self, node):
@@ -243,3 +244,4 @@ def add_assets(app, pagename, templatename, context, doctree):
         # the enlarged graph view, on the pages that print a question's graph
         if any(item.get("graph") for item in store.questions(app.env).get(pagename, ())):
             app.add_js_file("graph-view.js", loading_method="defer")
+            app.add_js_file("graph-cursor.js", loading_method="defer")  # read it by keys or a tap

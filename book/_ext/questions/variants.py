@@ -25,7 +25,7 @@ from docutils import nodes
 from fresh_figures import modules_digest  # book/_ext: the files a module runs, by content
 
 from . import form, store
-from .directive import _template_data, form_node, square_text, write_graph
+from .directive import _template_data, cursor_text, form_node, square_text, write_graph
 
 VARIANTS_DIR = "questions"  # under the site's _static/: one file of variants per template
 
@@ -100,7 +100,8 @@ def write_variants(app, exception):
             if variant.graph is not None:  # its own graph, beside the variants' script
                 name = f"{key}-{index}.svg"
                 drawn = _graph(folder, name, variant.graph, graphs, drawn_graphs)
-                data["graph"] = {"src": name, "alt": drawn["alt"], "square": drawn["square"]}
+                data["graph"] = {"src": name, "alt": drawn["alt"], "square": drawn["square"],
+                                 "cursor": json.loads(drawn["cursor"])}
                 files[name] = drawn_graphs[name]["svg"]
             variants.append(data)
         payload = json.dumps(variants, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
@@ -115,18 +116,19 @@ def write_variants(app, exception):
 
 
 def _graph(folder: Path, name: str, graph, last: dict, drawn: dict) -> dict:
-    """Draw one variant's graph unless the same numbers drew the file that is there; its alt text
-    and its small square's size (for the enlarged view), with the file's digest."""
+    """Draw one variant's graph unless the same numbers drew the file that is there; its alt text,
+    its small square's size (for the enlarged view) and the graph cursor's data, with the file's
+    digest."""
     numbers = _sha256(repr(graph).encode())
     before = last.get(name, {})
     path = folder / name
-    if (before.get("numbers") == numbers and "square" in before and path.is_file()
+    if (before.get("numbers") == numbers and "cursor" in before and path.is_file()
             and _sha256(path.read_bytes()) == before["svg"]):
         drawn[name] = before
     else:
         figure = write_graph(folder, name.removesuffix(".svg"), graph, formats=("svg",))
         drawn[name] = {"numbers": numbers, "alt": figure.alt, "svg": _sha256(path.read_bytes()),
-                       "square": square_text(path, graph)}
+                       "square": square_text(path, graph), "cursor": cursor_text(path, graph)}
     return drawn[name]
 
 

@@ -4,7 +4,9 @@
  * to read a value from, with − and + to zoom, the browser's own pinch-zoom, and Close or
  * Escape to return to the graph's button. The button's data-square gives a small square's
  * width and height as fractions of the image's width (physics_figures/figures/question_graph.py,
- * small_square). No library: the SVG stays sharp at any zoom. */
+ * small_square). No library: the SVG stays sharp at any zoom. Opening it dispatches
+ * "q-graph-opened" on the graph's button (detail.dialog): the graph cursor (graph-cursor.js)
+ * draws its marker in .q-graph-frame and writes its reading in .q-graph-reading-large. */
 (function () {
   "use strict";
 
@@ -29,8 +31,10 @@
       '<button type="button" class="q-graph-in" aria-label="Zoom in">+</button>' +
       '<button type="button" class="q-graph-close">Close</button>' +
       "</div>" +
+      // the graph cursor's reading (graph-cursor.js): a tap on the graph moves the cursor there
+      '<p class="q-graph-reading-large"></p>' +
       '<div class="q-graph-pane" tabindex="0" role="group" aria-label="The graph: scroll or drag to move across it">' +
-      '<img class="q-graph-large" alt=""></div>';
+      '<div class="q-graph-frame"><img class="q-graph-large" alt=""></div></div>';
     document.body.appendChild(dialog);
     pane = dialog.querySelector(".q-graph-pane");
     image = dialog.querySelector(".q-graph-large");
@@ -97,6 +101,8 @@
     setZoom(readingZoom(button));
     pane.scrollLeft = 0;
     pane.scrollTop = 0;
+    // the graph cursor draws its marker here (graph-cursor.js)
+    button.dispatchEvent(new CustomEvent("q-graph-opened", { bubbles: true, detail: { dialog: dialog } }));
   }
 
   document.addEventListener("click", function (event) {

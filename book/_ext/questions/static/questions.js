@@ -321,6 +321,7 @@
         // its grid, for the enlarged view (static/graph-view.js)
         var opener = graph.closest(".q-graph-open");
         if (opener && variant.graph.square) opener.setAttribute("data-square", variant.graph.square);
+        if (opener && variant.graph.cursor) opener.setAttribute("data-cursor", JSON.stringify(variant.graph.cursor));
       }
       var scheme = worked && worked.querySelector(".q-scheme");
       if (scheme) scheme.outerHTML = variant.scheme.replace("<ul>", '<ul class="' + scheme.className + '">');

@@ -11,6 +11,7 @@
 * class_page.py: ``class-progress``, the class at a glance from the students' exported files;
 * sheet_builder.py: ``sheet-builder``, the teachers' worksheets made in the browser, and the
   teachers-only data it reads (the reserve variants' sheets and keys);
+* mock_test.py: ``mock-test``, a timed mock test drawn fresh in the browser, marked at the end;
 * try_similar.py: ``try-similar``, a worked example's link to a question of its type;
 * book_map.py: ``book-map``, the landing page's map of parts, explorables and questions;
 * self_test.py: the definitions self-test's bar;
@@ -30,6 +31,7 @@ from . import (
     class_page,
     directive,
     form,
+    mock_test,
     print_form,
     progress,
     rules_table,
@@ -80,7 +82,7 @@ def setup(app):
     app.add_node(directive.graph_view, html=(form.visit_graph_view, form.depart_graph_view))
     app.add_directive("question", directive.QuestionDirective)
     for job in (answer_key, progress, try_similar, book_map, self_test, rules_table, class_page, sheet_builder,
-                schedule):
+                schedule, mock_test):
         job.setup(app)
     app.connect("config-inited", add_static_path)
     app.connect("env-purge-doc", store.purge)

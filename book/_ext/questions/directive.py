@@ -81,10 +81,7 @@ class QuestionDirective(SphinxDirective):
         lines += nodes.paragraph(text=f"Total: {store.count(sum(marks), 'mark', 'marks')}", classes=["q-total"],
                                  marks=sum(marks))
         node += lines
-        node += question_form(data=node["data"], template=node["template"],
-                              labels=[data.label(i) for i in range(len(data.parts))],
-                              legends=[data.label(i) + p.prompt[:1].upper() + p.prompt[1:]
-                                       for i, p in enumerate(data.parts)])
+        node += form_node(data, node["template"], node["data"])
         worked = worked_answer()
         worked += mark_scheme_nodes(data)
         node += worked
@@ -153,6 +150,15 @@ def sketch_nodes(sketch) -> list[nodes.Node]:
     from physics_figures.figures.sketches import sketch_svg, sketch_tikz
 
     return [nodes.raw("", sketch_svg(sketch), format="html"), nodes.raw("", sketch_tikz(sketch), format="latex")]
+
+
+def form_node(data, template: dict, browser_data: dict | None = None) -> question_form:
+    """The answer form of a variant (`data`) of a template (`template`: _template_data), which
+    form.py writes: on its page, and into the variants' data file for the mock test."""
+    return question_form(data=browser_data or data.browser_data(), template=template,
+                         labels=[data.label(i) for i in range(len(data.parts))],
+                         legends=[data.label(i) + p.prompt[:1].upper() + p.prompt[1:]
+                                  for i, p in enumerate(data.parts)])
 
 
 def _template_data(template) -> dict:

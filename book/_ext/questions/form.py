@@ -168,6 +168,12 @@ def _explain_html(base: str, part: dict, data: dict) -> str:
             f'<div class="q-model-text">{part["model"]}</div></div></div>')
 
 
+def rules_script() -> str:
+    """The rule table the marking engine reads (physics_figures/marking_rules.json), once a page."""
+    table = json.dumps({"outcomes": marking.outcome_losses(), "sigFigs": marking.sig_figs()})
+    return f'<script type="application/json" class="q-rules">{table}</script>'
+
+
 def visit_question_form(self, node):
     data, template = node["data"], node.get("template")
     attributes = ""
@@ -180,9 +186,7 @@ def visit_question_form(self, node):
         self._q_ideas_written = True
         links = json.dumps(section_links(self), ensure_ascii=False).replace("</", "<\\/")
         html.insert(0, f'<script type="application/json" class="q-sections">{links}</script>')
-        # the rule table the marking engine reads (physics_figures/marking_rules.json)
-        table = json.dumps({"outcomes": marking.outcome_losses(), "sigFigs": marking.sig_figs()})
-        html.insert(0, f'<script type="application/json" class="q-rules">{table}</script>')
+        html.insert(0, rules_script())
     labels = node.get("labels") or [""] * len(data["parts"])
     for part, legend, label in zip(data["parts"], node["legends"], labels, strict=True):
         base = f"q-{data['id']}-{part['id']}"
@@ -248,6 +252,7 @@ def add_assets(app, pagename, templatename, context, doctree):
         app.add_js_file("marking.js", loading_method="defer", priority=460)
         schedule.add_store_script(app)  # questions.js records each attempt in it
         app.add_js_file("help-steps.js", loading_method="defer", priority=470)  # before questions.js (500)
+        app.add_js_file("question-relabel.js", loading_method="defer")  # New numbers' words, shared
         app.add_js_file("questions.js", loading_method="defer")
         # the enlarged graph view, on the pages that print a question's graph
         if any(item.get("graph") for item in store.questions(app.env).get(pagename, ())):

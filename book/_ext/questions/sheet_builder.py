@@ -108,7 +108,8 @@ def fill(app, doctree, docname):
 def add_assets(app, pagename, templatename, context, doctree):
     if pagename in store.docs(app.env, DIRECTIVE):
         app.add_css_file("sheet-builder.css")
-        for script in ("sheet-builder.js", "sheet-builder-page.js"):  # the draws, then the page
+        # the shared draws, the plan, then the page
+        for script in ("question-draw.js", "sheet-builder.js", "sheet-builder-page.js"):
             app.add_js_file(script, loading_method="defer")
 
 

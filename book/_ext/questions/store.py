@@ -18,7 +18,7 @@ SHARED_MODULES = ("physics_figures.textformat", "physics_figures.variants", "phy
 GRAPH_MODULE = "physics_figures.figures.question_graph"
 
 #: The pages holding each directive that gathers from every page, filled once all are read.
-GATHERING = ("answer-key", "practice-progress", "try-similar", "book-map")
+GATHERING = ("answer-key", "practice-progress", "try-similar", "book-map", "mock-test")
 #: Pages with a definitions self-test (they load its script), and the page with the rule table
 #: (feedback links to its rows).
 SELF_TEST, RULES_TABLE = "self-test", "marking-rules"

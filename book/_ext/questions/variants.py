@@ -1,6 +1,7 @@
 """Each template's other site variants (Template.site_variants, never the teacher's reserve), for New numbers: a small script of data per template and
 an SVG per variant's graph, under the site's _static/questions/, written when the HTML
-build finishes.
+build finishes. The script also holds the template's answer form as form.py writes it on a
+page (window.QuestionForms), for the mock test, whose page holds no form until it draws one.
 
 Working them out (every variant of every template) and drawing 60-odd graphs with
 matplotlib takes longer than the rest of a no-op rebuild, so the last build's inputs and
@@ -13,20 +14,23 @@ before is not drawn again.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import json
 from importlib.metadata import version
 from pathlib import Path
+from types import SimpleNamespace
 
+from docutils import nodes
 from fresh_figures import modules_digest  # book/_ext: the files a module runs, by content
 
-from . import store
-from .directive import cursor_text, square_text, write_graph
+from . import form, store
+from .directive import _template_data, cursor_text, form_node, square_text, write_graph
 
 VARIANTS_DIR = "questions"  # under the site's _static/: one file of variants per template
 
 #: The code that writes the variants, and the one that draws a graph: an edit redoes them.
-WRITERS = (Path(__file__), Path(__file__).with_name("directive.py"))
+WRITERS = (Path(__file__), Path(__file__).with_name("directive.py"), Path(__file__).with_name("form.py"))
 GRAPH_WRITER = WRITERS[1]  # directive.write_graph
 
 
@@ -102,6 +106,8 @@ def write_variants(app, exception):
             variants.append(data)
         payload = json.dumps(variants, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
         script = f"(window.QuestionVariants = window.QuestionVariants || {{}})[{json.dumps(key)}] = {payload};\n"
+        answer_form = json.dumps(form_html(template), ensure_ascii=False).replace("</", "<\\/")
+        script += f"(window.QuestionForms = window.QuestionForms || {{}})[{json.dumps(key)}] = {answer_form};\n"
         files[f"{key}.js"] = _write(folder / f"{key}.js", script.encode())
     for name in set(last.get("files", {})) - set(files):  # a template no page places any more
         (folder / name).unlink(missing_ok=True)
@@ -124,3 +130,14 @@ def _graph(folder: Path, name: str, graph, last: dict, drawn: dict) -> dict:
         drawn[name] = {"numbers": numbers, "alt": figure.alt, "svg": _sha256(path.read_bytes()),
                        "square": square_text(path, graph), "cursor": cursor_text(path, graph)}
     return drawn[name]
+
+
+def form_html(template) -> str:
+    """The template's answer form exactly as form.py writes it on a page (variant 0's words; the
+    mock test relabels it with its variant's, as New numbers does), without what a page writes
+    once above its first form (the rule table, feedback links, the units hint): the mock test's
+    page holds those. form.py writes through a page's translator; this collects what it writes."""
+    page = SimpleNamespace(body=[], _q_ideas_written=True, _q_unit_hint_written=True)
+    with contextlib.suppress(nodes.SkipNode):
+        form.visit_question_form(page, form_node(template.variant(0), _template_data(template)))
+    return "".join(page.body)

@@ -296,29 +296,10 @@
       if (saved.checked) check(false);
     }
 
-    /* A variant's prompts (the time a graph is read at, say), options and marking points
-     * change with its numbers. */
+    /* A variant's prompts, options and marking points (question-relabel.js, shared with the
+     * mock test). */
     function relabel() {
-      data.parts.forEach(function (part) {
-        var f = fields(part);
-        var legend = f.box.querySelector("legend");
-        var prompt = part.prompt.charAt(0).toUpperCase() + part.prompt.slice(1);
-        legend.textContent = Notation.joinUnits((data.parts.length > 1 ? "(" + part.id + ") " : "") + prompt);
-        if (part.kind === "mcq") {
-          part.options.forEach(function (option, i) {
-            f.choices[i].parentNode.querySelector(".q-option-text").innerHTML = option.html;
-          });
-        } else if (part.kind === "explain") {
-          var lines = data.marks.filter(function (m) {
-            return m.part === part.id;
-          });
-          Array.prototype.forEach.call(f.ticks, function (tick, i) {
-            tick.value = String(data.marks.indexOf(lines[i]));
-            tick.parentNode.querySelector(".q-point-text").innerHTML = lines[i].html;
-          });
-          f.points.querySelector(".q-model-text").innerHTML = part.model;
-        }
-      });
+      root.QuestionRelabel.relabel(form, data);
     }
 
     /* fresh: New numbers pressed (not the numbers a student had, brought back): no help yet. */

@@ -1,0 +1,137 @@
+"""The timed mock test: Paper 1 or Paper 2 style, drawn fresh in the browser::
+
+    ```{mock-test}
+    ```
+
+The page holds no question: it holds the index the draw reads (each template a data file
+ships for, with its type, marks, part kinds and number of site variants; each type's title and
+exam count) and the rule table the marking engine reads. static/mock-draw.js draws a test
+(types weighted by exam count, with the sheet builder's draws, static/question-draw.js);
+static/mock-test.js loads each drawn template's data file (_static/questions/KEY.js, by a
+<script> element: variants.py writes its variants and its answer form), shows the forms with
+their variants' words and numbers, keeps the answers and the clock in this browser, and marks
+everything only at the end. Outside HTML the directive writes nothing: the page's own text
+says what the test is.
+"""
+
+from __future__ import annotations
+
+import json
+from html import escape
+
+from docutils import nodes
+from fresh_figures import uses_modules  # book/_ext: re-read the page when the bank changes
+from notation import add_notation_script  # book/_ext/notation: the browser's number writer
+from sphinx.util.docutils import SphinxDirective
+
+from . import form, schedule, store
+
+DIRECTIVE = "mock-test"
+NEEDS_BROWSER = ("The mock test runs in your web browser: open this page in the web version of the book, "
+                 "with JavaScript on, to take one.")
+#: The scripts the page runs, after the engine's (as a question's page loads them) and the
+#: store that keeps the result (progress-store.js): the shared relabelling and draws, then the
+#: page's own.
+SCRIPTS = ("question-relabel.js", "question-draw.js", "mock-draw.js", "mock-questions.js", "graph-view.js",
+           "mock-test.js")
+
+
+class mock_test(nodes.General, nodes.Element):
+    """The mock test's index and controls (HTML only)."""
+
+
+class MockTestDirective(SphinxDirective):
+    def run(self):
+        store.docs(self.env, DIRECTIVE).add(self.env.docname)
+        uses_modules(self.env, *store.bank_modules(self.config))
+        return [mock_test()]
+
+
+def mock_index(env, config) -> dict:
+    """What the draw reads, from the templates the book's pages place (index_of)."""
+    placed = {key for keys in store.templates_used(env).values() for key in keys}
+    return index_of(store.topics(config), placed)
+
+
+def index_of(topics, placed: set[str]) -> dict:
+    """What the draw reads: every template of `placed` whose variants a data file ships (two or
+    more site variants: variants.py), in the bank's order, with its type, marks, part kinds and
+    number of site variants; and each type's title and exam count. No numbers of a question:
+    those come with its data file."""
+    types, templates = [], []
+    for topic in topics:
+        types += [{"key": kind.key, "title": kind.title, "examCount": kind.exam_count} for kind in topic.types]
+        templates += [{"key": t.key, "type": t.type, "marks": t.variant(0).marks, "kinds": list(t.kinds),
+                       "variants": len(t.site_variants)}
+                      for t in topic.templates if t.key in placed and len(t.site_variants) >= 2 and not t.try_first]
+    return {"types": types, "templates": templates}
+
+
+#: The controls (hidden until the script runs): the paper and length to choose, the clock and
+#: Finish now (with its confirm step), the polite warnings, the questions, the result.
+PAGE = """\
+<div class="mock" data-enlarge="{enlarge}" data-unit-hint="{hint}">
+{rules}
+<script type="application/json" class="mock-index">{index}</script>
+<p class="mock-needs-js">{needs}</p>
+<form class="mock-setup" novalidate>
+<fieldset class="mock-papers"><legend>Paper</legend>
+<label class="mock-paper"><input type="radio" name="mock-paper" value="1" checked> Paper 1 style: multiple choice</label>
+<label class="mock-paper"><input type="radio" name="mock-paper" value="2"> Paper 2 style: structured questions</label>
+</fieldset>
+<label class="mock-length" for="mock-size">Length <select id="mock-size" name="size"></select></label>
+<div class="mock-buttons"><button type="submit" class="mock-start">Start the test</button></div>
+<p class="mock-status" role="status"></p>
+</form>
+<div class="mock-result" hidden tabindex="-1"></div>
+<div class="mock-test" hidden>
+<div class="mock-bar">
+<p class="mock-clock"><span class="mock-clock-label">Time left</span> <span class="mock-time" role="timer"></span></p>
+<button type="button" class="mock-finish">Finish now</button>
+<div class="mock-confirm" hidden><p>Finish now? Your answers are marked and the test ends.</p>
+<button type="button" class="mock-finish-yes">Yes, finish and mark</button>
+<button type="button" class="mock-finish-no">Keep going</button></div>
+</div>
+<p class="mock-warning" aria-live="polite"></p>
+<div class="mock-questions"></div>
+<div class="mock-end"><button type="button" class="mock-finish mock-finish-last">Finish now</button></div>
+</div>
+</div>
+"""
+
+
+def visit_mock_test(self, node):
+    index = json.dumps(mock_index(self.builder.env, self.builder.config), ensure_ascii=False,
+                       separators=(",", ":")).replace("</", "<\\/")
+    self.body.append(PAGE.format(enlarge=escape(form.ENLARGE), hint=escape(form.UNIT_HINT), rules=form.rules_script(),
+                                 index=index, needs=escape(NEEDS_BROWSER)))
+    raise nodes.SkipNode
+
+
+def fill(app, doctree, docname):
+    if app.builder.format != "html":
+        for node in list(doctree.findall(mock_test)):
+            node.parent.remove(node)
+
+
+def add_assets(app, pagename, templatename, context, doctree):
+    """The mock test's page alone loads its scripts: the engine's, then the test's."""
+    if pagename not in store.docs(app.env, DIRECTIVE):
+        return
+    app.add_css_file("questions.css")
+    app.add_css_file("mock-test.css")
+    add_notation_script(app)
+    app.add_js_file("answer-reading.js", loading_method="defer", priority=440)
+    for kind in form.KIND_SCRIPTS:
+        app.add_js_file(f"question-kinds/{kind}.js", loading_method="defer", priority=450)
+    app.add_js_file("marking.js", loading_method="defer", priority=460)
+    schedule.add_store_script(app)
+    for script in SCRIPTS:
+        app.add_js_file(script, loading_method="defer")
+
+
+def setup(app):
+    app.add_node(mock_test, html=(visit_mock_test, None))
+    app.add_directive(DIRECTIVE, MockTestDirective)
+    app.connect("doctree-resolved", fill)
+    app.connect("html-page-context", add_assets)

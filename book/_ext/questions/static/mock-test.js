@@ -1,0 +1,403 @@
+/* The mock test's page (book/exam/mock-test.md): choose a paper and a length, then a test drawn
+ * fresh (mock-draw.js) with each question's form as form.py writes it and its variant's words
+ * and numbers (from the template's data file, _static/questions/KEY.js, loaded by a <script>
+ * element, so file:// works too). No feedback until the end: no Check, no marks, no worked
+ * answer. The test (paper, seed, questions and variants, start, minutes allowed, answers as
+ * typed) is kept in this browser, so a reload resumes it with the time that is left, or ends it
+ * when time ran out meanwhile. At the end the engine (marking.js) marks every answer; the score,
+ * a line per type and each question's marks and worked answer show, and the result is kept
+ * (progress-store.js: the mock, and each question answered as an attempt). */
+(function (root) {
+  "use strict";
+
+  var Mock = root.MockDraw,
+    Questions = root.MockQuestions,
+    engine = root.QuestionMarking;
+  var STATE = "dynamics-mock-v1";
+
+  function loadState() {
+    try {
+      var state = JSON.parse(localStorage.getItem(STATE));
+      return state && state.version === 1 ? state : null;
+    } catch {
+      return null;
+    }
+  }
+
+  function saveState(state) {
+    try {
+      localStorage.setItem(STATE, JSON.stringify(state));
+    } catch {
+      /* private mode: the test runs, but a reload cannot resume it */
+    }
+  }
+
+  function dropState() {
+    try {
+      localStorage.removeItem(STATE);
+    } catch {
+      /* nothing kept */
+    }
+  }
+
+  function contentRoot() {
+    return document.documentElement.getAttribute("data-content_root") || "";
+  }
+
+  /* Each template's data file, once: its variants and its form. done() when all have come. */
+  function loadTemplates(keys, done) {
+    var wanted = keys.filter(function (key, i) {
+      return keys.indexOf(key) === i && !((root.QuestionVariants || {})[key] && (root.QuestionForms || {})[key]);
+    });
+    var left = wanted.length;
+    if (!left) return done();
+    wanted.forEach(function (key) {
+      var script = document.createElement("script");
+      script.src = contentRoot() + "_static/questions/" + key + ".js";
+      script.onload = script.onerror = function () {
+        if (--left === 0) done();
+      };
+      document.head.appendChild(script);
+    });
+  }
+
+  function variantOf(question) {
+    var all = (root.QuestionVariants || {})[question.question];
+    return (all && all[question.variant]) || null;
+  }
+
+  /* "18¾ minutes": the paces give quarters of a minute. */
+  function minutesText(minutes) {
+    var whole = Math.floor(minutes),
+      quarter = Math.round((minutes - whole) * 4);
+    return (whole || "") + ["", "¼", "½", "¾"][quarter] + (minutes === 1 ? " minute" : " minutes");
+  }
+
+  function sizeText(paper, size) {
+    var unit = Mock.PAPERS[paper].unit;
+    return size + " " + unit[size === 1 ? 0 : 1] + " in " + minutesText(Mock.minutesFor(paper, size));
+  }
+
+  function start() {
+    var box = document.querySelector(".mock");
+    if (!box) return;
+    var index = JSON.parse(box.querySelector("script.mock-index").textContent);
+    var setup = box.querySelector(".mock-setup"),
+      sizeBox = setup.querySelector("#mock-size"),
+      status = setup.querySelector(".mock-status"),
+      test = box.querySelector(".mock-test"),
+      list = test.querySelector(".mock-questions"),
+      clock = test.querySelector(".mock-time"),
+      warning = test.querySelector(".mock-warning"),
+      confirmBox = test.querySelector(".mock-confirm"),
+      result = box.querySelector(".mock-result");
+    var state = null,
+      timer = null,
+      forms = [];
+
+    function paperChosen() {
+      return setup.querySelector('input[name="mock-paper"]:checked').value;
+    }
+
+    function offerSizes() {
+      var paper = paperChosen();
+      sizeBox.innerHTML = "";
+      Mock.PAPERS[paper].sizes.forEach(function (size) {
+        var option = document.createElement("option");
+        option.value = String(size);
+        option.textContent = sizeText(paper, size);
+        sizeBox.appendChild(option);
+      });
+    }
+
+    // ------------------------------------------------------------------ the questions
+
+    function keepAnswers(event) {
+      var section = event.target.closest(".mock-q");
+      if (!section || !state || state.ended) return;
+      var i = Number(section.getAttribute("data-index"));
+      state.answers[i] = Questions.answersOf(forms[i], variantOf(state.questions[i]));
+      saveState(state);
+    }
+
+    function showQuestions() {
+      list.innerHTML = "";
+      if (state.paper === "2") {
+        var hint = document.createElement("p");
+        hint.className = "q-unit-hint mock-unit-hint";
+        hint.textContent = box.getAttribute("data-unit-hint");
+        list.appendChild(hint);
+      }
+      forms = state.questions.map(function (question, i) {
+        var section = Questions.questionSection(
+          question,
+          variantOf(question),
+          root.QuestionForms[question.question],
+          i,
+          state.answers[i] || {},
+          box.getAttribute("data-enlarge"),
+        );
+        list.appendChild(section);
+        return section.querySelector("form.q-form");
+      });
+      setup.hidden = true;
+      test.hidden = false;
+    }
+
+    // ------------------------------------------------------------------ the clock
+
+    function tick() {
+      var left = Mock.timeLeft(state, Date.now());
+      clock.textContent = Mock.clockText(left);
+      var due = Mock.warningDue(left, state.warned);
+      if (due) {
+        warning.textContent = due.text;
+        Mock.WARNINGS.forEach(function (w) {
+          if (w.at >= left && state.warned.indexOf(w.at) < 0) state.warned.push(w.at);
+        });
+        saveState(state);
+      }
+      if (left <= 0) return finish("time");
+      timer = setTimeout(tick, left % 1000 || 1000); // on the next whole second
+    }
+
+    // ------------------------------------------------------------------ the end
+
+    function markAll() {
+      return state.questions.map(function (question, i) {
+        var variant = variantOf(question);
+        var answers = (state.answers || {})[i] || {};
+        return {
+          question: question,
+          variant: variant,
+          answers: answers,
+          marked: engine.markQuestion(variant, answers),
+        };
+      });
+    }
+
+    function mockOf(marked) {
+      var earned = 0,
+        available = 0;
+      var questions = marked.map(function (m) {
+        earned += m.marked.marks.earned;
+        available += m.marked.marks.available;
+        return {
+          question: m.question.question,
+          type: m.question.type,
+          variant: m.question.variant,
+          earned: m.marked.marks.earned,
+          available: m.marked.marks.available,
+        };
+      });
+      return {
+        id: "mock-" + state.at + "-" + state.seed,
+        paper: state.paper,
+        at: state.at,
+        minutes: state.minutes,
+        ended: state.ended,
+        earned: earned,
+        available: available,
+        questions: questions,
+      };
+    }
+
+    /* The result, kept once: the mock, and each question answered as an attempt of its card. */
+    function keep(mock, marked) {
+      var store = root.ProgressStore;
+      if (!store) return;
+      var now = Date.now();
+      marked.forEach(function (m) {
+        if (!Questions.answered(m.answers)) return; // as on a question's page, nothing written is no attempt
+        store.recordAttempt({
+          question: m.question.question,
+          type: m.question.type,
+          variant: m.question.variant,
+          earned: m.marked.marks.earned,
+          available: m.marked.marks.available,
+          at: now,
+          mistakes: m.variant.parts
+            .map(function (p) {
+              return m.marked.results[p.id].mistake;
+            })
+            .filter(Boolean),
+          mock: mock.id,
+        });
+      });
+      store.recordMock(mock);
+    }
+
+    function finish(ended) {
+      clearTimeout(timer);
+      if (!state.ended) {
+        state.ended = ended;
+        state.endedAt = Date.now();
+        saveState(state);
+      }
+      var marked = markAll();
+      var mock = mockOf(marked);
+      if (!state.kept) {
+        keep(mock, marked);
+        state.kept = true;
+        saveState(state);
+      }
+      showResult(mock, marked);
+    }
+
+    function typeTitle(key) {
+      var found = index.types.filter(function (t) {
+        return t.key === key;
+      })[0];
+      return found ? found.title : key;
+    }
+
+    function showResult(mock, marked) {
+      confirmBox.hidden = true;
+      test.classList.add("mock-ended");
+      Array.prototype.forEach.call(test.querySelectorAll(".mock-bar, .mock-end"), function (el) {
+        el.hidden = true;
+      });
+      var byType = {};
+      mock.questions.forEach(function (q) {
+        var line = (byType[q.type] = byType[q.type] || [0, 0]);
+        line[0] += q.earned;
+        line[1] += q.available;
+      });
+      var lines = index.types
+        .filter(function (t) {
+          return byType[t.key];
+        })
+        .map(function (t) {
+          return (
+            '<li data-type="' +
+            t.key +
+            '"><span class="mock-type">' +
+            typeTitle(t.key) +
+            '</span> <span class="mock-type-marks">' +
+            engine.marksText(byType[t.key][0], byType[t.key][1]) +
+            "</span></li>"
+          );
+        })
+        .join("");
+      result.innerHTML =
+        '<h2 class="mock-result-title">Your result</h2><p class="mock-score">' +
+        Mock.PAPERS[mock.paper].name +
+        " style: " +
+        engine.marksText(mock.earned, mock.available) +
+        '</p><p class="mock-how">' +
+        (mock.ended === "time" ? "Time ran out: " : "You finished: ") +
+        "each question is marked below, with its worked answer.</p>" +
+        '<ul class="mock-types">' +
+        lines +
+        '</ul><p><button type="button" class="mock-again">Take another test</button></p>';
+      result.hidden = false;
+      marked.forEach(function (m, i) {
+        Questions.showMarks(forms[i], m);
+      });
+      result.querySelector(".mock-again").addEventListener("click", again);
+      result.focus();
+    }
+
+    function again() {
+      dropState();
+      state = null;
+      result.hidden = true;
+      result.innerHTML = "";
+      list.innerHTML = "";
+      test.hidden = true;
+      test.classList.remove("mock-ended");
+      Array.prototype.forEach.call(test.querySelectorAll(".mock-bar, .mock-end"), function (el) {
+        el.hidden = false;
+      });
+      warning.textContent = "";
+      setup.hidden = false;
+      setup.querySelector(".mock-start").focus();
+    }
+
+    // ------------------------------------------------------------------ starting, resuming
+
+    /* Show a kept test: its result when it ended (or its time ran out meanwhile), else the
+     * questions and the clock. */
+    function run(fresh) {
+      loadTemplates(
+        state.questions.map(function (q) {
+          return q.question;
+        }),
+        function () {
+          var missing = state.questions.filter(function (q) {
+            return !variantOf(q) || !(root.QuestionForms || {})[q.question];
+          });
+          if (missing.length) {
+            status.textContent = fresh
+              ? "The questions could not be loaded. Check your connection, then press Start the test again."
+              : "Your last test could not be loaded (its questions are not in this version of the book). " +
+                "Start a new one.";
+            if (!fresh) dropState();
+            state = null;
+            setup.hidden = false;
+            return;
+          }
+          if (fresh) {
+            state.at = Date.now(); // the clock starts when the questions are there
+            saveState(state);
+          }
+          showQuestions();
+          if (state.ended || Mock.timeLeft(state, Date.now()) <= 0) return finish(state.ended || "time");
+          tick();
+          if (fresh) list.querySelector(".mock-q-title").focus();
+        },
+      );
+    }
+
+    setup.addEventListener("change", function (event) {
+      if (event.target.name === "mock-paper") offerSizes();
+    });
+    setup.addEventListener("submit", function (event) {
+      event.preventDefault();
+      var paper = paperChosen(),
+        size = Number(sizeBox.value);
+      var seed = root.crypto.getRandomValues(new Uint32Array(1))[0];
+      var drawn;
+      try {
+        drawn = Mock.draw(index, paper, size, seed);
+      } catch (error) {
+        if (!(error instanceof Mock.DrawError)) throw error;
+        status.textContent = "This test cannot be drawn from the book's questions: " + error.message + ".";
+        return;
+      }
+      status.textContent = "Loading the questions…";
+      state = Object.assign(drawn, { version: 1, at: Date.now(), answers: {}, warned: [] });
+      run(true);
+    });
+    // Enter in an answer box would submit its form: answers are kept as typed, marked at the end
+    list.addEventListener("submit", function (event) {
+      event.preventDefault();
+    });
+    list.addEventListener("input", keepAnswers);
+    list.addEventListener("change", keepAnswers);
+    Array.prototype.forEach.call(test.querySelectorAll(".mock-finish"), function (button) {
+      button.addEventListener("click", function () {
+        confirmBox.hidden = false;
+        confirmBox.querySelector(".mock-finish-no").focus();
+      });
+    });
+    confirmBox.querySelector(".mock-finish-no").addEventListener("click", function () {
+      confirmBox.hidden = true;
+      test.querySelector(".mock-finish").focus();
+    });
+    confirmBox.querySelector(".mock-finish-yes").addEventListener("click", function () {
+      finish("submitted");
+    });
+
+    offerSizes();
+    state = loadState();
+    if (state) {
+      setup.hidden = true;
+      status.textContent = "";
+      run(false);
+    }
+  }
+
+  if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", start);
+  else start();
+})(this);

@@ -34,6 +34,17 @@ def outcome_losses() -> dict[str, list[str]]:
             if isinstance(rule["loses"], list)}
 
 
+def slips() -> dict[str, dict]:
+    """{name: {"outcomes": [codes], "rule": code}}: the slips a student's record names as
+    mistakes (a sign or direction, a unit, 1 s.f.), and the rule each links to."""
+    return rules()["slips"]["names"]
+
+
+def outcome_slips() -> dict[str, str]:
+    """{outcome code: the slip's name}, for the browser's engine."""
+    return {code: name for name, slip in slips().items() for code in slip["outcomes"]}
+
+
 def sig_figs() -> dict[str, int]:
     """{"min": figures the A1 needs, "check": figures the key is trusted to}."""
     table = rules()["sig_figs"]

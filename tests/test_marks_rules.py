@@ -244,3 +244,16 @@ def test_every_part_kind_has_its_python_class_and_its_browser_marker():
         assert found, f"{script.name} registers no kind"
         registered |= set(re.findall(r'"([a-z]+)"', found[1]))
     assert registered == set(parts.KINDS) == set(KINDS)
+
+
+def test_every_slip_a_record_names_is_an_outcome_of_the_rule_table():
+    """The slips Your practice counts as mistakes (CLARIFICATIONS, Plan: a sign error, a missing
+    unit, a 1 s.f. answer) name outcomes the rule table has, each under one name, and link to a
+    rule that is one of them."""
+    outcomes = marking.rules()["outcomes"]
+    named = [code for slip in marking.slips().values() for code in slip["outcomes"]]
+    assert sorted(set(named)) == sorted(named), "an outcome is under two slips"
+    assert set(named) <= set(outcomes), f"slips name outcomes the table lacks: {set(named) - set(outcomes)}"
+    for name, slip in marking.slips().items():
+        assert slip["rule"] in slip["outcomes"], f"{name!r} links to a rule it does not cover"
+    assert {"sign", "missing-unit", "too-few-sf"} <= set(marking.outcome_slips())

@@ -1,5 +1,5 @@
 // Help before the answer's step selection (book/_ext/questions/static/help-steps.js) and the
-// slips the engine names as mistakes (marking.js outcomeMistakes), run with `node --test tests/js`.
+// slips the engine names as mistakes (marking.js slipName), run with `node --test tests/js`.
 "use strict";
 const test = require("node:test");
 const assert = require("node:assert/strict");
@@ -83,15 +83,16 @@ test("the engine's sign, unit and 1 s.f. outcomes each have a name for the recor
     positive: "to the right",
     mistakes: [],
   };
-  const name = (answer) => engine.outcomeMistakes[engine.mark(part, answer).code];
+  const name = (answer) => engine.slipName(engine.mark(part, answer).code);
   assert.equal(name({ value: "2.0", unit: "m s^-1" }), "sign or direction");
   assert.equal(name({ value: "-2.0", unit: "" }), "unit missing or wrong");
   assert.equal(name({ value: "-2.0", unit: "kg" }), "unit missing or wrong");
   assert.equal(name({ value: "-2.0", unit: "M S^-1" }), "unit missing or wrong");
   const size = Object.assign({}, part, { value: 2.04, direction: "none" });
-  assert.equal(engine.outcomeMistakes[engine.mark(size, { value: "2", unit: "m s^-1" }).code], "1 s.f. answer");
-  assert.equal(engine.outcomeMistakes[engine.mark(size, { value: "2.0", unit: "m s^-1" }).code], undefined);
-  assert.deepEqual([...new Set(Object.values(engine.outcomeMistakes))].sort(), [
+  assert.equal(engine.slipName(engine.mark(size, { value: "2", unit: "m s^-1" }).code), "1 s.f. answer");
+  assert.equal(engine.slipName(engine.mark(size, { value: "2.0", unit: "m s^-1" }).code), undefined);
+  const table = require(path.join(__dirname, "..", "..", "physics_figures", "marking_rules.json"));
+  assert.deepEqual(Object.keys(table.slips.names).sort(), [
     "1 s.f. answer",
     "sign or direction",
     "unit missing or wrong",

@@ -22,12 +22,13 @@ from fresh_figures import uses_modules  # book/_ext: re-read a page when its mod
 from notation import add_notation_script  # book/_ext/notation: the browser's number writer
 from sphinx.util.docutils import SphinxDirective
 
+from physics_figures import marking  # the slips a record names as mistakes
+
 from . import form, schedule, store
 
 #: The slips the marking engine names itself (questions.js records them by these names) and the
 #: rule table's row that explains each (getting-the-marks): Your practice links them there.
-GENERIC_MISTAKES = {"sign or direction": "rule:direction", "unit missing or wrong": "rule:missing-unit",
-                    "1 s.f. answer": "rule:too-few-sf"}
+GENERIC_MISTAKES = {name: f"rule:{slip['rule']}" for name, slip in marking.slips().items()}
 
 
 class practice_progress(nodes.General, nodes.Element):
@@ -102,8 +103,10 @@ def _progress_data(app, fromdoc: str) -> dict:
                      for entry in entries]
         method = app.builder.get_relative_uri(fromdoc, kind.method) if kind.method in env.all_docs else None
         types.append({"type": kind.key, "name": kind.title, "templates": templates, "method": method})
+    mock = sorted(store.docs(env, "mock-test"))  # the timed test, where the book has one
     return {"book": store.book_id(app.config), "types": types, "generic": GENERIC_MISTAKES,
-            "definitions": _definitions(app, fromdoc)}
+            "definitions": _definitions(app, fromdoc),
+            "mock": app.builder.get_relative_uri(fromdoc, mock[0]) if mock else None}
 
 
 NEEDS_BROWSER = ("Your practice is kept in the web browser you practise in: open this page in the "
@@ -180,7 +183,9 @@ def visit_practice_progress(self, node):
                     f'<a href="{escape(data["definitions"]["page"])}">the self-test</a>.</span></p>')
     html.append("</section>")
     html.append('<section class="pp-mocks" aria-label="Mock tests" hidden><p><strong>Mock tests:</strong> '
-                '<span class="pp-mock-latest"></span></p><details class="pp-mock-earlier" hidden><summary></summary>'
+                '<span class="pp-mock-latest"></span>'
+                + (f' <a href="{escape(data["mock"])}">Take another</a>' if data["mock"] else "")
+                + '</p><details class="pp-mock-earlier" hidden><summary></summary>'
                 '<ul class="pp-mock-list"></ul></details></section>')
     html.append(
         '<section class="pp-file" aria-labelledby="pp-file-heading" hidden>'

@@ -20,7 +20,13 @@
       Object.keys(table.outcomes).forEach(function (code) {
         if (Array.isArray(table.outcomes[code].loses)) losses[code] = table.outcomes[code].loses;
       });
-      rulesCache = { outcomes: losses, sigFigs: table.sig_figs };
+      var slips = {};
+      Object.keys(table.slips.names).forEach(function (name) {
+        table.slips.names[name].outcomes.forEach(function (code) {
+          slips[code] = name;
+        });
+      });
+      rulesCache = { outcomes: losses, sigFigs: table.sig_figs, slips: slips };
     }
     return rulesCache;
   }
@@ -235,19 +241,12 @@
     return formulas[key];
   }
 
-  /* The slips of the rule table a student's record names as mistakes, beside a template's own
-   * named mistakes (CLARIFICATIONS, Plan: a sign error, a missing unit and a 1 s.f. answer count
-   * too): outcome code -> the name an attempt keeps. Your practice reads the names from here. */
-  var OUTCOME_MISTAKES = {
-    sign: "sign or direction",
-    "sign-on-size": "sign or direction",
-    direction: "sign or direction",
-    "missing-direction": "sign or direction",
-    "missing-unit": "unit missing or wrong",
-    "wrong-unit": "unit missing or wrong",
-    "unit-case": "unit missing or wrong",
-    "too-few-sf": "1 s.f. answer",
-  };
+  /* The slip an outcome is, by the name a student's record keeps (marking_rules.json "slips":
+   * a sign error, a missing unit and a 1 s.f. answer count as mistakes; CLARIFICATIONS, Plan),
+   * or undefined. */
+  function slipName(code) {
+    return rules().slips[code];
+  }
 
   // What reads a typed answer, for the tests and scripts that drive the engine under Node.
   var Reading = root.AnswerReading || require("./answer-reading.js");
@@ -263,7 +262,7 @@
     lostText: lostText,
     marksText: marksText,
     sectionFor: sectionFor,
-    outcomeMistakes: OUTCOME_MISTAKES,
+    slipName: slipName,
   };
 
   if (typeof module === "object" && module.exports) module.exports = engine;

@@ -250,7 +250,7 @@
           mistakes: data.parts
             .map(function (p) {
               var result = marked.results[p.id];
-              return result.mistake || engine.outcomeMistakes[result.code];
+              return result.mistake || engine.slipName(result.code);
             })
             .filter(Boolean),
         };

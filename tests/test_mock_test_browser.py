@@ -298,3 +298,23 @@ def test_no_axe_violations_in_a_test_and_its_result(browser, base_url, mode):
     page.locator(".mock-q .q-graph-open").first.hover()
     assert axe_violations(page, context_selector=".mock") == []
     context.close()
+
+
+def test_a_graph_in_a_mock_test_is_read_by_its_cursor(student):
+    """A graph question drawn into a test has the graph cursor the practice pages give it
+    (issue 28): one slider per graph, and its keys say the readings through the live region."""
+    test = student.evaluate(WITH_A_GRAPH)
+    student.reload()
+    student.locator(".mock-q").first.wait_for()
+    shown = variants(student, test)
+    with_graph = [i for i, variant in enumerate(shown) if variant.get("graph")]
+    assert with_graph, "the test drawn has no graph"
+    for i in with_graph:
+        section = student.locator(".mock-q").nth(i)
+        assert section.locator(".q-graph-slider").count() == 1
+        slider = section.get_by_role("slider", name="Graph cursor")
+        said = student.locator(".q-graph-said")
+        slider.press("End")
+        assert said.text_content().startswith("End of the time axis"), said.text_content()
+        slider.press("Home")
+        assert said.text_content().startswith("Start of the time axis"), said.text_content()

@@ -32,8 +32,8 @@ NEEDS_BROWSER = ("The mock test runs in your web browser: open this page in the 
 #: The scripts the page runs, after the engine's (as a question's page loads them) and the
 #: store that keeps the result (progress-store.js): the shared relabelling and draws, then the
 #: page's own.
-SCRIPTS = ("question-relabel.js", "question-draw.js", "mock-draw.js", "mock-questions.js", "graph-view.js",
-           "mock-test.js")
+SCRIPTS = ("question-relabel.js", "question-draw.js", "mock-draw.js", "graph-view.js", "graph-cursor.js",
+           "mock-questions.js", "mock-test.js")
 
 
 class mock_test(nodes.General, nodes.Element):

@@ -39,6 +39,7 @@
     button.className = "q-graph-open";
     button.setAttribute("aria-haspopup", "dialog");
     button.setAttribute("data-square", graph.square || "");
+    if (graph.cursor) button.setAttribute("data-cursor", JSON.stringify(graph.cursor)); // read without sight
     var image = document.createElement("img");
     image.className = "q-graph";
     image.src = contentRoot() + "_static/questions/" + graph.src;
@@ -72,7 +73,11 @@
       ']</span></h2><div class="q-text"></div>' +
       formHtml;
     section.querySelector(".q-text").innerHTML = variant.text;
-    if (variant.graph) section.insertBefore(graphButton(variant.graph, enlarge), section.querySelector("form"));
+    if (variant.graph) {
+      var opener = graphButton(variant.graph, enlarge);
+      section.insertBefore(opener, section.querySelector("form"));
+      if (variant.graph.cursor && root.GraphCursor) root.GraphCursor.add(opener);
+    }
     var form = section.querySelector("form.q-form");
     // marked at the end only: no Check, New numbers, Clear or score line during the test
     Array.prototype.forEach.call(form.querySelectorAll(".q-buttons, .q-score"), function (el) {

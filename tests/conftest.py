@@ -94,3 +94,9 @@ def browser():
 
     with open_browser() as chromium:
         yield chromium
+
+
+@pytest.fixture(scope="module")
+def site(browser, base_url):
+    """(browser, base_url), for a module whose tests open their own browser contexts."""
+    return browser, base_url

@@ -19,7 +19,7 @@ import json
 from collections import Counter
 
 import pytest
-from browser import axe_violations, open_browser, progress_checksum, question_pages, serve_site
+from browser import axe_violations, progress_checksum, question_pages
 
 from physics_figures import bank
 from physics_figures.notation import format_number, plain_number
@@ -31,12 +31,6 @@ PROGRESS = "/book/exam/your-practice.html"
 QUICK_CHECK = "/book/exam/quick-check.html"
 STUDENTS, ANSWERS_EACH = 5, 6  # 30 exports
 MODES = ("right", "wrong", "mistake")
-
-
-@pytest.fixture(scope="module")
-def site(site_dir):
-    with serve_site(site_dir) as base_url, open_browser() as browser:
-        yield browser, base_url
 
 
 def _answerable(site_dir) -> list[tuple[str, str]]:

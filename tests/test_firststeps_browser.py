@@ -12,18 +12,11 @@ from __future__ import annotations
 import json
 
 import pytest
-from browser import open_browser, serve_site
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
 QUICK = "/book/exam/quick-check.html"
 DEFINITIONS = "/book/exam/method-definitions.html"
-
-
-@pytest.fixture(scope="module")
-def site(site_dir):
-    with serve_site(site_dir) as base_url, open_browser() as browser:
-        yield browser, base_url
 
 
 @pytest.fixture

@@ -11,7 +11,6 @@ import json
 import re
 
 import pytest
-from browser import open_browser, serve_site
 
 from physics_figures import bank
 from physics_figures.notation import format_number
@@ -23,12 +22,6 @@ KEY = "quick-check-1"  # (a) Δp = FΔt, (b) speed = p / m: two numeric parts
 SIGNED = "quick-check-4"  # (a) a signed velocity
 STORE = "dynamics-progress-v2"
 START = 1_800_000_000  # a fixed clock (s, as Playwright's Python clock takes it): the seconds on screen are known
-
-
-@pytest.fixture(scope="module")
-def site(site_dir):
-    with serve_site(site_dir) as base_url, open_browser() as browser:
-        yield browser, base_url
 
 
 @pytest.fixture

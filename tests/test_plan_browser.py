@@ -18,7 +18,7 @@ from pathlib import Path
 from urllib.parse import urljoin
 
 import pytest
-from browser import node_module, open_browser, progress_checksum, serve_site
+from browser import node_module, progress_checksum
 
 from physics_figures import bank
 
@@ -45,12 +45,6 @@ for (const [id, reviews] of Object.entries(JSON.parse(process.argv[2]))) {
 }
 console.log(JSON.stringify(out));
 """
-
-
-@pytest.fixture(scope="module")
-def site(site_dir):
-    with serve_site(site_dir) as base_url, open_browser() as browser:
-        yield browser, base_url
 
 
 @pytest.fixture

@@ -12,7 +12,7 @@ from __future__ import annotations
 import json
 
 import pytest
-from browser import axe_violations, open_browser, serve_site
+from browser import axe_violations
 
 from physics_figures import bank
 
@@ -21,12 +21,6 @@ pytestmark = [pytest.mark.site, pytest.mark.browser]
 PROGRESS = "/book/exam/your-practice.html"
 QUICK_CHECK = "/book/exam/quick-check.html"
 STORE = "dynamics-progress-v2"
-
-
-@pytest.fixture(scope="module")
-def site(site_dir):
-    with serve_site(site_dir) as base_url, open_browser() as browser:
-        yield browser, base_url
 
 
 @pytest.fixture

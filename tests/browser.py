@@ -373,3 +373,10 @@ def question_pages(site: Path) -> dict[str, str]:
         for key in re.findall(r'<form class="q-form" data-question="([^"]+)"', html.read_text(encoding="utf-8")):
             pages.setdefault(key, "/" + html.relative_to(site).as_posix())
     return pages
+
+
+def shipped_variants(script: Path) -> list[dict]:
+    """The variants a template's data file (_static/questions/KEY.js) ships: its first
+    statement, `(window.QuestionVariants ...)[KEY] = [...];` (its form follows on the next line)."""
+    first = script.read_text(encoding="utf-8").split("\n", 1)[0]
+    return json.loads(first.split("] = ", 1)[1].rstrip().removesuffix(";").replace("<\\/", "</"))

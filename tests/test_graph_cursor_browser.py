@@ -22,6 +22,7 @@ import re
 import urllib.request
 
 import pytest
+from browser import shipped_variants
 from test_graph_view_browser import graph_questions
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
@@ -370,8 +371,7 @@ def test_no_alt_text_of_any_site_variant_gives_a_reading_a_part_asks_for(site_di
         variants = [(printed, alt)]
         script = site_dir / "_static" / "questions" / f"{key}.js"
         if script.exists():
-            data = json.loads(script.read_text(encoding="utf-8").split("] = ", 1)[1].rstrip().rstrip(";"))
-            variants += [(variant, variant["graph"]["alt"]) for variant in data]
+            variants += [(variant, variant["graph"]["alt"]) for variant in shipped_variants(script)]
         for variant, alt in variants:
             asked = [part["value"] for part in variant["parts"] if part.get("kind") == "graph"]
             check_alt(key, alt, asked)

@@ -10,7 +10,6 @@ teachers" page says; it is the one exception.
 
 from __future__ import annotations
 
-import json
 import re
 import subprocess
 import xml.etree.ElementTree as ET
@@ -19,6 +18,7 @@ from functools import cache
 from pathlib import Path
 
 import pytest
+from browser import shipped_variants
 from test_pdf import squash
 
 from physics_figures import bank
@@ -35,8 +35,7 @@ def _site_variants(site: Path) -> dict[str, list[tuple[str, str]]]:
     """Each template's variants as the site ships them: (text, mark scheme) in index order."""
     shipped = {}
     for path in sorted((site / "_static" / "questions").glob("*.js")):
-        payload = path.read_text().split("] = ", 1)[1].rstrip().removesuffix(";")
-        shipped[path.stem] = [(v["text"], v["scheme"]) for v in json.loads(payload.replace("<\\/", "</"))]
+        shipped[path.stem] = [(v["text"], v["scheme"]) for v in shipped_variants(path)]
     return shipped
 
 

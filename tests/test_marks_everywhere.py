@@ -5,12 +5,12 @@ the site's data in tests/test_pdf.py.)"""
 
 from __future__ import annotations
 
-import json
 import re
 import xml.etree.ElementTree as ET
 from collections import defaultdict
 
 import pytest
+from browser import shipped_variants
 from test_worksheets_pdf import MARK, SHEETS, text
 
 from physics_figures import bank
@@ -20,8 +20,7 @@ pytestmark = pytest.mark.site
 
 
 def _site_variants(site_dir, key: str) -> list[dict]:
-    script = (site_dir / "_static" / "questions" / f"{key}.js").read_text(encoding="utf-8")
-    return json.loads(script[script.index("= [") + 2:].rstrip().rstrip(";"))
+    return shipped_variants(site_dir / "_static" / "questions" / f"{key}.js")
 
 
 @pytest.mark.parametrize("key", sorted(k for k, t in bank.TEMPLATES.items() if len(t.site_variants) > 1))

@@ -207,8 +207,20 @@ def fill(app, doctree, docname):
     for progress in list(doctree.findall(practice_progress)):
         if app.builder.format == "html":
             progress["data"] = _progress_data(app, docname)
-        else:  # print: the page's text says what it is for; this says where it works
-            progress.replace_self(nodes.paragraph(text=NEEDS_BROWSER))
+        else:  # print: where it works, then each type's questions, as the page's text promises
+            progress.replace_self([nodes.paragraph(text=NEEDS_BROWSER), nodes.rubric(text="By type"),
+                                   _printed_types(app.config)])
+
+
+def _printed_types(config) -> nodes.bullet_list:
+    """Each type of the book's topics with its questions and their marks, for the PDF."""
+    types = nodes.bullet_list()
+    for kind, entries in book_types(config):
+        if entries:
+            questions = "; ".join(f"{entry['title']} ({store.count(entry['marks'], 'mark', 'marks')})"
+                                  for entry in entries)
+            types += nodes.list_item("", nodes.paragraph(text=f"{kind.title}: {questions}."))
+    return types
 
 
 def add_assets(app, pagename, templatename, context, doctree):

@@ -165,6 +165,7 @@ def setup(app: Sphinx):
     app.add_html_math_renderer("svg", (visit_math, None), (visit_displaymath, None))
     app.connect("config-inited", _config_inited)
     app.add_js_file("site-menus.js")  # deferred, like every script (add_page_context)
+    app.add_js_file("search-highlight.js")  # Sphinx's highlighter, for a page a search opened
     app.connect("html-page-context", add_page_context, priority=900)
     app.connect("env-get-outdated", _static_changed)
     app.connect("build-finished", _build_finished)

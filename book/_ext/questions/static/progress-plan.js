@@ -292,7 +292,13 @@
       if (target) target.open = true;
     });
     box.addEventListener("pp-changed", render);
-    render();
+    try {
+      render();
+    } finally {
+      // shown now, filled: progress.css keeps the plan and the types unseen until then, so
+      // their words arriving move nothing a reader sees (no layout shift)
+      document.documentElement.classList.add("pp-planned");
+    }
   }
 
   if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", start);

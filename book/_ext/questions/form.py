@@ -242,16 +242,22 @@ def depart_worked_answer(self, node):
     self.body.append("</details>\n")
 
 
+def add_engine_scripts(app) -> None:
+    """What marks and records an answer, for every page that asks questions: the number writer,
+    the answer reader, each part kind's marker, the engine, and the store of attempts."""
+    add_notation_script(app)  # the engine and the page write numbers with it
+    app.add_js_file("answer-reading.js", loading_method="defer", priority=440)
+    for kind in KIND_SCRIPTS:  # each part kind's marker, before the engine that finds them
+        app.add_js_file(f"question-kinds/{kind}.js", loading_method="defer", priority=450)
+    app.add_js_file("marking.js", loading_method="defer", priority=460)
+    schedule.add_store_script(app)  # questions.js and the mock test record each attempt in it
+
+
 def add_assets(app, pagename, templatename, context, doctree):
     """Only pages that ask a question (or hold the key) load the scripts and styles."""
     if pagename in store.questions(app.env) or pagename in store.docs(app.env, "answer-key"):
         app.add_css_file("questions.css")
-        add_notation_script(app)  # the engine and the page write numbers with it
-        app.add_js_file("answer-reading.js", loading_method="defer", priority=440)
-        for kind in KIND_SCRIPTS:  # each part kind's marker, before the engine that finds them
-            app.add_js_file(f"question-kinds/{kind}.js", loading_method="defer", priority=450)
-        app.add_js_file("marking.js", loading_method="defer", priority=460)
-        schedule.add_store_script(app)  # questions.js records each attempt in it
+        add_engine_scripts(app)
         app.add_js_file("help-steps.js", loading_method="defer", priority=470)  # before questions.js (500)
         app.add_js_file("question-relabel.js", loading_method="defer")  # New numbers' words, shared
         app.add_js_file("questions.js", loading_method="defer")

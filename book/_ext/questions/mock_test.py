@@ -21,10 +21,9 @@ from html import escape
 
 from docutils import nodes
 from fresh_figures import uses_modules  # book/_ext: re-read the page when the bank changes
-from notation import add_notation_script  # book/_ext/notation: the browser's number writer
 from sphinx.util.docutils import SphinxDirective
 
-from . import form, schedule, store
+from . import form, store
 
 DIRECTIVE = "mock-test"
 NEEDS_BROWSER = ("The mock test runs in your web browser: open this page in the web version of the book, "
@@ -120,12 +119,7 @@ def add_assets(app, pagename, templatename, context, doctree):
         return
     app.add_css_file("questions.css")
     app.add_css_file("mock-test.css")
-    add_notation_script(app)
-    app.add_js_file("answer-reading.js", loading_method="defer", priority=440)
-    for kind in form.KIND_SCRIPTS:
-        app.add_js_file(f"question-kinds/{kind}.js", loading_method="defer", priority=450)
-    app.add_js_file("marking.js", loading_method="defer", priority=460)
-    schedule.add_store_script(app)
+    form.add_engine_scripts(app)
     for script in SCRIPTS:
         app.add_js_file(script, loading_method="defer")
 

@@ -218,60 +218,71 @@ class Template:
     @cached_property
     def values(self) -> tuple[dict[str, float], ...]:
         """The givens of every variant; variant 0 is the printed one."""
+        return tuple(values for values, _ in self._drawn)
+
+    @cached_property
+    def _drawn(self) -> tuple[tuple[dict[str, float], Question], ...]:
+        """Every variant's givens with the question they build (each draw is built once)."""
         printed = {name: draw.printed for name, draw in self.draws.items()}
-        chosen = [printed]
-        self._check(printed, printed=True)
+        question = self._checked(printed, printed=True)
+        chosen = [(printed, question)]
         if not self.draws:
             return tuple(chosen)
         rng = random.Random(self.key)  # the same variants in every build
-        letters = Counter(self._key_letters(printed))
-        printed_as = {self._printed_as(printed)}  # a variant must print differently from the others
+        letters = Counter(_key_letters(question))
+        printed_as = {_printed_as(question)}  # a variant must print differently from the others
         for _ in range(_MAX_TRIES):
             if len(chosen) == self.variant_count:
                 return tuple(chosen)
             values = {name: rng.choice(draw.grid) for name, draw in self.draws.items()}
-            if (values not in chosen and self._check(values) and self._letters_fit(values, letters)
-                    and self._printed_as(values) not in printed_as):
-                chosen.append(values)
-                letters.update(self._key_letters(values))
-                printed_as.add(self._printed_as(values))
+            if any(values == taken for taken, _ in chosen):
+                continue
+            question = self._checked(values)
+            if (question is not None and self._letters_fit(question, letters)
+                    and _printed_as(question) not in printed_as):
+                chosen.append((values, question))
+                letters.update(_key_letters(question))
+                printed_as.add(_printed_as(question))
         raise ValueError(f"template {self.key} found only {len(chosen)} of {self.variant_count} "
                          f"variants in {_MAX_TRIES} draws: widen its draws")
 
-    def _check(self, values: dict[str, float], *, printed: bool = False) -> bool:
+    def _checked(self, values: dict[str, float], *, printed: bool = False) -> Question | None:
+        """The question these givens build, or None when a draw is refused."""
         try:
             question = self.build(**values)
         except ValueError:
             if printed:
                 raise
-            return False
+            return None
         confused = confusable_mistakes(question)
         if printed:
             _require(not confused, "printed", values,
                      f"gives named mistakes inside the key's 2 s.f. band in {self.key}: {confused}")
-            return True  # the notes' numbers are what they are
-        return not confused and not rounding_ties(question)
+            return question  # the notes' numbers are what they are
+        return None if confused or rounding_ties(question) else question
 
-    def _printed_as(self, values: dict[str, float]) -> tuple:
-        """What a student sees of a variant: its text and its graph (a graph question may keep
-        its words, and two givens may round to the same printed numbers)."""
-        question = self.build(**values)
-        return (question.text, question.graph)
-
-    def _key_letters(self, values: dict[str, float]) -> list[str]:
-        return [part.answer for part in self.build(**values).parts if part.kind == "mcq"]
-
-    def _letters_fit(self, values: dict[str, float], letters: Counter) -> bool:
+    def _letters_fit(self, question: Question, letters: Counter) -> bool:
         """A multiple-choice draw is refused when its key's letter already has its share of the
         variants (issue 25: no letter is the key in more than MOST_OF_ONE_LETTER of them), so the
         letter never gives the answer away, however many variants the template keeps."""
-        drawn = self._key_letters(values)
+        drawn = _key_letters(question)
         most = MOST_OF_ONE_LETTER * self.variant_count * len(drawn)
         return all(letters[letter] + drawn.count(letter) <= most for letter in set(drawn))
 
     def variant(self, index: int) -> Question:
-        return self.build(**self.values[index])
+        return self.variants[index]
 
-    @property
+    @cached_property
     def variants(self) -> tuple[Question, ...]:
-        return tuple(self.build(**values) for values in self.values)
+        """Every variant's question (frozen, so built once and shared)."""
+        return tuple(question for _, question in self._drawn)
+
+
+def _printed_as(question: Question) -> tuple:
+    """What a student sees of a variant: its text and its graph (a graph question may keep
+    its words, and two givens may round to the same printed numbers)."""
+    return (question.text, question.graph)
+
+
+def _key_letters(question: Question) -> list[str]:
+    return [part.answer for part in question.parts if part.kind == "mcq"]

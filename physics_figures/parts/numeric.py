@@ -9,7 +9,7 @@ import itertools
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import KW_ONLY, dataclass, field
-from functools import cached_property
+from functools import cache, cached_property
 from typing import ClassVar
 
 import sympy
@@ -152,22 +152,24 @@ class Ecf:
         """The earlier parts the formula reads."""
         return tuple(sorted(s.name for s in self.formula.free_symbols if s.name in PART_IDS))
 
-    @cached_property
-    def _function(self):
-        """The formula as a plain Python function of its symbols, sorted by name (sympy's
-        substitution is slow, and every variant is checked with it)."""
-        names = sorted(s.name for s in self.formula.free_symbols)
-        return names, sympy.lambdify([sympy.Symbol(name) for name in names], self.formula, "math")
-
     def evaluate(self, answers: Mapping[str, float]) -> float:
         known = {**self.values, **{part: answers[part] for part in self.uses}}
-        names, function = self._function
+        names, function = _as_function(self.formula)
         return float(function(*(known[name] for name in names)))
 
     def browser_data(self) -> dict:
         symbols = sorted(s.name for s in self.formula.free_symbols)
         return {"js": sympy.jscode(self.formula), "args": symbols, "uses": list(self.uses),
                 "values": {name: self.values[name] for name in symbols if name not in PART_IDS}}
+
+
+@cache
+def _as_function(formula: sympy.Expr) -> tuple[list[str], Callable]:
+    """A formula as a plain Python function of its symbols, sorted by name. sympy's
+    substitution is slow, and every variant of a template checks the same formula: it is
+    written once per formula, not once per variant."""
+    names = sorted(s.name for s in formula.free_symbols)
+    return names, sympy.lambdify([sympy.Symbol(name) for name in names], formula, "math")
 
 
 def _round_sf(value: float, sig_figs: int) -> float:

@@ -13,6 +13,10 @@ PORT   ?= 8000
 export SOURCE_DATE_EPOCH ?= 1767225600
 export FORCE_SOURCE_DATE := 1
 export PYTHONHASHSEED := 0
+# Python keeps its bytecode (__pycache__, ignored by git), and pytest its rewritten test
+# modules: a machine that sets PYTHONDONTWRITEBYTECODE would compile the book's code and
+# the tests again in every process (about 7 s of each pytest start).
+unexport PYTHONDONTWRITEBYTECODE
 
 # Strict: any warning, broken reference or cell error fails the build.
 JB_BUILD := $(BIN)/jupyter-book build . -n -W --keep-going
@@ -121,16 +125,17 @@ test: venv node_modules/.package-lock.json
 	  [ $$no_site -eq 0 ] || echo "!!! the tests that need no site failed: see above ($(NO_SITE_LOG))"; \
 	  exit $$(( no_site || site ))
 
-# The fast loop: ruff and every test that needs no build and no browser (models, marking
-# rules, questions, notation), with the question variants sampled. Under a minute.
-# ESLint and Prettier run on the second core while pytest runs on the first.
+# The fast loop: ruff, ESLint, Prettier and every test that needs no build and no browser
+# (models, marking rules, questions, notation), with three variants of each template
+# (--sample-variants, tests/conftest.py; make test tests every one). Under a minute: pytest
+# runs on both cores (pytest-xdist), ESLint and Prettier beside it.
 # .pre-commit-config.yaml runs these same commands.
 .PHONY: check
 check: venv node_modules/.package-lock.json
 	$(BIN)/ruff check $(LINTED)
 	$(MAKE) --no-print-directory jslint & jslint=$$!; \
 	  $(BIN)/python -m pytest -m "not site and not browser and not build and not network" -q \
-	    || { wait $$jslint; exit 1; }; \
+	    --sample-variants -n 2 || { wait $$jslint; exit 1; }; \
 	  wait $$jslint
 
 # The site's JavaScript: ESLint (eslint.config.mjs) and Prettier's layout (.prettierrc.json;

@@ -33,6 +33,33 @@ _current_test = None
 def pytest_configure(config):
     for marker, needs in NEEDS.items():
         config.addinivalue_line("markers", f"{marker}: needs {needs}; left out of `make check`")
+    config.addinivalue_line("markers", "variant(index, count): a test of one variant of a template (variant_param)")
+
+
+def pytest_addoption(parser):
+    parser.addoption("--sample-variants", action="store_true",
+                     help="test three variants of each template (the printed one, the next and the last) "
+                          "instead of every one: `make check`'s fast loop; `make test` tests them all")
+
+
+def variant_param(template, index: int, *values):
+    """A test's parameters for variant `index` of `template`, named TEMPLATE-INDEX and marked so
+    that --sample-variants can leave it out."""
+    return pytest.param(*values, id=f"{template.key}-{index}",
+                        marks=pytest.mark.variant(index, len(template.values)))
+
+
+def pytest_collection_modifyitems(config, items):
+    if not config.getoption("--sample-variants"):
+        return
+    kept, left_out = [], []
+    for item in items:
+        marker = item.get_closest_marker("variant")
+        index, count = marker.args if marker else (0, 1)
+        (kept if index in (0, 1, count - 1) else left_out).append(item)
+    if left_out:
+        config.hook.pytest_deselected(items=left_out)
+        items[:] = kept
 
 
 def pytest_runtest_setup(item):

@@ -21,6 +21,7 @@ from pathlib import Path
 
 import pytest
 import yaml
+from conftest import variant_param
 
 from physics_figures import bank, textformat
 from physics_figures import questions as q
@@ -203,7 +204,7 @@ def test_every_question_of_the_book_is_a_template_and_none_is_left_out():
 
 ALL = bank.all_questions()
 #: Every variant of every question the book asks (the printed one is variant 0).
-VARIANTS = [pytest.param(question, id=f"{t.key}-{i}")
+VARIANTS = [variant_param(t, i, question)
             for t in (bank.TEMPLATES[q_.key] for q_ in ALL) for i, question in enumerate(t.variants)]
 
 

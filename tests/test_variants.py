@@ -11,6 +11,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
+from conftest import variant_param
 
 from physics_figures import bank, textformat
 from physics_figures.questions import Question
@@ -27,7 +28,7 @@ from physics_figures.variants import (
 
 ROOT = Path(__file__).resolve().parents[1]
 TEMPLATES = list(bank.TEMPLATES.values())
-VARIANTS = [pytest.param(t, i, id=f"{t.key}-{i}") for t in TEMPLATES for i in range(len(t.values))]
+VARIANTS = [variant_param(t, i, t, i) for t in TEMPLATES for i in range(len(t.values))]
 
 
 @pytest.mark.parametrize("template", TEMPLATES, ids=lambda t: t.key)

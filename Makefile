@@ -104,11 +104,15 @@ moodle: venv
 	@echo ">>> writing the question bank as Moodle XML"
 	$(BIN)/python -m physics_figures.worksheets.moodle $(TEACHERS)/dynamics-moodle.xml
 
-# The tests that need no site (models, questions, the small books of the build tests) run
-# beside the book's build, each mostly on one core; their report follows the build's. Then
-# the tests of the built site and the browser tests. The two runs together are the suite.
+# The tests that need no site (models, questions, the small books of the build tests) start
+# beside the book's build, on one core. Once the book is built, the tests of the built site
+# and the browser tests run on both cores (pytest-xdist, each test module on one worker with
+# its own Chromium), while the first run finishes; then the tests that measure speed (marker
+# alone: Lighthouse) run by themselves. The reports follow in that order; the runs together
+# are the suite.
 NO_SITE := not site and not browser
 NO_SITE_LOG := _build/tests-without-site.log
+SITE_TESTS := -m "not ($(NO_SITE)) and not alone" -n 2 --dist loadscope
 test: venv node_modules/.package-lock.json
 	@scripts/ensure-debian-packages test
 	@echo ">>> linting"
@@ -118,12 +122,15 @@ test: venv node_modules/.package-lock.json
 	@echo ">>> building the book; beside it, the tests that need no site (report: $(NO_SITE_LOG))"
 	@$(BIN)/python -m pytest -p no:cacheprovider -m "$(NO_SITE)" >$(NO_SITE_LOG) 2>&1 & tests=$$!; \
 	  $(MAKE) --no-print-directory book || { kill $$tests; wait $$tests; exit 1; }; \
+	  echo ">>> the tests of the built site, in Chromium too, on both cores"; \
+	  $(BIN)/python -m pytest $(SITE_TESTS) && site=0 || site=$$?; \
 	  wait $$tests && no_site=0 || no_site=$$?; \
 	  echo ">>> the tests that need no site:"; cat $(NO_SITE_LOG); \
-	  echo ">>> the tests of the built site, in Chromium too"; \
-	  $(BIN)/python -m pytest -m "not ($(NO_SITE))" && site=0 || site=$$?; \
+	  echo ">>> the tests that measure speed, alone"; \
+	  $(BIN)/python -m pytest -m "alone" && alone=0 || alone=$$?; \
 	  [ $$no_site -eq 0 ] || echo "!!! the tests that need no site failed: see above ($(NO_SITE_LOG))"; \
-	  exit $$(( no_site || site ))
+	  [ $$site -eq 0 ] || echo "!!! the tests of the built site failed: see above"; \
+	  exit $$(( no_site || site || alone ))
 
 # The fast loop: ruff, ESLint, Prettier and every test that needs no build and no browser
 # (models, marking rules, questions, notation), with three variants of each template

@@ -34,6 +34,8 @@ def pytest_configure(config):
     for marker, needs in NEEDS.items():
         config.addinivalue_line("markers", f"{marker}: needs {needs}; left out of `make check`")
     config.addinivalue_line("markers", "variant(index, count): a test of one variant of a template (variant_param)")
+    config.addinivalue_line("markers", "alone: measures speed, so `make test` runs it by itself, after the "
+                                       "parallel run of the site's tests")
 
 
 def pytest_addoption(parser):

@@ -191,7 +191,9 @@ def test_practise_this_type_lands_on_a_question_with_new_numbers_and_focus_in_it
     page.wait_for_function(
         f"(document.querySelector('form.q-form[data-question=\"{key}\"]') || {{}}).getAttribute && "
         f"document.querySelector('form.q-form[data-question=\"{key}\"]').getAttribute('data-variant') !== '0'")
-    assert page.evaluate(f"document.getElementById('question-{key}').contains(document.activeElement)")
+    # the page moves focus into the question once its new numbers are in (it may be a frame later)
+    page.wait_for_function(f"document.getElementById('question-{key}').contains(document.activeElement)",
+                           timeout=10_000)
     assert "new=" not in page.url  # used up: a reload keeps these numbers
     assert page.url.endswith(f"#question-{key}")
 

@@ -16,21 +16,15 @@ every page and records the scores in BENCHMARKS.md.
 from __future__ import annotations
 
 import asyncio
-import json
-import os
 import re
-import subprocess
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import pytest
 from browser import (
-    CHROMIUM_ARGS,
     VIEWPORTS,
     PageVisitor,
     axe_violations_async,
-    chromium_path,
     node_module,
     open_browser_async,
     serve_site,
@@ -44,7 +38,6 @@ pytestmark = [pytest.mark.site, pytest.mark.browser]
 # exceed 0.12 of it, figures, widgets and question data included (the offline issue).
 DEFAULT_PAGE_BYTES = 856_586
 PAGE_BUDGET_BYTES = int(0.12 * DEFAULT_PAGE_BYTES)
-LIGHTHOUSE_MINIMUM = {"performance": 0.95, "accessibility": 1.0, "best-practices": 1.0, "seo": 1.0}
 LAYOUT_SHIFT_MAXIMUM = 0.02  # Lighthouse counts up to 0.1 as good; the pages shift by 0.000
 NO_TRANSITIONS = "*, *::before, *::after { transition: none !important; animation: none !important; }"
 # The axe-core rules that depend on colours alone.
@@ -390,41 +383,6 @@ def test_every_icon_the_site_shows_is_in_the_icon_font(site_dir):
         if match and int(match[1], 16) not in in_font:
             missing.append(name)
     assert not missing, f"icons used by the site but missing from {font.name}: {missing}"
-
-
-def _lighthouse(url: str, output: Path) -> dict[str, float]:
-    """Lighthouse (npm, pinned), mobile, against the local server; {category: score}."""
-    cli = node_module("lighthouse") / "cli" / "index.js"
-    flags = " ".join(CHROMIUM_ARGS)
-    env = {**os.environ, "CHROME_PATH": chromium_path(whole_browser=True)}
-    result = subprocess.run(
-        ["node", str(cli), url, "--quiet", "--output=json", f"--output-path={output}",
-         f"--chrome-flags={flags}", "--only-categories=performance,accessibility,best-practices,seo"],
-        capture_output=True, text=True, env=env, timeout=180, check=False,
-    )
-    if result.returncode != 0:
-        raise RuntimeError(f"lighthouse failed on {url}:\n{result.stderr[-2000:]}")
-    report = json.loads(output.read_text())
-    return {name: category["score"] for name, category in report["categories"].items()}
-
-
-#: Each category's best of up to this many runs, as `make bench` judges it (CLARIFICATIONS):
-#: the performance score of one run swings with what else the machine is doing.
-LIGHTHOUSE_RUNS = 3
-
-
-def test_lighthouse_on_the_heaviest_page(sweep, site_dir):
-    heaviest = max(sweep.values(), key=lambda report: report.total_bytes).path
-    scores: dict[str, float] = {}
-    with serve_site(site_dir) as base, tempfile.TemporaryDirectory() as folder:
-        for _ in range(LIGHTHOUSE_RUNS):
-            run = _lighthouse(f"{base}/{heaviest}", Path(folder) / "report.json")
-            scores = {name: max(score or 0, scores.get(name, 0)) for name, score in run.items()}
-            if all(scores[name] >= minimum for name, minimum in LIGHTHOUSE_MINIMUM.items()):
-                break
-    low = {name: score for name, score in scores.items() if score < LIGHTHOUSE_MINIMUM[name]}
-    assert not low, f"lighthouse (mobile) on {heaviest}: {scores}; below the minimum {LIGHTHOUSE_MINIMUM}"
-
 
 
 def test_root_index_is_a_small_complete_page_leading_to_the_book(site_dir):

@@ -25,6 +25,7 @@ import re
 import shutil
 import sys
 import threading
+import time
 import urllib.request
 from collections.abc import Iterator
 from dataclasses import dataclass, field
@@ -315,13 +316,29 @@ class PageVisitor:
         self.measure = measure
         self.record = PageLoad("")
         self._pending: list = []
+        self._in_flight: set = set()
+        self._last_activity = 0.0
         page.on("request", self._on_request)
-        page.on("requestfinished", lambda r: self._pending.append(asyncio.ensure_future(self._on_finished(r))))
-        page.on("requestfailed", lambda r: self.record.failed.append(f"{r.url} ({r.failure})"))
+        page.on("requestfinished", self._on_requestfinished)
+        page.on("requestfailed", self._on_requestfailed)
         page.on("console", lambda m: m.type == "error" and self.record.console_errors.append(m.text))
         page.on("pageerror", lambda e: self.record.console_errors.append(str(e)))
 
+    def _settled(self, request):
+        self._in_flight.discard(request)
+        self._last_activity = time.monotonic()
+
+    def _on_requestfinished(self, request):
+        self._settled(request)
+        self._pending.append(asyncio.ensure_future(self._on_finished(request)))
+
+    def _on_requestfailed(self, request):
+        self._settled(request)
+        self.record.failed.append(f"{request.url} ({request.failure})")
+
     def _on_request(self, request):
+        self._in_flight.add(request)
+        self._last_activity = time.monotonic()
         record = self.record
         record.requests.append(request.url)
         if request.url.split("/", 3)[:3] != record.url.split("/", 3)[:3] and not request.url.startswith("data:"):
@@ -342,15 +359,31 @@ class PageVisitor:
         """Load `url` (a redirect stub: and the page it leads to, both recorded); with
         `scroll`, scroll to the bottom so lazy content loads and counts."""
         self.record = PageLoad(url)
+        self._in_flight.clear()  # the last page's: their ends may never be reported
         await self.page.goto(url, wait_until="load")
         if await asyncio.to_thread(_is_redirect_stub, url):
             await self.page.wait_for_url(_landed(url), wait_until="load")
         if scroll:
             await self.page.evaluate(SCROLL_TO_BOTTOM)
-            await self.page.wait_for_load_state("networkidle")
+            await self.network_idle()
         await asyncio.gather(*self._pending)
         self._pending.clear()
         return self.record
+
+
+    async def network_idle(self, quiet_s: float = 0.5, timeout_s: float = 120) -> None:
+        """Wait until no request of this tab has been in flight for `quiet_s`.
+
+        The tab's own count, not playwright's "networkidle", which at times never came on a busy
+        machine (a CI run waited out its 120 s; microsoft/playwright#19835). On a timeout the
+        error names the page and what was still loading."""
+        deadline = time.monotonic() + timeout_s
+        while self._in_flight or time.monotonic() - self._last_activity < quiet_s:
+            if time.monotonic() > deadline:
+                loading = sorted(request.url for request in self._in_flight) or ["nothing (yet never quiet)"]
+                raise TimeoutError(f"{self.record.url}: the network was not idle after {timeout_s:.0f} s; "
+                                   f"still loading: {', '.join(loading)}")
+            await asyncio.sleep(0.05)
 
 
 async def axe_violations_async(page, *, rules: list[str] | None = None) -> list[dict]:

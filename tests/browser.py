@@ -267,8 +267,13 @@ def axe_violations(page, *, rules: list[str] | None = None,
                    context_selector: str | None = None) -> list[dict]:
     """Run axe-core in `page` (every rule, or only `rules`; every impact) over the whole
     document or only the elements matching `context_selector`; its violations."""
-    page.add_script_tag(content=_axe_source())
+    if not page.evaluate(HAS_AXE):
+        page.add_script_tag(content=_axe_source())
     return page.evaluate(AXE_RUN, [rules, context_selector])
+
+
+# axe-core is half a megabyte of script: a page that is checked twice (light, then dark) has it
+HAS_AXE = "typeof window.axe === 'object'"
 
 
 AXE_RUN = """async ([rules, selector]) => {
@@ -388,7 +393,8 @@ class PageVisitor:
 
 async def axe_violations_async(page, *, rules: list[str] | None = None) -> list[dict]:
     """As axe_violations, with the async API."""
-    await page.add_script_tag(content=_axe_source())
+    if not await page.evaluate(HAS_AXE):
+        await page.add_script_tag(content=_axe_source())
     return await page.evaluate(AXE_RUN, [rules, None])
 
 

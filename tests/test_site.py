@@ -119,26 +119,28 @@ SWEEP_TIMEOUT_MS = 120_000
 
 async def _sweep_viewport(browser, base: str, pages: list[str], viewport: str, reports) -> None:
     """Every page at one width: loaded light, checked, then switched to dark in place (as the
-    system's setting switches a reader's open page; the theme follows it) and checked again."""
-    first = viewport == "desktop"  # measures bytes and requests, reads the page's facts
+    system's setting switches a reader's open page; the theme follows it) and checked again.
+    At the desktop width the page's facts are read too, and the keyboard is tried last (it
+    moves the focus and the page: nothing is judged after it)."""
+    first = viewport == "desktop"
     context = await browser.new_context(viewport=VIEWPORTS[viewport], color_scheme="light")
     context.set_default_timeout(SWEEP_TIMEOUT_MS)
     # Offline: anything not on the site's own host is blocked (and reported as foreign).
     await context.route(re.compile(r"^(?!http://127\.0\.0\.1:)"), lambda route: route.abort("internetdisconnected"))
-    visitor = PageVisitor(await context.new_page(), measure=first)
+    # no bytes counted here: the weighing counts a first visit's, in a fresh context
+    visitor = PageVisitor(await context.new_page(), measure=False)
     page = visitor.page
     for path in pages:
         report = reports[path]
         await page.emulate_media(color_scheme="light")
         # A redirect stub (the root index.html) is judged by the page it leads to.
-        load = await visitor.visit(f"{base}/{path}", scroll=first)
+        # not scrolled: the weighing's first visit scrolls, loads every figure and reports
+        # what failed (axe and the facts read the page's elements, loaded or not)
+        load = await visitor.visit(f"{base}/{path}")
         # Judge the styles' end state (colours, focus rings), not a frame of a transition.
         await page.add_style_tag(content=NO_TRANSITIONS)
         if first:
             report.facts.update(await page.evaluate(PAGE_FACTS))
-            report.facts["keyboard"] = await _keyboard(page)
-            load = await visitor.visit(f"{base}/{path}")
-            await page.add_style_tag(content=NO_TRANSITIONS)
         for scheme in ("light", "dark"):
             mode = f"{viewport}/{scheme}"
             if scheme == "dark":
@@ -150,6 +152,8 @@ async def _sweep_viewport(browser, base: str, pages: list[str], viewport: str, r
             )
             # Dark mode changes colours only (same DOM, same layout): check the colour rules.
             report.axe[mode] = await axe_violations_async(page, rules=COLOUR_RULES if scheme == "dark" else None)
+        if first:
+            report.facts["keyboard"] = await _keyboard(page)
         # read after the switch to dark: whatever it fetched or broke counts too
         report.failed += [f"{viewport}: {failure}" for failure in load.failed]
         report.console += [f"{viewport}: {message}" for message in load.console_errors]
@@ -171,7 +175,8 @@ new PerformanceObserver((list) => {
 
 async def _weigh(browser, base: str, pages: list[str], reports) -> None:
     """Each page's first visit: a fresh context (nothing cached from another page), service
-    workers blocked, as `make bench` weighs it. Its layout shift while it loads, too."""
+    workers blocked, as `make bench` weighs it. Its layout shift while it loads, too, and what
+    failed or was sent off the site (scrolled: the lazy figures load too)."""
     for path in pages:
         # A page that shifts is loaded once more: on a busy machine a late script can move the
         # header once; a shift the page itself makes comes back (the lesser of the two counts).
@@ -184,6 +189,10 @@ async def _weigh(browser, base: str, pages: list[str], reports) -> None:
             load = await visitor.visit(f"{base}/{path}", scroll=True)
             shift = await visitor.page.evaluate("window.__loadShift")
             await context.close()
+            if not reports[path].total_bytes:  # the first visit: scrolled, so every figure loaded
+                reports[path].failed += [f"first visit: {failure}" for failure in load.failed]
+                reports[path].console += [f"first visit: {message}" for message in load.console_errors]
+                reports[path].foreign += [f"first visit: {url}" for url in load.foreign]
             if not reports[path].total_bytes or shift < reports[path].layout_shift:
                 reports[path].total_bytes, reports[path].layout_shift = load.total_bytes, shift
             if shift <= LAYOUT_SHIFT_MAXIMUM:

@@ -16,6 +16,8 @@ every page and records the scores in BENCHMARKS.md.
 from __future__ import annotations
 
 import asyncio
+import hashlib
+import json
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -211,11 +213,25 @@ async def _sweep(site: Path) -> dict[str, PageReport]:
     return reports
 
 
+def weights_file(site: Path) -> Path:
+    """Where the sweep leaves each page's first-visit bytes, for test_lighthouse.py (which runs
+    later, alone, and need not weigh the pages again): beside the site, in _build."""
+    return site.parent / "page-weights.json"
+
+
+def site_version(site: Path) -> str:
+    """The build's fingerprint: its service worker names a cache for the digest of every file."""
+    return hashlib.sha256((site / "sw.js").read_bytes()).hexdigest()
+
+
 @pytest.fixture(scope="session")
 def sweep(site_dir) -> dict[str, PageReport]:
     """Open every page in every mode once; the tests read the reports."""
     node_module("axe-core")  # fail now, with the fix, if npm ci was not run
-    return asyncio.run(_sweep(site_dir))
+    reports = asyncio.run(_sweep(site_dir))
+    weights = {path: report.total_bytes for path, report in reports.items()}
+    weights_file(site_dir).write_text(json.dumps({"site": site_version(site_dir), "bytes": weights}, indent=1))
+    return reports
 
 
 def _fail_pages(rule: str, problems: dict[str, object]) -> None:

@@ -122,6 +122,40 @@ def minify_scripts(app: Sphinx, outdir: Path) -> None:
 
     todo = [name for name in own_scripts(app) if (outdir / name).exists() and record.get(name) != digest(name)]
     if todo:
-        run_node(app, "minify-js.js", [str(outdir), *todo], doing="minifying the scripts")
+        cache = MinifiedCache(Path(app.confdir) / "node_modules")
+        keys = {name: cache.key((outdir / name).read_bytes()) for name in todo}
+        missing = [name for name in todo if not cache.fetch(keys[name], outdir / name)]
+        if missing:
+            run_node(app, "minify-js.js", [str(outdir), *missing], doing="minifying the scripts")
+            for name in missing:
+                cache.keep(keys[name], outdir / name)
         record.update({name: digest(name) for name in todo})
         record_path.write_text(json.dumps(record, indent=1, sort_keys=True))
+
+
+class MinifiedCache:
+    """Minified scripts by the digest of what made them (the source, minify-js.js and terser's
+    version), in node_modules/.cache as other JS build tools keep theirs: a cold build (a fresh
+    site, or a test's small book, whose node_modules is the project's) minifies only what
+    terser has not minified before, and a changed source, script or terser is a new key."""
+
+    def __init__(self, node_modules: Path):
+        self.folder = node_modules / ".cache" / "minify-js"
+        terser = node_modules / "terser" / "package.json"
+        self.tool = (HERE / "minify-js.js").read_bytes() + (terser.read_bytes() if terser.exists() else b"")
+
+    def key(self, source: bytes) -> str:
+        return hashlib.sha256(self.tool + b"\0" + source).hexdigest()
+
+    def fetch(self, key: str, target: Path) -> bool:
+        cached = self.folder / f"{key}.js"
+        if not cached.is_file():
+            return False
+        shutil.copyfile(cached, target)
+        return True
+
+    def keep(self, key: str, minified: Path) -> None:
+        self.folder.mkdir(parents=True, exist_ok=True)
+        partial = self.folder / f"{key}.{os.getpid()}.tmp"  # whole or not at all: builds run side by side
+        shutil.copyfile(minified, partial)
+        partial.replace(self.folder / f"{key}.js")

@@ -25,6 +25,11 @@ DESKTOP = {"width": 1280, "height": 900}
 PRESSES = 10  # a reader holding ArrowRight: ten key repeats...
 PRESS_GAP_MS = 60  # ...60 ms apart
 ANNOUNCE_GAP_MS = 500  # at most one announcement per 500 ms: so at most 2 in any 1 s
+# The page spaces its announcements by at least the gap (announce.js), but the test hears each
+# one a little later, when its observer runs: a busy machine can hold the tab back for some
+# milliseconds in between (a CI run heard 497 ms and 502 ms, 999 ms for three). Unthrottled
+# announcements come with every key press, 60 ms apart, far inside this allowance.
+HEARING_JITTER_MS = 50
 SETTLED_MS = 1500  # the region has been quiet this long after the last key: the slider has stopped
 
 
@@ -129,7 +134,7 @@ def test_holding_an_arrow_key_is_announced_at_most_twice_a_second_then_the_final
 
         assert times[0] < last_key, f"nothing was said while the slider moved: {where}"
         crowded = [(round(a - first_key), round(b - first_key)) for a, b in zip(times, times[2:], strict=False)
-                   if b - a < 2 * ANNOUNCE_GAP_MS]
+                   if b - a < 2 * ANNOUNCE_GAP_MS - HEARING_JITTER_MS]
         assert not crowded, f"three announcements within a second: {crowded}; {where}"
 
         final = words(heard[-1][1])

@@ -375,7 +375,6 @@ class PageVisitor:
         self._pending.clear()
         return self.record
 
-
     async def network_idle(self, quiet_s: float = 0.5, timeout_s: float = 120) -> None:
         """Wait until no request of this tab has been in flight for `quiet_s`.
 

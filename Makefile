@@ -115,6 +115,7 @@ NO_SITE_LOG := _build/tests-without-site.log
 SITE_TESTS := -m "not ($(NO_SITE)) and not alone" -n 2 --dist loadscope
 test: venv node_modules/.package-lock.json
 	@scripts/ensure-debian-packages test
+	@scripts/ensure-debian-packages pdf  # before the tests that need no site: some typeset
 	@echo ">>> linting"
 	$(BIN)/ruff check $(LINTED)
 	@$(MAKE) --no-print-directory jslint

@@ -24,7 +24,7 @@ settings.load_profile("book")
 NEEDS = {
     "site": "the built site or PDFs (make book)",
     "browser": "Chromium (scripts/ensure-debian-packages test)",
-    "build": "its own Sphinx builds (slow)",
+    "build": "its own Sphinx or xelatex builds (slow)",
     "network": "PyPI (pip-compile resolves the lock again)",
 }
 _current_test = None

@@ -6,8 +6,11 @@ from __future__ import annotations
 import itertools
 import re
 
-#: A straight line of two points, clipped to the plot area: matplotlib's grid lines.
-_CLIPPED_LINE = re.compile(r'<path d="M (-?[\d.]+) (-?[\d.]+) \s*L (-?[\d.]+) (-?[\d.]+) \s*" clip-path=')
+#: A path clipped to the plot area: the labelled grid lines (one path each) and the small
+#: squares' lines (one path of many pieces, physics_figures/figures/question_graph.py).
+_CLIPPED_PATH = re.compile(r'<path d="([^"]+)" clip-path=')
+#: One straight piece of such a path: a move, then a line to the next point.
+_PIECE = re.compile(r"M (-?[\d.]+) (-?[\d.]+)\s+L (-?[\d.]+) (-?[\d.]+)\s*(?=M|$)")
 
 
 def grid_squares(svg: str) -> tuple[float, float, float, float]:
@@ -16,8 +19,8 @@ def grid_squares(svg: str) -> tuple[float, float, float, float]:
     square's width and height."""
     width, height = map(float, re.search(r'viewBox="([^"]+)"', svg)[1].split()[2:])
     across, up = set(), set()
-    for match in _CLIPPED_LINE.finditer(svg):
-        x1, y1, x2, y2 = map(float, match.groups())
+    pieces = (piece.groups() for path in _CLIPPED_PATH.finditer(svg) for piece in _PIECE.finditer(path[1]))
+    for x1, y1, x2, y2 in (map(float, piece) for piece in pieces):
         if x1 == x2 and y1 != y2:
             across.add(round(x1, 3))
         elif y1 == y2 and x1 != x2:

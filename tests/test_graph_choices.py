@@ -145,8 +145,10 @@ def test_the_question_sheet_draws_the_four_sketches_and_the_key_names_them(templ
     assert f"{part.answer}: " in key and all(o.mistake in key for o in part.options if o.mistake)
 
 
-@pytest.mark.skipif(shutil.which("xelatex") is None, reason="xelatex is not installed (make pdf installs it)")
+@pytest.mark.build  # typesets with xelatex, which make test installs before it starts
 def test_the_sketches_compile_with_the_sheets_preamble(tmp_path):
+    if shutil.which("xelatex") is None:
+        pytest.fail("xelatex is not installed: run `make pdf` once (it installs TeX Live from Debian)")
     question = bank.TEMPLATES["force-from-momentum-graph-choice"].variant(0)
     source = (latex.PREAMBLE.replace("@FOOTER@", "test").replace("@TITLE@", "test")
               + "\\begin{document}\n" + latex._part(question, 0, 1) + "\n\\end{document}\n")

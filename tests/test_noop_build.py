@@ -66,8 +66,8 @@ def test_a_no_op_rebuild_rewrites_nothing_and_every_edit_reaches_the_site(tmp_pa
 
     # the graph's drawing code: every variant's graph is drawn again
     _edit(tmp_path / "physics_figures" / "figures" / "question_graph.py",
-          'ax.grid(which="minor", color=colour("figure.grid-minor"), linewidth=0.5)',
-          'ax.grid(which="minor", color=colour("figure.grid-minor"), linewidth=0.7)')
+          'color=colour("figure.grid-minor"), linewidth=0.5',
+          'color=colour("figure.grid-minor"), linewidth=0.7')
     _build(tmp_path)
     drawn = _site(tmp_path)
     for name in (n for n in variants if n.endswith(".svg")):

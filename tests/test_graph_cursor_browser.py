@@ -23,6 +23,7 @@ import urllib.request
 
 import pytest
 from browser import shipped_variants
+from graph_grid import grid_lines
 from test_graph_view_browser import graph_questions
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
@@ -380,17 +381,11 @@ def test_no_alt_text_of_any_site_variant_gives_a_reading_a_part_asks_for(site_di
 # ------------------------------------------------------------- a tap in the enlarged view, 390 px
 
 
-def vertical_lines(svg: str) -> tuple[float, list[float], dict[float, float]]:
+def vertical_lines(svg: str) -> tuple[float, list[float], list[float]]:
     """The viewBox's width, the x of every vertical grid line (time 0 first), and the y of every
     horizontal grid line by its place from the bottom, in the SVG's own units."""
-    width = float(re.search(r'viewBox="([^"]+)"', svg)[1].split()[2])
-    xs, ys = set(), set()
-    for x1, y1, x2, y2 in re.findall(r'<path d="M (-?[\d.]+) (-?[\d.]+) \s*L (-?[\d.]+) (-?[\d.]+) \s*" clip-path=', svg):
-        if x1 == x2 and y1 != y2:
-            xs.add(round(float(x1), 3))
-        elif y1 == y2 and x1 != x2:
-            ys.add(round(float(y1), 3))
-    return width, sorted(xs), sorted(ys, reverse=True)
+    width, _, xs, ys = grid_lines(svg)
+    return width, xs, ys[::-1]
 
 
 def test_a_tap_in_the_enlarged_view_moves_the_cursor_and_draws_it_at_390_px(browser, base_url, templates):

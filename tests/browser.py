@@ -150,16 +150,36 @@ def serve_site(site: Path, *, prefix: str = "", cache_control: str = "no-cache")
         server.server_close()
 
 
+class _BrowserWithoutWorkers:
+    """The launched browser, whose new contexts and pages block the book's service worker
+    unless a test asks for it (``service_workers="allow"``: the tests of offline use). On every
+    first visit the worker downloads the whole book behind the page (offline.js): about 2 MB
+    a context, for hundreds of fresh contexts, which only the offline tests look at."""
+
+    def __init__(self, browser):
+        self._browser = browser
+
+    def new_context(self, **options):
+        return self._browser.new_context(**{"service_workers": "block", **options})
+
+    def new_page(self, **options):
+        return self._browser.new_page(**{"service_workers": "block", **options})
+
+    def __getattr__(self, name):
+        return getattr(self._browser, name)
+
+
 @contextlib.contextmanager
 def open_browser():
-    """Headless Debian Chromium driven by playwright (sync API)."""
+    """Headless Debian Chromium driven by playwright (sync API); service workers blocked
+    unless a context allows them."""
     from playwright.sync_api import sync_playwright
 
     executable = chromium_path()
     with sync_playwright() as playwright:
         browser = playwright.chromium.launch(executable_path=executable, args=CHROMIUM_ARGS)
         try:
-            yield browser
+            yield _BrowserWithoutWorkers(browser)
         finally:
             browser.close()
 

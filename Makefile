@@ -113,7 +113,12 @@ moodle: venv
 NO_SITE := not site and not browser
 NO_SITE_LOG := _build/tests-without-site.log
 SITE_TESTS := -m "not ($(NO_SITE)) and not alone" -n 2 --dist loadscope
-test: venv node_modules/.package-lock.json
+# The modules that mark a test `alone`: the run that measures speed collects only them (the
+# whole suite's ten thousand tests take seconds to collect while the machine is otherwise idle).
+ALONE_FILES = $(shell grep -l "mark\.alone" tests/test_*.py)
+# (the venv and the node tools install side by side: both mostly wait for downloads and disk)
+test:
+	@$(MAKE) --no-print-directory -j2 --output-sync=target venv node_modules/.package-lock.json
 	@scripts/ensure-debian-packages test
 	@scripts/ensure-debian-packages pdf  # before the tests that need no site: some typeset
 	@echo ">>> linting"
@@ -128,7 +133,7 @@ test: venv node_modules/.package-lock.json
 	  wait $$tests && no_site=0 || no_site=$$?; \
 	  echo ">>> the tests that need no site:"; cat $(NO_SITE_LOG); \
 	  echo ">>> the tests that measure speed, alone"; \
-	  $(BIN)/python -m pytest -m "alone" && alone=0 || alone=$$?; \
+	  $(BIN)/python -m pytest -m "alone" $(ALONE_FILES) && alone=0 || alone=$$?; \
 	  [ $$no_site -eq 0 ] || echo "!!! the tests that need no site failed: see above ($(NO_SITE_LOG))"; \
 	  [ $$site -eq 0 ] || echo "!!! the tests of the built site failed: see above"; \
 	  exit $$(( no_site || site || alone ))

@@ -268,3 +268,19 @@ def test_the_zip_opens_from_disk_with_figures_questions_and_search(browser, unzi
     assert "terminal" in first.locator(".context").inner_text().lower()
     context.close()
     assert not errors, errors
+
+
+def test_a_browser_test_s_context_blocks_the_worker_unless_it_allows_it(browser, site_dir):
+    """tests/browser.py: other tests' fresh contexts must not download the whole book behind
+    their page; the tests above, which allow the worker, get it."""
+    with serve_site(site_dir) as base_url:
+        blocked = browser.new_context()
+        page = blocked.new_page()
+        page.goto(f"{base_url}/{INTRO}", wait_until="load")
+        page.wait_for_timeout(1_000)  # offline.js registers the worker after "load"
+        assert page.evaluate("'serviceWorker' in navigator ? navigator.serviceWorker.getRegistrations()"
+                             ".then(r => r.length) : 0") == 0, "a default context registered the worker"
+        blocked.close()
+        context, _, errors = _first_visit(browser, base_url)  # allowed: controlled by the worker
+        context.close()
+        assert not errors, errors

@@ -35,7 +35,7 @@ _LABEL_EVERY = (1, 2, 5, 10)
 QUESTION_GRAPH_SIZE = (4.2, 3.3)
 #: The id of the plot area (the grid's frame) in the SVG: the enlarged view zooms by its size.
 PLOT_AREA_ID = "q-graph-area"
-#: The id of the small squares' lines in the SVG (tests/graph_grid.py reads them).
+#: The id of the small squares' lines in the SVG: one path of many straight pieces.
 SMALL_SQUARES_ID = "q-graph-small-squares"
 
 

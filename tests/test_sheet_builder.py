@@ -114,8 +114,9 @@ def test_a_key_holds_what_the_pdf_key_holds(key):
     for part_index, part in enumerate(question.parts):
         if part.kind in ("numeric", "graph"):
             assert _plain(part.answer_text) in key_text
-            for written, name, _ in wrong_answers(part):
-                assert _plain(written) in key_text and _plain(name) in key_text
+            for row in wrong_answers(question, part_index):
+                assert _plain(row.written) in key_text and _plain(row.name) in key_text
+                assert _plain(row.marks) in key_text
             if ecf_note(question, part_index):
                 assert "ecf: a wrong answer" in key_text
     for _, _, code in question.mark_lines():

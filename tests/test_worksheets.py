@@ -161,8 +161,8 @@ def test_key_gives_answers_mark_codes_ecf_and_wrong_answers():
     for code in ("B1", "C1", "A1"):
         assert f"\\textbf{{{code}}}" in tex
     assert "ecf: a wrong answer to (a)" in tex
-    rows = wrong_answers(question.parts[1])
-    names = [name for _, name, _ in rows]
+    rows = wrong_answers(question, 1)
+    names = [row.name for row in rows]
     assert "used g = 10 m s⁻²" in names and "drag used as the resultant force" in names
     assert ecf_note(question, 0) == ""
 
@@ -170,7 +170,7 @@ def test_key_gives_answers_mark_codes_ecf_and_wrong_answers():
 def test_g_equals_ten_wrong_answer_is_the_models_value():
     """The issue's example: 70 kg, 1500 N gives 11.4 m s⁻² with g = 10."""
     question = bank.TEMPLATES["quick-check-3"].variant(0)
-    rows = {name: written for written, name, _ in wrong_answers(question.parts[1])}
+    rows = {row.name: row.written for row in wrong_answers(question, 1)}
     g_ten = next(m for m in question.parts[1].mistakes if m.name == "used g = 10 m s⁻²")
     assert rows["used g = 10 m s⁻²"] == f"{worksheets.latex.format_number(g_ten.value, 3)} m s⁻²"
 

@@ -83,14 +83,15 @@ def test_every_key_matches_physics_figures_for_its_version(teachers, sheet):
         for item in version.items:
             question = item.question
             assert squash(f"({item.template.key}, variant {item.variant})") in key
-            for part in question.parts:
+            for index, part in enumerate(question.parts):
                 if part.kind in ("numeric", "graph", "mcq"):
                     # without hyphens: TeX may break a long answer's word ("ap-proach")
                     assert squash(part.answer_text).replace("-", "") in key.replace("-", ""), (
                         item.template.key, part.prompt)
                 if part.kind == "numeric":
-                    for written, name, _ in wrong_answers(part):
-                        assert squash(written) in key and squash(name) in key, (item.template.key, name)
+                    for row in wrong_answers(question, index):
+                        assert squash(row.written) in key and squash(row.name) in key, (item.template.key, row.name)
+                        assert squash(row.marks) in key, (item.template.key, row.name)
             for _, _, code in question.mark_lines():
                 if code:
                     assert squash(code) in key

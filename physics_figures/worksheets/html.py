@@ -22,6 +22,7 @@ from .latex import (
     accept_note,
     ecf_note,
     working_text,
+    option_marks,
     wrong_answers,
 )
 
@@ -86,7 +87,8 @@ def _key_part(question: Question, index: int, marks: int) -> str:
     part, label = question.parts[index], question.label(index) or "Answer "
     if part.kind == "mcq":
         right = part.options[OPTION_LETTERS.index(part.answer)]
-        wrong = "".join(f"<li>{letter} ({rich(option.text)}): <em>{plain(option.mistake)}</em>. "
+        wrong = "".join(f"<li>{letter} ({rich(option.text)}): <em>{plain(option.mistake)}</em> "
+                        f'(<strong class="sb-kept">{plain(option_marks(question, index))}</strong>). '
                         f"{plain(option.feedback)}</li>"
                         for letter, option in zip(OPTION_LETTERS, part.options, strict=True)
                         if letter != part.answer)
@@ -102,11 +104,12 @@ def _key_part(question: Question, index: int, marks: int) -> str:
     note = ecf_note(question, index)
     if note:
         out.append(f"<p><em>{plain(note)}</em></p>")
-    rows = wrong_answers(part)
+    rows = wrong_answers(question, index)
     if rows:
-        items = "".join(f"<li><strong>{plain(written)}</strong>: <em>{plain(name)}</em>. {plain(feedback)}</li>"
-                        for written, name, feedback in rows)
-        out.append("<p><strong>Common wrong answers</strong> (a student who wrote this made this mistake)</p>"
+        items = "".join(f"<li><strong>{plain(row.written)}</strong>: <em>{plain(row.name)}</em> "
+                        f'(<strong class="sb-kept">{plain(row.marks)}</strong>). {plain(row.feedback)}</li>'
+                        for row in rows)
+        out.append("<p><strong>Common wrong answers</strong> (the mistake each shows, and what it scores)</p>"
                    f'<ul class="sb-wrong">{items}</ul>')
     return "".join(out)
 

@@ -15,12 +15,13 @@ number from physics_figures, written by physics_figures.notation.format_number.
 from __future__ import annotations
 
 import re
+from typing import NamedTuple
 
 import sympy
 
-from .. import textformat
+from .. import marking, textformat
 from ..bank._common import w as working_number
-from ..notation import format_number, join_units
+from ..notation import format_number, join_units, round_number
 from ..questions import OPTION_LETTERS, Question, unit_text
 from . import DATA_LINE, Sheet, Version, part_marks
 
@@ -270,9 +271,54 @@ def ecf_note(question: Question, index: int) -> str:
             f"({question.part_ids[index]}) = {text}, worked with the student's own {uses}.")
 
 
-def wrong_answers(part) -> list[tuple[str, str, str]]:
-    """(what the student wrote, the mistake, what it shows) for a numeric part: its named
+class WrongAnswer(NamedTuple):
+    """A common wrong answer in a key: what the student wrote, the mistake it shows, what to
+    say, and what it scores ("keeps the C1: 1/2"), as the book and Moodle mark it."""
+
+    written: str
+    name: str
+    feedback: str
+    marks: str
+
+
+def _codes(codes: list[str]) -> str:
+    """"the C1", "the C1 and M1", "both C1 marks": the codes of the lines kept."""
+    counts = {code: codes.count(code) for code in codes}
+    names = [f"the {code}" if n == 1 else f"{'both' if n == 2 else f'all {n}'} {code} marks"
+             for code, n in counts.items()]
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+
+
+def marks_kept(lines: list[tuple[str, tuple[str, ...]]], lost) -> str:
+    """What an answer that loses these roles scores, as a key says it (CLARIFICATIONS, Trust:
+    "keeps the C1: 1/2"; nothing kept: "0/2"): the lines it keeps, by the rule table."""
+    kept = [code for code, roles in lines if not set(roles) & set(lost)]
+    score = f"{len(kept)}/{len(lines)}"
+    return f"keeps {_codes(kept)}: {score}" if kept else f"scores {score}"
+
+
+def _part_way_note(part, value: float) -> str:
+    """Why a rounded-part-way value is wrong at 3 s.f. when its 2 s.f. form is the key's own:
+    0.320 claims a third figure that the early rounding made, while 0.32 is 0.324 rounded."""
+    two = round_number(value, part.min_sig_figs)
+    if two != round_number(part.value, part.min_sig_figs):
+        return ""
+    return (f" To {part.min_sig_figs} s.f. it is {format_number(abs(float(two)), part.min_sig_figs)}, the key's "
+            f"own rounding, which is right; written to {MISTAKE_SIG_FIGS} s.f. its last figure is the early "
+            f"rounding's, not the key's {format_number(abs(part.value), MISTAKE_SIG_FIGS)}.")
+
+
+def option_marks(question: Question, index: int) -> str:
+    """What a wrong option of a multiple-choice part scores (a named mistake: nothing)."""
+    lines = question.part_lines(question.part_ids[index])
+    return marks_kept(lines, marking.mistake_losses("physics"))
+
+
+def wrong_answers(question: Question, index: int) -> list[WrongAnswer]:
+    """The common wrong answers of a numeric part, each with what it scores: its named
     mistakes, the g = 9.8 slip, rounding part-way and, for a signed part, the sign slip."""
+    part = question.parts[index]
+    lines, losses = question.part_lines(question.part_ids[index]), marking.outcome_losses()
     rows = []
     for mistake in part.mistakes:
         if mistake.direction is not None:
@@ -280,16 +326,24 @@ def wrong_answers(part) -> list[tuple[str, str, str]]:
         else:
             value = mistake.value if part.direction == "signed" else abs(mistake.value)
             written = _value_with_unit(value, MISTAKE_SIG_FIGS, mistake.unit or part.unit)
-        rows.append((written, mistake.name, mistake.feedback))
+        rows.append(WrongAnswer(written, mistake.name, mistake.feedback, marks_kept(lines, mistake.loses)))
     if part.g_nine_eight is not None:
-        rows.append((_value_with_unit(part.g_nine_eight, MISTAKE_SIG_FIGS, part.unit), "used g = 9.8 m s⁻²",
-                     "The data give g = 9.81 m s⁻²: 9.8 is close but moves the third figure."))
+        rows.append(WrongAnswer(_value_with_unit(part.g_nine_eight, MISTAKE_SIG_FIGS, part.unit), "used g = 9.8 m s⁻²",
+                                "The data give g = 9.81 m s⁻²: 9.8 is close but moves the third figure.",
+                                marks_kept(lines, losses["g-9.8"])))
+    # A value the scheme's own working gives from the printed earlier answers is accepted
+    # (Question.scheme_alternatives): no wrong answer, though a part-way rounding gives it too.
+    accepted = {round_number(a.value, MISTAKE_SIG_FIGS) for a in question.scheme_alternatives(index)}
     for value, what in part.rounded_part_way:
-        rows.append((_value_with_unit(value, MISTAKE_SIG_FIGS, part.unit), "rounded part-way",
-                     f"Rounded {what} before the end: keep all the figures until the final answer."))
+        if round_number(value, MISTAKE_SIG_FIGS) in accepted:
+            continue
+        rows.append(WrongAnswer(_value_with_unit(value, MISTAKE_SIG_FIGS, part.unit), "rounded part-way",
+                                f"Rounded {what} before the end: keep all the figures until the final answer."
+                                + _part_way_note(part, value), marks_kept(lines, losses["rounded-part-way"])))
     if part.direction == "signed" and part.value != 0:
-        rows.append((_value_with_unit(-part.value, part.shown_sig_figs, part.unit), "sign slip",
-                     f"The size is right but the sign is wrong: positive is {part.positive}."))
+        rows.append(WrongAnswer(_value_with_unit(-part.value, part.shown_sig_figs, part.unit), "sign slip",
+                                f"The size is right but the sign is wrong: positive is {part.positive}.",
+                                marks_kept(lines, losses["sign"])))
     return rows
 
 
@@ -324,7 +378,8 @@ def _key_part(question: Question, index: int, marks: int) -> list[str]:
         wrong = [(letter, option) for letter, option in zip(OPTION_LETTERS, part.options, strict=True)
                  if letter != part.answer]
         out.append("\\begin{itemize}[leftmargin=1.5em,itemsep=0pt,topsep=2pt]\n" + "\n".join(
-            f"\\item {letter} ({rich(option.text)}): \\emph{{{tex(option.mistake)}}}. {tex(option.feedback)}"
+            f"\\item {letter} ({rich(option.text)}): \\emph{{{tex(option.mistake)}}} "
+            f"(\\textbf{{{tex(option_marks(question, index))}}}). {tex(option.feedback)}"
             for letter, option in wrong) + "\n\\end{itemize}")
         return out
     if part.kind == "explain":  # "Model answer", not "Answer Model answer", for a part alone
@@ -338,11 +393,11 @@ def _key_part(question: Question, index: int, marks: int) -> list[str]:
     note = ecf_note(question, index)
     if note:
         out.append("\\emph{" + tex(note) + "}")
-    rows = wrong_answers(part)
+    rows = wrong_answers(question, index)
     if rows:
-        items = "\n".join(f"\\item \\textbf{{{tex(written)}}}: \\emph{{{tex(name)}}}. {tex(feedback)}"
-                          for written, name, feedback in rows)
-        out.append("\\textbf{Common wrong answers} (a student who wrote this made this mistake)\n"
+        items = "\n".join(f"\\item \\textbf{{{tex(row.written)}}}: \\emph{{{tex(row.name)}}} "
+                          f"(\\textbf{{{tex(row.marks)}}}). {tex(row.feedback)}" for row in rows)
+        out.append("\\textbf{Common wrong answers} (the mistake each shows, and what it scores)\n"
                    "{\\small\\begin{itemize}[leftmargin=1.5em,itemsep=1pt,topsep=2pt]\n"
                    + items + "\n\\end{itemize}}")
     return out

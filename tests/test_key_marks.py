@@ -14,6 +14,7 @@ import re
 from test_marks_rules import mark_questions, typed
 
 from physics_figures import bank
+from physics_figures.notation import format_number
 from physics_figures.worksheets.html import key_body
 from physics_figures.worksheets.latex import marks_kept, option_marks, wrong_answers
 
@@ -31,8 +32,14 @@ def _typed(part, row) -> dict:
     if mistake is not None:
         value = mistake.value if part.direction == "signed" else abs(mistake.value)
         return {**right, "value": typed(value, 3), "unit": mistake.unit or part.unit}
-    number = float(re.sub(r"[^\d.eE+-]", "", row.written.split(" ")[0].replace("−", "-")))
-    return {**right, "value": typed(number, 3)}
+    if row.name == "used g = 9.8 m s⁻²":
+        return {**right, "value": typed(part.g_nine_eight, 3)}
+    values = [value for value, _ in part.rounded_part_way if row.written.startswith(_written(value))]
+    return {**right, "value": typed(values[0], 3)}
+
+
+def _written(value: float) -> str:
+    return format_number(abs(value), 3)
 
 
 def _numeric_cases(key: str, question):
@@ -88,7 +95,7 @@ def test_a_rounded_part_way_value_says_why_its_two_sf_form_is_right():
             if part.kind != "numeric":
                 continue
             for row in wrong_answers(question, index):
-                if row.name == "rounded part-way" and "the key's own rounding" in row.feedback:
+                if row.name == "rounded part-way" and "earns full marks: it is the key's" in row.feedback:
                     found += 1
                     assert row.marks.endswith(f"/{len(question.part_lines(question.part_ids[index]))}")
     assert found, "no rounded-part-way value in the bank whose 2 s.f. form is the key's"

@@ -21,8 +21,8 @@ from .latex import (
     WORKING_CM_PER_MARK,
     accept_note,
     ecf_note,
-    working_text,
     option_marks,
+    working_text,
     wrong_answers,
 )
 

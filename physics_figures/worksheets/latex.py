@@ -303,9 +303,10 @@ def _part_way_note(part, value: float) -> str:
     two = round_number(value, part.min_sig_figs)
     if two != round_number(part.value, part.min_sig_figs):
         return ""
-    return (f" To {part.min_sig_figs} s.f. it is {format_number(abs(float(two)), part.min_sig_figs)}, the key's "
-            f"own rounding, which is right; written to {MISTAKE_SIG_FIGS} s.f. its last figure is the early "
-            f"rounding's, not the key's {format_number(abs(part.value), MISTAKE_SIG_FIGS)}.")
+    key = format_number(abs(part.value), MISTAKE_SIG_FIGS)
+    return (f" Written to {part.min_sig_figs} s.f., {format_number(abs(float(two)), part.min_sig_figs)} earns full "
+            f"marks: it is the key's {key} rounded. Written to {MISTAKE_SIG_FIGS} s.f., "
+            f"{format_number(abs(value), MISTAKE_SIG_FIGS)} claims a third figure, and the early rounding moved it.")
 
 
 def option_marks(question: Question, index: int) -> str:

@@ -76,7 +76,9 @@ def _answer(tab, key: str, mode: str) -> None:
     assert form.locator(".q-score").inner_text()
 
 
-def _export(tab, path) -> dict:
+def _export(tab, path, name: str) -> dict:
+    """Export progress under the student's name (typed into Your name, as Export asks)."""
+    tab.get_by_label("Your name").fill(name)
     with tab.expect_download() as download:
         tab.get_by_role("button", name="Export progress").click()
     download.value.save_as(path)
@@ -112,7 +114,7 @@ def exports(site, site_dir, tmp_path_factory) -> list:
                 mode = MODES[(student + 2 * turn) % len(MODES)]
             _answer(tab(page), key, mode)
             files.append(folder / f"student-{len(files) + 1:02d}.json")
-            _export(practice, files[-1])
+            _export(practice, files[-1], files[-1].stem)  # each export a student of its own
         context.close()
         assert not errors
     return files
@@ -154,7 +156,8 @@ def _expected(data: dict, files) -> dict:
         row["total"] = [sum(cell[i] for cell in row.values()) for i in range(3)]
         table[path.stem] = row
     table[""] = {kind: [sum(r[kind][i] for r in table.values()) for i in range(3)] for kind in next(iter(table.values()))}
-    return {"table": table, "mistakes": {n: (c, len(makers[n])) for n, c in mistakes.items()}, "questions": questions}
+    return {"table": table, "mistakes": {n: (c, len(makers[n])) for n, c in mistakes.items()}, "makers": makers,
+            "questions": questions}
 
 
 def _bad_files(files, folder) -> dict:
@@ -237,6 +240,8 @@ def test_thirty_files_load_and_every_total_matches_the_files_and_the_bad_ones_ar
         name = li.inner_text().rsplit(": ", 1)[0]
         counts.append(int(li.get_attribute("data-count")))
         assert (counts[-1], int(li.get_attribute("data-students"))) == expected["mistakes"][name]
+        who = li.locator(".cp-by").inner_text().rsplit(" (", 1)[1].removesuffix(")").split(", ")
+        assert who == sorted(expected["makers"][name])  # the students who made it, by name
     assert counts == sorted(counts, reverse=True)
     assert counts[-1] >= sorted((c for c, _ in expected["mistakes"].values()), reverse=True)[len(counts) - 1]
 
@@ -253,16 +258,40 @@ def test_thirty_files_load_and_every_total_matches_the_files_and_the_bad_ones_ar
         page.get_by_role("button", name="Download CSV").click()
     raw = download.value.path().read_bytes()
     assert raw.startswith(b"\xef\xbb\xbf")
-    lines = list(csv.reader(io.StringIO(raw.decode("utf-8-sig"), newline="")))
-    names = [kind["name"] for kind in data["types"]] + ["Total"]
-    assert lines[0] == ["Student"] + [f"{n}: {what}" for n in names for what in
-                                      ("marks earned", "marks available", "attempts")]
-    keys = [kind["type"] for kind in data["types"]] + ["total"]
-    from_csv = {("" if line[0] == "Class" else line[0]): {k: [int(x) for x in line[1 + 3 * i: 4 + 3 * i]]
-                                                          for i, k in enumerate(keys)} for line in lines[1:]}
-    assert from_csv == expected["table"]
+    _check_csv(list(csv.reader(io.StringIO(raw.decode("utf-8-sig"), newline=""))), data, expected)
     assert not errors
     context.close()
+
+
+def _check_csv(lines: list[list[str]], data: dict, expected: dict) -> None:
+    """The CSV's three sections (book/teachers-class.md): the table, a type not tried left
+    "not tried" with no marks; the mistakes with who made them; each question's share."""
+    names = [kind["name"] for kind in data["types"]] + ["Total"]
+    assert lines[0] == ["Student", "File"] + [f"{n}: {what}" for n in names for what in
+                                              ("marks earned", "marks available", "attempts")] + ["Checksum"]
+    keys = [kind["type"] for kind in data["types"]] + ["total"]
+    table = lines[1:lines.index([])]
+    from_csv = {}
+    for line in table:
+        cells = {}
+        for i, k in enumerate(keys):
+            earned, available, attempts = line[2 + 3 * i: 5 + 3 * i]
+            if attempts == "0":
+                assert (earned, available) == ("not tried", ""), line
+                earned = available = "0"
+            cells[k] = [int(earned), int(available), int(attempts)]
+        from_csv["" if line[0] == "Class" else line[0]] = cells
+        assert line[-1] == ("" if line[0] == "Class" else "checked")
+    assert from_csv == expected["table"]
+    mistakes = lines[lines.index(["Mistake", "Times", "Students", "Who"]) + 1:]
+    mistakes = mistakes[:mistakes.index([])]
+    assert {m[0]: (int(m[1]), int(m[2])) for m in mistakes} == expected["mistakes"]
+    assert {m[0]: m[3].split("; ") for m in mistakes} == {n: sorted(w) for n, w in expected["makers"].items()}
+    head = lines.index(["Question", "Key", "Type", "Students who tried it", "Students with full marks", "Attempts",
+                        "Attempts with full marks", "Share of full marks (%)"])
+    questions = {q[1]: q[3:] for q in lines[head + 1:]}
+    assert questions == {key: [str(len(e["students"])), str(len(e["best"])), str(e["attempts"]), str(e["full"]),
+                               str(round(100 * e["full"] / e["attempts"]))] for key, e in expected["questions"].items()}
 
 
 def test_the_page_says_nothing_is_uploaded_and_what_the_checksum_catches(site):
@@ -291,7 +320,7 @@ def test_from_the_unzipped_site_export_and_load_work_on_file_urls(site, site_dir
     attempts = json.loads(exports[3].read_text())["attempts"]
     page.evaluate("(a) => localStorage.setItem('dynamics-progress-v1', JSON.stringify({version: 1, attempts: a}))",
                   attempts)
-    saved = _export(page, tmp_path / "from-disk.json")  # a format 1 store, upgraded: every attempt kept
+    saved = _export(page, tmp_path / "from-disk.json", "from-disk")  # a format 1 store, upgraded: every attempt kept
     assert [a["at"] for a in saved["attempts"]] == [a["at"] for a in attempts]
     assert saved["sha256"] == progress_checksum(saved["attempts"]) and saved["book"] == bank.TOPIC.key
     page.goto(site_dir.as_uri() + CLASS_PAGE, wait_until="load")

@@ -10,6 +10,7 @@ one template)."""
 from __future__ import annotations
 
 import json
+import re
 
 import pytest
 from browser import axe_violations
@@ -129,12 +130,14 @@ def test_progress_follows_answers_survives_reload_export_clear_and_import(contex
     page.reload(wait_until="load")
     shows_the_attempt()
 
+    page.get_by_label("Your name").fill("Amira Khan")  # Export asks for it once; the file carries it
     with page.expect_download() as download:
         page.get_by_role("button", name="Export progress").click()
+    assert re.fullmatch(r"dynamics-progress-Amira-Khan-\d{4}-\d\d-\d\d\.json", download.value.suggested_filename)
     exported = tmp_path / download.value.suggested_filename
     download.value.save_as(exported)
     saved = json.loads(exported.read_text())
-    assert saved["version"] == 2
+    assert saved["version"] == 2 and saved["student"] == "Amira Khan"
     assert [a["question"] for a in saved["attempts"]] == [entry["key"]]
     assert list(saved["schedule"]) == [entry["key"]]
     assert saved["attempts"][0]["mistakes"] == [mistake.name]

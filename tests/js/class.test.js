@@ -93,8 +93,6 @@ test("a file that is not this book's unedited export is refused, saying why", as
       await exported([attempt("d1", "drag", 3, 4, 1)], "waves"),
       /another book \("waves"\), not this one \("dynamics"\)/,
     ],
-    [JSON.stringify(noBook), /does not say which book/],
-    [JSON.stringify(noSum), /no checksum/],
     [JSON.stringify(edited), /do not match their checksum: it was changed after it was exported/],
     [JSON.stringify({ ...good, attempts: [{ question: "d1" }] }), /attempt 1 of 1 has no question type/],
   ];
@@ -105,6 +103,67 @@ test("a file that is not this book's unedited export is refused, saying why", as
     assert.match(read.message, reason, text);
   }
   assert.equal((await C.readFile("g.json", JSON.stringify(good), BOOK)).ok, true);
+  // another book's file without a checksum is still another book's
+  const otherOld = structuredClone(noSum);
+  otherOld.book = "waves";
+  assert.match((await C.readFile("w.json", JSON.stringify(otherOld), BOOK)).message, /another book \("waves"\)/);
+});
+
+test("an export from before the book id or the checksum loads with every attempt, not checked", async () => {
+  const good = JSON.parse(await exported([attempt("d1", "drag", 3, 4, 1), attempt("t1", "two-d", 1, 3, 2)]));
+  const noBook = structuredClone(good);
+  delete noBook.book;
+  const noSum = structuredClone(good);
+  delete noSum.sha256;
+  const plain = { version: 1, attempts: good.attempts }; // as the site wrote before 8be9d57
+  for (const file of [noBook, noSum, plain]) {
+    const read = await C.readFile("old.json", JSON.stringify(file), BOOK);
+    assert.equal(read.ok, true, read.message);
+    assert.equal(read.checked, false);
+    assert.deepEqual(
+      read.attempts.map((a) => [a.question, a.earned, a.at]),
+      [
+        ["d1", 3, 1],
+        ["t1", 1, 2],
+      ],
+    );
+  }
+  assert.equal((await C.readFile("new.json", JSON.stringify(good), BOOK)).checked, true);
+  assert.deepEqual(await F.exportCheck(plain, BOOK), { ok: true, checked: false, label: "older export, not checked" });
+});
+
+test("a student is the name the file carries; an older file's is its file's name", async () => {
+  const named = await F.exportFile({ version: 2, student: "Amira Khan", attempts: [], mocks: [] }, BOOK);
+  assert.deepEqual(Object.keys(named).slice(0, 4), ["version", "book", "student", "sha256"]);
+  const read = await C.readFile("dynamics-progress-2026-11-28.json", JSON.stringify(named), BOOK);
+  assert.equal(read.student, "Amira Khan");
+  assert.equal((await C.readFile("ben.json", JSON.stringify({ version: 1, attempts: [] }), BOOK)).student, "ben");
+  assert.equal(F.exportFileName("Amira Khan", "2026-11-28"), "dynamics-progress-Amira-Khan-2026-11-28.json");
+  assert.equal(
+    F.exportFileName(" Zoë O'Brien / 12B ", "2026-11-28"),
+    "dynamics-progress-Zoë-O-Brien-12B-2026-11-28.json",
+  );
+  assert.equal(F.exportFileName("../..", "2026-11-28"), "dynamics-progress-2026-11-28.json");
+  assert.equal(F.exportFileName("", "2026-11-28"), "dynamics-progress-2026-11-28.json");
+});
+
+test("two files that give one name are two rows, each labelled with its file, never merged", () => {
+  const two = [
+    { student: "Sam", file: "a.json", attempts: [attempt("d1", "drag", 4, 4, 1)] },
+    { student: "Sam", file: "b.json", attempts: [attempt("d1", "drag", 1, 4, 2, ["g = 10"])] },
+    { student: "Tia", file: "c.json", attempts: [] },
+  ];
+  const table = C.classTable(types, two);
+  assert.deepEqual(
+    table.rows.map((r) => [r.label, r.total.earned, r.total.attempts]),
+    [
+      ["Sam (a.json)", 4, 1],
+      ["Sam (b.json)", 1, 1],
+      ["Tia", 0, 0],
+    ],
+  );
+  assert.deepEqual(C.sharedNames(two), { Sam: ["a.json", "b.json"] });
+  assert.deepEqual(C.classMistakes(table)[0].who, ["Sam (b.json)"]);
 });
 
 const students = [
@@ -145,8 +204,8 @@ test("the table: best marks per question tried and every attempt, per student an
 test("the class's mistakes: most often first, with how many students made each", () => {
   const mistakes = C.classMistakes(C.classTable(types, students));
   assert.deepEqual(mistakes, [
-    { name: "g = 10", count: 4, students: 2 },
-    { name: "drag as resultant", count: 1, students: 1 },
+    { name: "g = 10", count: 4, students: 2, who: ["amira", "ben"] },
+    { name: "drag as resultant", count: 1, students: 1, who: ["amira"] },
   ]);
 });
 
@@ -160,28 +219,40 @@ test("each question's share of full marks: full-mark attempts over attempts, low
   ]);
 });
 
-test("the CSV holds the same table: header row, one row a student, the class's totals", () => {
-  const text = C.csvText(types, C.classTable(types, students));
+test("the CSV: the table (not tried left empty), then the mistakes with who, then the questions", () => {
+  const text = C.csvText(
+    types,
+    students.map((s, i) => ({ ...s, file: s.student + ".json", checked: i !== 1 })),
+  );
   assert.ok(text.startsWith("\ufeff"));
   const lines = text.slice(1).split("\r\n");
   assert.equal(lines.pop(), "");
   assert.equal(
     lines[0],
-    'Student,"Drag, terminal velocity: marks earned","Drag, terminal velocity: marks available",' +
+    'Student,File,"Drag, terminal velocity: marks earned","Drag, terminal velocity: marks available",' +
       '"Drag, terminal velocity: attempts",Two dimensions: marks earned,Two dimensions: marks available,' +
       "Two dimensions: attempts,Not in the bank yet: marks earned,Not in the bank yet: marks available," +
-      "Not in the bank yet: attempts,Total: marks earned,Total: marks available,Total: attempts",
+      "Not in the bank yet: attempts,Total: marks earned,Total: marks available,Total: attempts,Checksum",
   );
   assert.deepEqual(lines.slice(1), [
-    "amira,4,6,3,0,0,0,0,0,0,4,6,3",
-    "ben,3,4,1,2,3,1,0,0,0,5,7,2",
-    "cy,0,0,0,0,0,0,0,0,0,0,0,0",
-    "Class,7,10,4,2,3,1,0,0,0,9,13,5",
+    "amira,amira.json,4,6,3,not tried,,0,not tried,,0,4,6,3,checked",
+    'ben,ben.json,3,4,1,2,3,1,not tried,,0,5,7,2,"older export, not checked"',
+    "cy,cy.json,not tried,,0,not tried,,0,not tried,,0,not tried,,0,checked",
+    "Class,,7,10,4,2,3,1,not tried,,0,9,13,5,",
+    "",
+    "Mistake,Times,Students,Who",
+    "g = 10,4,2,amira; ben",
+    "drag as resultant,1,1,amira",
+    "",
+    "Question,Key,Type,Students who tried it,Students with full marks,Attempts,Attempts with full marks," +
+      "Share of full marks (%)",
+    'Drag 2,d2,"Drag, terminal velocity",1,0,1,0,0',
+    "Two-d 1,t1,Two dimensions,1,0,1,0,0",
+    'Drag 1,d1,"Drag, terminal velocity",2,1,3,1,33',
   ]);
 });
 
 test("a CSV field is quoted when it must be, and a name is never a spreadsheet formula", () => {
-  const table = C.classTable(types, [{ student: '=HYPERLINK("x")', attempts: [] }]);
-  const row = C.csvText(types, table).split("\r\n")[1];
-  assert.ok(row.startsWith('"\'=HYPERLINK(""x"")",0,'), row);
+  const row = C.csvText(types, [{ student: '=HYPERLINK("x")', file: "x.json", attempts: [] }]).split("\r\n")[1];
+  assert.ok(row.startsWith('"\'=HYPERLINK(""x"")",x.json,'), row);
 });

@@ -134,3 +134,15 @@ test("the schedule is what ts-fsrs gives for the same ratings, and the wrong one
     ["wrong", "partly"],
   );
 });
+
+test("the student's name is kept in the store, read back, and kept over an imported file's", () => {
+  const named = Object.assign(Store.empty(), { student: "Amira Khan" });
+  const read = Store.read(JSON.stringify(named));
+  assert.equal(read.ok, true, read.message);
+  assert.equal(read.progress.student, "Amira Khan");
+  assert.match(Store.read(JSON.stringify({ ...named, student: 7 })).message, /name is not text/);
+  const other = Object.assign(Store.empty(), { student: "Ben" });
+  assert.equal(Store.merge(named, other).progress.student, "Amira Khan");
+  assert.equal(Store.merge(Store.empty(), other).progress.student, "Ben");
+  assert.equal("student" in Store.merge(Store.empty(), Store.empty()).progress, false);
+});

@@ -5,7 +5,8 @@
 
 The build writes the book's id and every question type with its templates (key, title,
 marks; progress.book_types, as Your practice has them); static/class.js reads the files in
-the browser, refuses what is not this book's or was edited (progress-file.js), and shows
+the browser, refuses what is not this book's or was edited (progress-file.js), reads an
+export from before the checksum as "older export, not checked", and shows
 marks and attempts per student and per type, the class's mistakes and each question's share
 of full marks. Nothing is uploaded. Without JavaScript, and in print, the page says where it
 works.
@@ -58,6 +59,7 @@ them (several at once).</p>
 </section>
 <div class="cp-results" hidden>
 <h2 id="cp-table-heading">Marks and attempts</h2>
+<ul class="cp-notes" aria-label="Notes on the files" hidden></ul>
 <div class="cp-buttons"><button type="button" class="cp-csv">Download CSV</button>
 <button type="button" class="cp-clear">Clear the class</button></div>
 <div class="cp-scroll" role="region" aria-labelledby="cp-table-heading" tabindex="0"><table class="cp-table"></table></div>

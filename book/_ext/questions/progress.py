@@ -192,6 +192,8 @@ def visit_practice_progress(self, node):
         '<h2 id="pp-file-heading">Move or clear your progress</h2>'
         "<p>It is kept in this browser only. Export saves it to a file to import on another device "
         "(nothing kept there is lost).</p>"
+        '<p class="pp-student-line"><label for="pp-student">Your name, for the file</label> '
+        '<input type="text" id="pp-student" class="pp-student" autocomplete="name" maxlength="80" size="16"></p>'
         '<div class="pp-buttons">'
         '<button type="button" class="pp-export">Export progress</button>'
         '<label class="pp-import-label" for="pp-import">Import progress from a file'

@@ -7,11 +7,15 @@
  * A file is refused, with its name and why, when it is not JSON, has no format version, is
  * from another book or its records do not match their checksum (progress-file.js), or an
  * attempt in it is not one Your practice would keep (progress-store.js, read: formats 1 and 2,
- * format 1 upgraded; the checksum is of the attempts as the file holds them). The others
- * still load. A student is the file's name without its extension: "amira-khan.json" is
- * amira-khan; a file of a name loaded before replaces it (a later export holds all of an
- * earlier one's attempts). Marks count as Your practice counts them (summarise: the best
- * attempt at each question tried); attempts are every checked answer.
+ * format 1 upgraded; the checksum is of the attempts as the file holds them). A file with no
+ * book id or no checksum is an export from before they existed: it loads, with every attempt,
+ * labelled "older export, not checked" (on the page and in the CSV). The others still load.
+ * A student is the name the file carries (Export asks for it); an older file's is its file's
+ * name without the extension ("amira-khan.json" is amira-khan). Each file is a row: two files
+ * that give one name are two rows, each with its file's name, and a note says so (never
+ * merged); the same file loaded again is read again, not added twice. Marks count as Your
+ * practice counts them (summarise: the best attempt at each question tried); attempts are
+ * every checked answer. The CSV holds the table, the mistakes and the questions (csvText).
  * The pure part (top) runs under Node for the tests; the page code (bottom) in a browser. */
 (function (root) {
   "use strict";
@@ -28,13 +32,22 @@
     return count(n) + " " + (n === 1 ? one : many);
   }
 
-  /* The student a file is: its name without the extension. */
+  /* The student an older file is (one that carries no name): its name without the extension. */
   function studentName(fileName) {
     return fileName.replace(/\.[^.]*$/, "") || fileName;
   }
 
-  /* A promise of {ok: true, name, student, attempts} or {ok: false, name, message}: the
-   * message says why the file is refused (the end of "NAME was refused: …"). */
+  /* The name a file gives: the student's name it carries (Export asks for it), else the
+   * file's name (an export from before exports carried a name). */
+  function fileStudent(file, fileName) {
+    var given = file && typeof file.student === "string" ? file.student.trim() : "";
+    return given ? given.slice(0, 80) : studentName(fileName);
+  }
+
+  /* A promise of {ok: true, name, student, attempts, checked} or {ok: false, name, message}:
+   * the message says why the file is refused (the end of "NAME was refused: …"). checked is
+   * false for an older export (no book id or no checksum): read, but "older export, not
+   * checked" (progress-file.js, exportCheck). */
   function readFile(name, text, book) {
     function refused(message) {
       return { ok: false, name: name, message: message };
@@ -46,16 +59,22 @@
     } catch {
       /* Store.read says it is not JSON */
     }
-    // Another book's file: said as the export's format says it (which book, and this one).
-    if (file && typeof file.book === "string" && file.book !== book) {
-      return ProgressFile.exportProblem(file, book).then(refused);
-    }
     var read = Store.read(text);
-    if (!read.ok) return Promise.resolve(refused(read.message));
+    // Another book's file: said as the export's format says it (which book, and this one).
+    if (!read.ok && !(file && typeof file.book === "string" && file.book !== book)) {
+      return Promise.resolve(refused(read.message));
+    }
     // The checksum is of the records as exported (a format 1 file's, before its upgrade).
-    return ProgressFile.exportProblem(file, book).then(function (problem) {
-      if (problem) return refused(problem);
-      return { ok: true, name: name, student: studentName(name), attempts: read.progress.attempts };
+    return ProgressFile.exportCheck(file, book).then(function (check) {
+      if (!check.ok) return refused(check.message);
+      if (!read.ok) return refused(read.message);
+      return {
+        ok: true,
+        name: name,
+        student: fileStudent(file, name),
+        attempts: read.progress.attempts,
+        checked: check.checked,
+      };
     });
   }
 
@@ -69,11 +88,27 @@
     return total;
   }
 
-  /* The table: types (the build's list) across, students ([{student, attempts}]) down. Each
-   * cell: {earned, available, attempts, tried, mistakes}, where earned/available are the
-   * student's best attempts at the type's questions tried (summarise) and attempts count
-   * every attempt at them. Totals per student (row.total), per type (typeTotals) and all. */
+  /* The names given by more than one of students ([{student, file}]): {name: [file, ...]}. */
+  function sharedNames(students) {
+    var files = {},
+      shared = {};
+    students.forEach(function (s) {
+      (files[s.student] = files[s.student] || []).push(s.file || "");
+    });
+    Object.keys(files).forEach(function (name) {
+      if (files[name].length > 1) shared[name] = files[name];
+    });
+    return shared;
+  }
+
+  /* The table: types (the build's list) across, students ([{student, file, checked,
+   * attempts}], one a file) down. Each cell: {earned, available, attempts, tried, mistakes},
+   * where earned/available are the student's best attempts at the type's questions tried
+   * (summarise) and attempts count every attempt at them. Totals per student (row.total), per
+   * type (typeTotals) and all. A row's label is its name, with its file's name when another
+   * file gives the same name (two rows, never merged). */
   function classTable(types, students) {
+    var shared = sharedNames(students);
     var rows = students.map(function (s) {
       var cells = types.map(function (kind) {
         var summary = Progress.summarise(kind, s.attempts);
@@ -89,7 +124,14 @@
           mistakes: summary.mistakes,
         };
       });
-      return { student: s.student, cells: cells, total: sum(cells) };
+      return {
+        student: s.student,
+        file: s.file || "",
+        checked: s.checked !== false,
+        label: shared[s.student] ? s.student + " (" + s.file + ")" : s.student,
+        cells: cells,
+        total: sum(cells),
+      };
     });
     var typeTotals = types.map(function (kind, i) {
       return sum(
@@ -101,7 +143,8 @@
     return { rows: rows, typeTotals: typeTotals, total: sum(typeTotals) };
   }
 
-  /* Every named mistake the class made, most often first: {name, count, students}. */
+  /* Every named mistake the class made, most often first: {name, count, students, who} (who:
+   * the rows' labels of the students who made it, in the table's order). */
   function classMistakes(table) {
     var byName = {},
       order = [];
@@ -110,11 +153,14 @@
       row.cells.forEach(function (cell) {
         cell.mistakes.forEach(function (m) {
           if (!byName[m.name]) {
-            byName[m.name] = { name: m.name, count: 0, students: 0 };
+            byName[m.name] = { name: m.name, count: 0, students: 0, who: [] };
             order.push(byName[m.name]);
           }
           byName[m.name].count += m.count;
-          if (!mine[m.name]) byName[m.name].students += 1;
+          if (!mine[m.name]) {
+            byName[m.name].students += 1;
+            byName[m.name].who.push(row.label);
+          }
           mine[m.name] = true;
         });
       });
@@ -171,31 +217,77 @@
     return /[",\r\n]/.test(text) ? '"' + text.replace(/"/g, '""') + '"' : text;
   }
 
-  /* The table as CSV (UTF-8 with a byte-order mark, so spreadsheets read names in any
-   * script; a header row; CRLF lines): per type and in total, marks earned, marks available
-   * and attempts; a last row for the class. */
-  function csvText(types, table) {
-    var header = ["Student"];
+  function csvLine(fields) {
+    return fields.map(csvField).join(",");
+  }
+
+  /* The marks table's lines: a header row, a row a file (the student, the file, per type and
+   * in total: marks earned, marks available and attempts; a type not tried has its marks
+   * empty and "not tried"; whether the file was checked), a last row for the class. */
+  function csvTable(types, table) {
+    var header = ["Student", "File"];
     types.concat([{ name: "Total" }]).forEach(function (kind) {
       header.push(kind.name + ": marks earned", kind.name + ": marks available", kind.name + ": attempts");
     });
-    function line(label, cells, total) {
-      var out = [label];
+    header.push("Checksum");
+    function line(first, cells, total, checked) {
+      var out = first.slice();
       cells.concat([total]).forEach(function (cell) {
-        out.push(cell.earned, cell.available, cell.attempts);
+        if (cell.attempts) out.push(cell.earned, cell.available, cell.attempts);
+        else out.push("not tried", "", 0);
       });
-      return out.map(csvField).join(",");
+      out.push(checked);
+      return csvLine(out);
     }
-    var lines = [header.map(csvField).join(",")];
+    var lines = [csvLine(header)];
     table.rows.forEach(function (row) {
-      lines.push(line(row.student, row.cells, row.total));
+      lines.push(line([row.student, row.file], row.cells, row.total, row.checked ? "checked" : ProgressFile.OLDER));
     });
-    lines.push(line("Class", table.typeTotals, table.total));
+    lines.push(line(["Class", ""], table.typeTotals, table.total, ""));
+    return lines;
+  }
+
+  /* The CSV of the page (UTF-8 with a byte-order mark, so spreadsheets read names in any
+   * script; CRLF lines): three sections, one after another, each with its header row and an
+   * empty line between them (book/teachers-class.md says the layout):
+   *   the marks table (csvTable);
+   *   the mistakes: Mistake, Times, Students, Who (the students' names, "; " between them);
+   *   the questions tried, lowest share of full marks first: Question, Key, Type, Students
+   *   who tried it, Students with full marks, Attempts, Attempts with full marks, Share of
+   *   full marks (%). */
+  function csvText(types, students) {
+    var table = classTable(types, students);
+    var lines = csvTable(types, table);
+    lines.push("", csvLine(["Mistake", "Times", "Students", "Who"]));
+    classMistakes(table).forEach(function (m) {
+      lines.push(csvLine([m.name, m.count, m.students, m.who.join("; ")]));
+    });
+    lines.push(
+      "",
+      csvLine([
+        "Question",
+        "Key",
+        "Type",
+        "Students who tried it",
+        "Students with full marks",
+        "Attempts",
+        "Attempts with full marks",
+        "Share of full marks (%)",
+      ]),
+    );
+    questionShares(types, students).forEach(function (q) {
+      var share = Math.round((100 * q.full) / q.attempts);
+      lines.push(
+        csvLine([q.template.title, q.template.key, q.kind.name, q.students, q.studentsFull, q.attempts, q.full, share]),
+      );
+    });
     return "\ufeff" + lines.join("\r\n") + "\r\n";
   }
 
   var api = {
     studentName: studentName,
+    fileStudent: fileStudent,
+    sharedNames: sharedNames,
     readFile: readFile,
     classTable: classTable,
     classMistakes: classMistakes,
@@ -250,18 +342,19 @@
     var results = box.querySelector(".cp-results");
     var input = box.querySelector(".cp-choose");
     var drop = box.querySelector(".cp-drop");
-    var students = {}; // student -> {student, attempts}
+    var students = {}; // a file (its name and text) -> {student, file, checked, attempts}
     var loads = 0;
     document.documentElement.classList.add("cp-js");
     box.querySelector(".cp-load").hidden = false;
 
+    // The files' students by name, then by file name (two files of one name stay two rows).
     function sorted() {
       return Object.keys(students)
-        .sort(function (a, b) {
-          return a.localeCompare(b);
+        .map(function (key) {
+          return students[key];
         })
-        .map(function (name) {
-          return students[name];
+        .sort(function (a, b) {
+          return a.student.localeCompare(b.student) || a.file.localeCompare(b.file);
         });
     }
 
@@ -283,10 +376,14 @@
         ),
       );
       node.appendChild(head);
-      function row(label, cells, total, body) {
+      function row(label, cells, total, body, older) {
         var tr = element("tr");
         var th = element("th", null, label);
         th.scope = "row";
+        if (older) {
+          th.appendChild(document.createTextNode(" "));
+          th.appendChild(element("span", "cp-older", ProgressFile.OLDER));
+        }
         tr.appendChild(th);
         cells.forEach(function (cell, i) {
           var td = marksCell("td", cell);
@@ -302,7 +399,10 @@
       }
       var body = element("tbody");
       table.rows.forEach(function (r) {
-        row(r.student, r.cells, r.total, body).setAttribute("data-student", r.student);
+        var tr = row(r.label, r.cells, r.total, body, !r.checked);
+        tr.setAttribute("data-student", r.student);
+        tr.setAttribute("data-file", r.file);
+        tr.setAttribute("data-checked", r.checked ? "yes" : "no");
       });
       node.appendChild(body);
       var foot = element("tfoot");
@@ -316,7 +416,9 @@
       list.textContent = "";
       mistakes.forEach(function (m) {
         var li = element("li", null, m.name + ": " + Progress.times(m.count));
-        li.appendChild(element("span", "cp-by", ", by " + plural(m.students, "student", "students")));
+        li.appendChild(
+          element("span", "cp-by", ", by " + plural(m.students, "student", "students") + " (" + m.who.join(", ") + ")"),
+        );
         li.setAttribute("data-count", m.count);
         li.setAttribute("data-students", m.students);
         list.appendChild(li);
@@ -367,17 +469,57 @@
         plural(inBank - list.length, "question", "questions") + " of the bank's " + count(inBank) + " tried by no one.";
     }
 
+    // Two files that give one name: two rows (each with its file's name), and a note.
+    function renderNotes(list) {
+      var notes = box.querySelector(".cp-notes");
+      var shared = sharedNames(list);
+      notes.textContent = "";
+      Object.keys(shared).forEach(function (name) {
+        var li = element(
+          "li",
+          null,
+          plural(shared[name].length, "file gives", "files give") +
+            " the name " +
+            name +
+            " (" +
+            shared[name].join(", ") +
+            "): each is a row of its own, not added together. If they are one student's, load only the latest; " +
+            "if they are different students', ask each to export with their full name.",
+        );
+        li.setAttribute("data-name", name);
+        notes.appendChild(li);
+      });
+      notes.hidden = !notes.children.length;
+    }
+
     function render() {
       var list = sorted();
       results.hidden = !list.length;
       if (list.length) {
         var table = classTable(data.types, list);
+        renderNotes(list);
         renderTable(table);
         renderMistakes(table);
         renderQuestions(questionShares(data.types, list));
       }
       loads += 1;
       box.setAttribute("data-loads", loads); // tests and the benchmark wait on it
+    }
+
+    function loadedText(loaded, older, again, refused) {
+      var names = sharedNames(sorted());
+      var shared = Object.keys(names).length;
+      return (
+        "Loaded " +
+        plural(loaded, "file", "files") +
+        (older ? " (" + plural(older, "older export", "older exports") + ", not checked)" : "") +
+        (again ? " (" + plural(again, "file", "files") + " loaded before: read again, not added twice)" : "") +
+        (refused ? "; refused " + count(refused) + " (below, with why)" : "") +
+        ". The class: " +
+        plural(Object.keys(students).length, "student", "students") +
+        (shared ? " (" + plural(shared, "name is", "names are") + " given by two files or more: see the note)" : "") +
+        "."
+      );
     }
 
     function loadFiles(files) {
@@ -388,7 +530,10 @@
         files.map(function (file) {
           return file.text().then(
             function (text) {
-              return readFile(file.name, text, data.book);
+              return readFile(file.name, text, data.book).then(function (read) {
+                read.key = file.name + "\n" + text; // the same file loaded again is one file
+                return read;
+              });
             },
             function () {
               return { ok: false, name: file.name, message: "it could not be read." };
@@ -397,7 +542,8 @@
         }),
       ).then(function (read) {
         var loaded = 0,
-          replaced = 0;
+          older = 0,
+          again = 0;
         refusedList.textContent = "";
         read.forEach(function (file) {
           if (!file.ok) {
@@ -406,21 +552,19 @@
             refusedList.appendChild(li);
             return;
           }
-          if (students[file.student]) replaced += 1;
-          students[file.student] = { student: file.student, attempts: file.attempts };
+          if (students[file.key]) again += 1;
+          students[file.key] = {
+            student: file.student,
+            file: file.name,
+            checked: file.checked,
+            attempts: file.attempts,
+          };
           loaded += 1;
+          if (!file.checked) older += 1;
         });
-        var refused = read.length - loaded;
-        refusedList.hidden = !refused;
+        refusedList.hidden = loaded === read.length;
         render();
-        status.textContent =
-          "Loaded " +
-          plural(loaded, "file", "files") +
-          (replaced ? " (" + count(replaced) + " in place of an earlier file of the same name)" : "") +
-          (refused ? "; refused " + count(refused) + " (below, with why)" : "") +
-          ". The class: " +
-          plural(Object.keys(students).length, "student", "students") +
-          ".";
+        status.textContent = loadedText(loaded, older, again, read.length - loaded);
       });
     }
 
@@ -452,7 +596,7 @@
     });
 
     box.querySelector(".cp-csv").addEventListener("click", function () {
-      var text = csvText(data.types, classTable(data.types, sorted()));
+      var text = csvText(data.types, sorted());
       var a = element("a");
       a.href = URL.createObjectURL(new Blob([text], { type: "text/csv;charset=utf-8" }));
       a.download = "class-progress-" + new Date().toISOString().slice(0, 10) + ".csv";

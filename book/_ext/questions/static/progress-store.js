@@ -5,7 +5,7 @@
  *
  * Format 2, under localStorage "dynamics-progress-v2":
  *   {version: 2, book: "dynamics", attempts: [attempt], definitions: {version: 1, cards: {slug:
- *    {mark, at}}}, mocks: [mock], schedule: {cardId: card}}
+ *    {mark, at}}}, mocks: [mock], schedule: {cardId: card}, student: "name"}
  * attempt: {question, type, variant, earned, available, at, mistakes: [names]} (format 1's
  *   fields) and help (working steps shown before the Check), seconds (from the numbers
  *   appearing to the Check), first (the first Check on these numbers), mock (the mock test it
@@ -14,6 +14,8 @@
  *   "definitions", 1 mark, earned 1 when the student knew it.
  * mock: {id, paper: "1" | "2", at, minutes, ended: "submitted" | "time", earned, available,
  *   questions: [{question, type, variant, earned, available}]}.
+ * student: the student's name, asked once by Export (progress.js) and kept for the next
+ *   export (absent until given; at most NAME_LENGTH characters).
  * schedule: each card's FSRS state as schedule.js last worked it out from the attempts (a
  *   copy for export: the attempts are the record, and the schedule is replayed from them).
  *
@@ -33,6 +35,7 @@
   // 1.25 minutes a mark (CLARIFICATIONS, Plan).
   var SECONDS_A_MARK = 75;
   var DEFINITION = "definition:";
+  var NAME_LENGTH = 80;
 
   function count(n) {
     return String(n);
@@ -177,6 +180,9 @@
     if ("book" in data && data.book !== BOOK) {
       return { ok: false, message: "it is progress in another book (" + String(data.book).slice(0, 40) + ")." };
     }
+    if ("student" in data && typeof data.student !== "string") {
+      return { ok: false, message: "its student's name is not text." };
+    }
     if (!Array.isArray(data.attempts)) return { ok: false, message: "it has no list of attempts." };
     var problem = listProblem(data.attempts, "attempt", attemptProblem);
     if (problem) return { ok: false, message: problem };
@@ -230,6 +236,8 @@
       if (!cards[slug] || cards[slug].at < card.at) cards[slug] = card;
     });
     progress.definitions = { version: 1, cards: cards };
+    // The name kept here stays; a file brings its name only where none is kept.
+    if (!kept.student && incoming.student) progress.student = incoming.student;
     return { progress: progress, added: added, already: incoming.attempts.length - added };
   }
 
@@ -287,6 +295,7 @@
     BOOK: BOOK,
     RATING: RATING,
     DEFINITION: DEFINITION,
+    NAME_LENGTH: NAME_LENGTH,
     rate: rate,
     attemptProblem: attemptProblem,
     empty: empty,

@@ -7,9 +7,11 @@
  * Storage: the progress store (progress-store.js, format 2, "dynamics-progress-v2"; a format 1
  * store is upgraded on reading and never deleted). A store of a format this page does not know
  * is left exactly as it is (Export still copies it out whole) and nothing is written over it.
- * Export writes format 2 with the schedule (schedule.js), the book's id and a checksum of the
- * attempts (progress-file.js, for the teacher's class page); Import reads formats 1 and 2 and
- * adds each attempt once. */
+ * Export writes format 2 with the student's name (asked once, kept in the store), the schedule
+ * (schedule.js), the book's id and a checksum of the attempts (progress-file.js, for the
+ * teacher's class page), to dynamics-progress-NAME-DATE.json; Import reads formats 1 and 2 as
+ * the class page does (an older export is read, not checked; another book's, or an edited one,
+ * is refused) and adds each attempt once. */
 (function (root) {
   "use strict";
 
@@ -209,6 +211,7 @@
     var importInput = box.querySelector(".pp-import");
     var undoButton = box.querySelector(".pp-undo");
     var clearButton = box.querySelector(".pp-clear");
+    var nameInput = box.querySelector(".pp-student");
     var cleared = null; // the store as it was before Clear, for Undo
     document.documentElement.classList.add("pp-js");
     file.hidden = false;
@@ -309,6 +312,7 @@
         item.textContent = mockText(mock);
         list.appendChild(item);
       });
+      if (document.activeElement !== nameInput) nameInput.value = progress.student || "";
       clearButton.disabled = !read.ok ? false : progress.attempts.length + progress.mocks.length === 0;
       if (!read.ok) {
         say(
@@ -338,19 +342,54 @@
       return count(n) + " " + one + (n === 1 ? "" : "s");
     }
 
-    // The file carries the schedule, the book's id and its records' checksum (progress-file.js).
+    /* The name Export puts in the file: the one typed, else the one kept. A new name typed is
+     * kept in the store. With none, the first Export asks for it (and exports nothing); the
+     * next exports without a name. */
+    var asked = false;
+    function nameToExport(progress) {
+      var typed = nameInput.value.trim().slice(0, Store.NAME_LENGTH);
+      if (typed && typed !== progress.student) {
+        progress.student = typed;
+        Store.update(function (kept) {
+          kept.student = typed;
+        });
+      }
+      if (progress.student || asked) return true;
+      asked = true;
+      nameInput.focus();
+      say(
+        "Type your name in the box first: it goes in the file and its name, so your teacher can tell " +
+          "whose it is. (Or press Export progress again to export without a name.)",
+      );
+      return false;
+    }
+
+    nameInput.addEventListener("change", function () {
+      var typed = nameInput.value.trim().slice(0, Store.NAME_LENGTH);
+      if (typed) {
+        Store.update(function (kept) {
+          kept.student = typed;
+        });
+      }
+    });
+
+    // The file carries the name, the schedule, the book's id and its records' checksum
+    // (progress-file.js), and is named after the student.
     box.querySelector(".pp-export").addEventListener("click", function () {
       var read = Store.load();
-      var name = "dynamics-progress-" + new Date().toISOString().slice(0, 10) + ".json";
+      var today = new Date().toISOString().slice(0, 10);
       if (!read.ok) {
         // a format this page cannot read: copied out whole
+        var name = ProgressFile.exportFileName(nameInput.value.trim(), today);
         download(getStored(Store.STORE) || getStored(Store.OLD_STORE), name);
         say("Exported your progress to " + name + ".");
         return;
       }
       var progress = read.progress;
+      if (!nameToExport(progress)) return;
       progress.schedule = Schedule.replay(progress);
       ProgressFile.exportFile(progress, data.book).then(function (out) {
+        var name = ProgressFile.exportFileName(out.student, today);
         download(JSON.stringify(out, null, 1), name);
         say(
           "Exported " +
@@ -363,16 +402,19 @@
       });
     });
 
-    importInput.addEventListener("change", function () {
-      var chosen = importInput.files && importInput.files[0];
-      if (!chosen) return;
-      var reader = new FileReader();
-      reader.onload = function () {
-        importInput.value = ""; // the same file can be chosen again
-        var incoming = Store.read(String(reader.result));
-        var name = chosen.name;
-        if (!incoming.ok) {
-          say("Nothing was imported from " + name + ": " + incoming.message + " Your progress here is unchanged.");
+    /* Import: the file's attempts join the ones kept here, each once. The file is taken as the
+     * class page takes it (progress-file.js, exportCheck): another book's, or one whose records
+     * do not match their checksum, is refused; an older export (no book id or no checksum) is
+     * imported with every attempt, and the message says it was not checked. */
+    function importText(text, name) {
+      var incoming = Store.read(text);
+      if (!incoming.ok) {
+        say("Nothing was imported from " + name + ": " + incoming.message + " Your progress here is unchanged.");
+        return Promise.resolve();
+      }
+      return ProgressFile.exportCheck(text ? JSON.parse(text) : {}, data.book).then(function (check) {
+        if (!check.ok) {
+          say("Nothing was imported from " + name + ": " + check.message + " Your progress here is unchanged.");
           return;
         }
         var here = Store.load();
@@ -395,9 +437,20 @@
             plural(merged.added, "attempt") +
             " from " +
             name +
+            (check.checked ? "" : " (an " + check.label + ")") +
             (merged.already ? " (" + count(merged.already) + " were here already)" : "") +
             ".",
         );
+      });
+    }
+
+    importInput.addEventListener("change", function () {
+      var chosen = importInput.files && importInput.files[0];
+      if (!chosen) return;
+      var reader = new FileReader();
+      reader.onload = function () {
+        importInput.value = ""; // the same file can be chosen again
+        importText(String(reader.result), chosen.name);
       };
       reader.onerror = function () {
         importInput.value = "";

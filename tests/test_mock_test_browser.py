@@ -13,7 +13,15 @@ page's clock in the test's hands (Playwright's page.clock):
 - the result is kept (ProgressStore: the mock in the contract's shape, each answered question
   an attempt of the mock), once;
 - it works from the built folder opened as files, and offline after one visit;
-- axe finds nothing, light or dark, in the test and in its result.
+- axe finds nothing, light or dark, in the test and in its result;
+- no help in a test (an exam): no "Show a step";
+- each part's named mistakes and the engine's slips are kept in the mock's attempts, and the
+  plan of Your practice counts them;
+- Start the test is offered only once it works (a slow first visit: a tap before its script
+  has come sends no form, and reloads nothing), and once per test;
+- the result: no "1 minute left." after the time ran out, "Not answered" for a blank, the right
+  letter of a multiple-choice question not answered right, and what next (the weakest type of
+  the test, linked to its practice page).
 Everything expected is read from the variant data the site ships and the engine itself."""
 
 from __future__ import annotations
@@ -132,6 +140,7 @@ def assert_no_feedback(page) -> None:
         "els => els.map(e => e.textContent.trim())")
     assert not any(texts), texts
     assert page.locator(".mock-q .q-worked, .mock-q .q-scheme, .mock-q button.q-check").count() == 0
+    assert page.locator(".mock-q .q-help, .mock-q button.q-step").count() == 0  # no help in an exam
     assert not page.locator(".mock-result").is_visible()
     assert not re.search(r"\d+/\d+ marks?|✓|✗", page.locator(".mock").inner_text())
 
@@ -157,6 +166,9 @@ def assert_marked(page, test: dict, given: dict[int, dict], ended: str) -> None:
         assert page.locator(f'.mock-types li[data-type="{kind}"] .mock-type-marks').inner_text() == \
             f"{got}/{out_of} mark{'' if out_of == 1 else 's'}"
     assert page.locator(".mock-types li").count() == len(by_type)
+    assert_feedback(page, test, given)
+    assert page.locator(".mock-warning").text_content() == ""  # the warnings are over with the test
+    weakest = assert_what_next(page, test, marks, available)
     worked = page.locator(".mock-q details.q-worked")
     assert worked.count() == len(test["questions"])
     worked.first.locator("summary").click()
@@ -179,6 +191,50 @@ def assert_marked(page, test: dict, given: dict[int, dict], ended: str) -> None:
     page.locator(".mock-result").wait_for()
     assert f"{earned}/{sum(available)} marks" in page.locator(".mock-score").inner_text()
     assert len(page.evaluate("ProgressStore.load().progress")["mocks"]) == 1
+    if weakest:  # its link opens a question of that type
+        page.locator(".mock-next a").first.click()
+        page.wait_for_load_state("load")
+        anchor = page.evaluate("location.hash").removeprefix("#question-")
+        assert page.locator(f'form.q-form[data-question="{anchor}"]').get_attribute("data-type") == weakest
+
+
+def assert_feedback(page, test: dict, given: dict[int, dict]) -> None:
+    """Each part's line: "Not answered." for a blank part (not the prompt to choose); a
+    multiple-choice part not answered right names the right letter."""
+    for index, variant in enumerate(variants(page, test)):
+        for part in variant["parts"]:
+            text = page.locator(f'.mock-q[data-index="{index}"] [data-part="{part["id"]}"] .q-feedback').inner_text()
+            letter = f" The answer is {part['answer']}." if part["kind"] == "mcq" else ""
+            if index not in given:
+                assert text == f"✗ Not answered.{letter}", text
+            elif part["kind"] == "mcq" and given[index][part["id"]]["choice"] != part["answer"]:
+                assert text.startswith("✗ ") and text.endswith(letter), text
+            elif part["kind"] == "mcq":
+                assert text.startswith("✓ ") and "The answer is" not in text, text
+
+
+def assert_what_next(page, test: dict, marks: list[int], available: list[int]) -> str | None:
+    """What next: the type with the lowest share of its marks in this test (on a tie, the one
+    that lost more, then the first in the book), linked to its practice page. Its key."""
+    index = page.evaluate("JSON.parse(document.querySelector('script.mock-index').textContent)")
+    order = [t["key"] for t in index["types"]]
+    by_type: dict[str, list[int]] = {}
+    for q, got, out_of in zip(test["questions"], marks, available, strict=True):
+        line = by_type.setdefault(q["type"], [0, 0])
+        line[0], line[1] = line[0] + got, line[1] + out_of
+    lost = [(got / out_of, got - out_of, order.index(kind), kind) for kind, (got, out_of) in by_type.items()
+            if got < out_of]
+    line = page.locator(".mock-next")
+    assert line.inner_text().startswith("What next:")
+    if not lost:
+        return None
+    weakest = min(lost)[3]
+    assert line.get_attribute("data-type") == weakest
+    title = next(t["title"] for t in index["types"] if t["key"] == weakest)
+    got, out_of = by_type[weakest]
+    assert f"your weakest type in this test was {title} ({got}/{out_of} mark" in line.inner_text()
+    assert line.get_by_role("link", name=title).get_attribute("href").split("#")[0].endswith(".html")
+    return weakest
 
 
 def test_paper_1_resumes_after_a_reload_and_ends_itself_when_time_is_up(student):
@@ -336,3 +392,125 @@ def test_a_graph_in_a_mock_test_is_read_by_its_cursor(student):
         slider.press("Home")
         slider.press("Home")
         assert said.text_content().startswith("Start of the time axis: t = "), said.text_content()
+
+
+#: Each answered question's mistakes as a question's page records them: each part's named
+#: mistake, else the slip the engine names (sign, unit, 1 s.f.).
+ENGINE_MISTAKES = """([questions, answers]) => questions.map((q, i) => {
+    const variant = QuestionVariants[q.question][q.variant];
+    const marked = QuestionMarking.markQuestion(variant, answers[i] || {});
+    return variant.parts.map(p => marked.results[p.id].mistake || QuestionMarking.slipName(marked.results[p.id].code))
+        .filter(Boolean);
+})"""
+
+
+def test_a_mock_tests_mistakes_are_kept_and_the_plan_counts_them(student, base_url):
+    """Two answers right but for their unit (the engine's slip) and one named mistake where a
+    question has one: the mock's attempts keep them, and Your practice names the most frequent."""
+    page = student
+    test = start(page, "2", 20)
+    shown = variants(page, test)
+    given = {i: right(v) for i, v in enumerate(shown[:2])}
+    for answers in given.values():
+        answers["a"]["unit"] = ""
+    named = next((i for i, v in enumerate(shown) if i >= 2 and any(
+        m["unit"] is None and m["direction"] is None for m in v["parts"][0]["mistakes"])), None)
+    if named is not None:
+        given[named] = right(shown[named])
+        mistake = next(m for m in shown[named]["parts"][0]["mistakes"] if m["unit"] is None and m["direction"] is None)
+        value = mistake["value"] if shown[named]["parts"][0]["direction"] == "signed" else abs(mistake["value"])
+        given[named]["a"]["value"] = format(value, ".3g")
+    for index, answers in given.items():
+        answer(page, index, answers)
+    page.locator(".mock-bar .mock-finish").click()
+    page.get_by_role("button", name="Yes, finish and mark").click()
+    page.locator(".mock-result").wait_for()
+    expected = page.evaluate(ENGINE_MISTAKES, [test["questions"], {str(i): a for i, a in given.items()}])
+    assert sum(len(expected[i]) for i in given) >= 2 + (named is not None)
+    progress = page.evaluate("ProgressStore.load().progress")
+    kept = {(a["question"], a["variant"]): a["mistakes"] for a in progress["attempts"]}
+    for i in given:
+        q = test["questions"][i]
+        assert kept[(q["question"], q["variant"])] == expected[i], (i, q)
+    names = [name for i in given for name in expected[i]]
+    top = max(names, key=names.count)  # on a tie, the first made: max keeps the first
+    page.goto(f"{base_url}/book/exam/your-practice.html")
+    assert page.locator(".pp-often").inner_text().startswith(
+        f"Most frequent mistake: {top} ({'once' if names.count(top) == 1 else 'twice' if names.count(top) == 2 else f'{names.count(top)} times'})")
+
+
+def _held(page, pattern: str) -> list:
+    """Requests matching pattern held back (a slow first visit), until release() lets them and
+    every later one through."""
+    held: list = []
+
+    def hold(route):
+        if getattr(hold, "released", False):
+            route.continue_()
+        else:
+            held.append(route)
+
+    def release():
+        hold.released = True
+        for route in held:
+            route.continue_()
+
+    page.route(pattern, hold)
+    return held, release
+
+
+def test_start_the_test_is_offered_only_once_it_works(browser, base_url):
+    """A slow first visit: the page's script has not come. Start the test is there but
+    disabled, and says why; a tap sends no form (no reload, nothing lost); once the script has
+    come, a tap starts a test."""
+    context = browser.new_context()
+    page = context.new_page()
+    errors: list[str] = []
+    page.on("pageerror", lambda error: errors.append(str(error)))
+    navigations: list[str] = []
+    page.on("request", lambda r: navigations.append(r.url) if r.is_navigation_request() else None)
+    held, release = _held(page, "**/_static/mock-test.js*")
+    with page.expect_request(lambda r: "/mock-test.js" in r.url):
+        page.goto(f"{base_url}/{PAGE}", wait_until="commit")
+    button = page.locator(".mock-start")
+    button.wait_for()
+    assert held, "the script was not held back"
+    assert button.is_visible() and button.is_disabled()
+    assert page.locator(".mock-status").inner_text() == "Getting the test ready…"
+    page.evaluate("window.beforeTheTap = true")
+    button.click(force=True)  # the student's tap, before the script has come
+    assert len(navigations) == 1 and "?" not in page.url, navigations
+    release()
+    page.wait_for_function("!document.querySelector('.mock-start').disabled")
+    assert page.evaluate("window.beforeTheTap") is True  # the same page: nothing reloaded
+    assert page.locator(".mock-status").inner_text() == ""
+    test = start(page, "1", 10)
+    assert page.locator(".mock-q").count() == len(test["questions"]) == 10
+    assert len(navigations) == 1
+    context.close()
+    assert not errors, errors
+
+
+def test_a_second_tap_while_the_questions_load_starts_nothing_more(student):
+    """The questions' data files are slow: after Start the test, the button waits (a second
+    tap would draw another test), and the test drawn first is the one that starts, once."""
+    page = student
+    held, release = _held(page, "**/_static/questions/*.js")
+    page.locator('input[name="mock-paper"][value="2"]').check()
+    page.locator("#mock-size").select_option("15")
+    button = page.locator(".mock-start")
+    page.evaluate("""() => { const draw = MockDraw.draw; window.drawn = [];
+        MockDraw.draw = function () { const test = draw.apply(this, arguments); drawn.push(test.seed); return test; }; }""")
+    with page.expect_request(lambda r: "/_static/questions/" in r.url):
+        button.click()
+    assert button.is_disabled()
+    assert held, "no data file was held back"
+    assert page.locator(".mock-status").inner_text() == "Loading the questions…"
+    button.click(force=True)
+    assert len(page.evaluate("drawn")) == 1
+    release()
+    page.locator(".mock-q").first.wait_for()
+    kept = page.evaluate(KEPT)
+    assert page.evaluate("drawn") == [kept["seed"]]
+    assert page.locator(".mock-q").count() == len(kept["questions"])
+    assert page.locator(".mock-status").inner_text() == ""

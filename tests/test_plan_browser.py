@@ -11,6 +11,7 @@ variant 0; templates are picked from the page's embedded list, so the bank can g
 
 from __future__ import annotations
 
+import itertools
 import json
 import math
 import subprocess
@@ -279,7 +280,7 @@ def test_a_fresh_students_start_serves_a_card_of_every_type_in_turn(context):
         page.wait_for_load_state("load")
         cards = json.loads(page.evaluate("localStorage.getItem('dynamics-review-v1')"))["cards"]
         assert len(cards) == NEXT and len({c["id"] for c in served + cards}) == len(served) + NEXT
-        assert all(a["type"] != b["type"] for a, b in zip(cards, cards[1:], strict=False)), cards
+        assert all(a["type"] != b["type"] for a, b in itertools.pairwise(cards)), cards
         served += cards
         # each tried (a Check with nothing written is no attempt: record them as the page does)
         page.evaluate("""(cards) => cards.forEach((c, i) => ProgressStore.recordAttempt({question: c.id,
@@ -330,3 +331,12 @@ def test_a_real_version_1_export_imports_into_version_2_with_every_attempt_kept(
     assert saved["version"] == 2 and saved["book"] == "dynamics"
     assert saved["sha256"] == progress_checksum(saved["attempts"])
     assert set(saved["schedule"]) == {a["question"] for a in saved["attempts"]}
+
+
+def test_the_landing_page_links_your_practice_and_the_mock_test_in_its_first_screen(context):
+    page = _open(context, "/book/intro.html")
+    for name, target in (("Your practice", "your-practice.html"), ("the mock test", "mock-test.html")):
+        link = page.locator("main, article").first.get_by_role("link", name=name, exact=True).first  # the first of the page
+        assert link.get_attribute("href").endswith(f"exam/{target}")
+        box = link.bounding_box()
+        assert box and box["y"] + box["height"] <= PHONE["height"], f"{name} is below the first screen: {box}"

@@ -232,7 +232,7 @@ def assert_what_next(page, test: dict, marks: list[int], available: list[int]) -
     assert line.get_attribute("data-type") == weakest
     title = next(t["title"] for t in index["types"] if t["key"] == weakest)
     got, out_of = by_type[weakest]
-    assert f"your weakest type in this test was {title} ({got}/{out_of} mark" in line.inner_text()
+    assert f"practise your weakest type in this test, {title} ({got}/{out_of} mark" in line.inner_text()
     assert line.get_by_role("link", name=title).get_attribute("href").split("#")[0].endswith(".html")
     return weakest
 
@@ -514,3 +514,13 @@ def test_a_second_tap_while_the_questions_load_starts_nothing_more(student):
     assert page.evaluate("drawn") == [kept["seed"]]
     assert page.locator(".mock-q").count() == len(kept["questions"])
     assert page.locator(".mock-status").inner_text() == ""
+
+
+def test_without_javascript_the_page_says_so_and_offers_no_button(browser, base_url):
+    context = browser.new_context(java_script_enabled=False)
+    page = context.new_page()
+    page.goto(f"{base_url}/{PAGE}")
+    assert page.locator(".mock-needs-js").is_visible()
+    assert "with JavaScript on" in page.locator(".mock-needs-js").inner_text()
+    assert not page.locator(".mock-start").is_visible()
+    context.close()

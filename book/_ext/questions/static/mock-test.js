@@ -101,22 +101,21 @@
     if (weakest) {
       var links = next.types[weakest.type.key] || {};
       p.setAttribute("data-type", weakest.type.key);
-      add(" your weakest type in this test was ");
+      add(" practise your weakest type in this test, ");
       add(links.practise ? link(links.practise, weakest.type.title) : weakest.type.title);
-      add(" (" + engine.marksText(weakest.earned, weakest.available) + ").");
-      if (links.practise) add(" Practise it on its page.");
+      add(" (" + engine.marksText(weakest.earned, weakest.available) + ")");
       if (links.method) {
-        add(" Its method: ");
-        add(link(links.method, "how to do this type"));
-        add(".");
+        add(", after reading ");
+        add(link(links.method, "how to do it"));
       }
+      add(".");
     } else {
       add(" every mark in this test. Try a longer one.");
     }
     if (next.practice) {
       add(" ");
       add(link(next.practice, "Your practice"));
-      add(" serves your cards due, this test's questions among them.");
+      add(" brings this test's questions back when they are due.");
     }
     return p;
   }

@@ -282,7 +282,6 @@
     function finish(ended) {
       clearTimeout(timer);
       warning.textContent = ""; // "1 minute left." is over once the test is
-
       if (!state.ended) {
         state.ended = ended;
         state.endedAt = Date.now();

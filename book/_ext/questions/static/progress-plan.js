@@ -9,7 +9,8 @@
  *   {version: 1, home: URL of Your practice, at (ms), position: index of the card served,
  *    cards: [{id, type, url}]}
  * the cards due today, then the next ones (new cards from every type in turn, then the soonest
- * due), each run interleaved across types (never two of a type together while another waits). review.js, on the pages that serve the cards, moves along it. */
+ * due), each run interleaved across types (never two of a type together while another waits).
+ * review.js, on the pages that serve the cards, moves along it. */
 (function (root) {
   "use strict";
 

@@ -1,8 +1,9 @@
 /* Start's review, on the pages that serve its cards (a question's page, the self-test's): the
  * card being served says "Card 2 of 7" at its top from the start; after its Check
  * (questions.js's "q-checked") or its self-test mark (selftest.js's "st-marked"), a line
- * below it offers the next card, or, after the last, the way back to Your practice. The queue is progress-plan.js's, in localStorage
- * "dynamics-review-v1" ({home, position, cards: [{id, type, url}]}). Plain JavaScript, offline. */
+ * below it offers the next card, or, after the last, the way back to Your practice. The queue
+ * is progress-plan.js's, in localStorage "dynamics-review-v1" ({home, position, cards: [{id,
+ * type, url}]}). Plain JavaScript, offline. */
 (function () {
   "use strict";
 

@@ -15,6 +15,7 @@ And the clock: its text, and the warnings a screen reader hears once each."""
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import sys
 from collections import Counter
@@ -81,6 +82,36 @@ def test_a_test_takes_the_papers_pace(drawn):
         assert test["minutes"] == pytest.approx(PACE[test["paper"]] * test["size"])
     assert {(t["paper"], t["size"], t["minutes"]) for t in drawn} >= {("1", 10, 18.75), ("1", 20, 37.5),
                                                                        ("2", 20, 25)}
+
+
+#: 9702's papers (the syllabus, "Assessment overview"): Paper 1, 40 multiple-choice questions in
+#: 1 hour 15 minutes; Paper 2, 60 marks of structured questions in 1 hour 15 minutes.
+PAPERS = {"1": (40, "questions", 75), "2": (60, "marks", 75)}
+FRACTIONS = {"": 0, "¼": 0.25, "½": 0.5, "¾": 0.75}
+
+
+def _minutes(text: str) -> float:
+    """ "18¾" as 18.75."""
+    whole, part = re.fullmatch(r"(\d*)([¼½¾]?)", text).groups()
+    return int(whole or 0) + FRACTIONS[part]
+
+
+def test_the_page_states_each_papers_pace_as_the_test_takes_it(drawn):
+    """The mock page's pace sentence says the real paper's timing and the pace it gives, a
+    question or a mark, and each length the setup offers with the minutes the draw allows."""
+    text = " ".join((ROOT / "book" / "exam" / "mock-test.md").read_text().split())
+    allowed = {(t["paper"], t["size"]): t["minutes"] for t in drawn}
+    for paper, (count, unit, minutes) in PAPERS.items():
+        assert PACE[paper] == minutes / count
+        bullet = re.search(rf"\*\*Paper {paper} style\*\*: (.*?)(?: - \*\*|```)", text).group(1)
+        assert f"Paper {paper} has {count} {unit}" in bullet, bullet
+        seconds = PACE[paper] * 60
+        pace = (f"{int(seconds // 60)} minute {int(seconds % 60)}½ seconds a question" if paper == "1"
+                else "1¼ minutes a mark")
+        assert pace in bullet and (seconds % 60 == 52.5 if paper == "1" else seconds == 75), bullet
+        stated = {int(size): _minutes(m) for size, m in re.findall(r"(\d+)(?: \w+)? in (\d*[¼½¾]?) minutes", bullet)}
+        assert stated == {size: allowed[(paper, size)] for size in SIZES[paper]}, stated
+    assert "Each 9702 paper gives you 1 hour 15 minutes" in text
 
 
 def test_a_test_asks_its_papers_templates_to_its_size_exactly(drawn):

@@ -13,8 +13,13 @@ page's clock in the test's hands (Playwright's page.clock):
 - the result is kept (ProgressStore: the mock in the contract's shape, each answered question
   an attempt of the mock), once;
 - it works from the built folder opened as files, and offline after one visit;
-- axe finds nothing, light or dark, in the test and in its result.
-Everything expected is read from the variant data the site ships and the engine itself."""
+- axe finds nothing, light or dark, in the test and in its result;
+- no help in a test (an exam): no "Show a step";
+- the result: no "1 minute left." after the time ran out, "Not answered" for a blank, the right
+  letter of a multiple-choice question not answered right, and what next (the weakest type of
+  the test, linked to its practice page).
+Everything expected is read from the variant data the site ships and the engine itself.
+Starting a test on a slow first visit, and the mistakes a test keeps: test_mock_start_browser.py."""
 
 from __future__ import annotations
 
@@ -132,6 +137,7 @@ def assert_no_feedback(page) -> None:
         "els => els.map(e => e.textContent.trim())")
     assert not any(texts), texts
     assert page.locator(".mock-q .q-worked, .mock-q .q-scheme, .mock-q button.q-check").count() == 0
+    assert page.locator(".mock-q .q-help, .mock-q button.q-step").count() == 0  # no help in an exam
     assert not page.locator(".mock-result").is_visible()
     assert not re.search(r"\d+/\d+ marks?|✓|✗", page.locator(".mock").inner_text())
 
@@ -157,6 +163,9 @@ def assert_marked(page, test: dict, given: dict[int, dict], ended: str) -> None:
         assert page.locator(f'.mock-types li[data-type="{kind}"] .mock-type-marks').inner_text() == \
             f"{got}/{out_of} mark{'' if out_of == 1 else 's'}"
     assert page.locator(".mock-types li").count() == len(by_type)
+    assert_feedback(page, test, given)
+    assert page.locator(".mock-warning").text_content() == ""  # the warnings are over with the test
+    weakest = assert_what_next(page, test, marks, available)
     worked = page.locator(".mock-q details.q-worked")
     assert worked.count() == len(test["questions"])
     worked.first.locator("summary").click()
@@ -179,6 +188,50 @@ def assert_marked(page, test: dict, given: dict[int, dict], ended: str) -> None:
     page.locator(".mock-result").wait_for()
     assert f"{earned}/{sum(available)} marks" in page.locator(".mock-score").inner_text()
     assert len(page.evaluate("ProgressStore.load().progress")["mocks"]) == 1
+    if weakest:  # its link opens a question of that type
+        page.locator(".mock-next a").first.click()
+        page.wait_for_load_state("load")
+        anchor = page.evaluate("location.hash").removeprefix("#question-")
+        assert page.locator(f'form.q-form[data-question="{anchor}"]').get_attribute("data-type") == weakest
+
+
+def assert_feedback(page, test: dict, given: dict[int, dict]) -> None:
+    """Each part's line: "Not answered." for a blank part (not the prompt to choose); a
+    multiple-choice part not answered right names the right letter."""
+    for index, variant in enumerate(variants(page, test)):
+        for part in variant["parts"]:
+            text = page.locator(f'.mock-q[data-index="{index}"] [data-part="{part["id"]}"] .q-feedback').inner_text()
+            letter = f" The answer is {part['answer']}." if part["kind"] == "mcq" else ""
+            if index not in given:
+                assert text == f"✗ Not answered.{letter}", text
+            elif part["kind"] == "mcq" and given[index][part["id"]]["choice"] != part["answer"]:
+                assert text.startswith("✗ ") and text.endswith(letter), text
+            elif part["kind"] == "mcq":
+                assert text.startswith("✓ ") and "The answer is" not in text, text
+
+
+def assert_what_next(page, test: dict, marks: list[int], available: list[int]) -> str | None:
+    """What next: the type with the lowest share of its marks in this test (on a tie, the one
+    that lost more, then the first in the book), linked to its practice page. Its key."""
+    index = page.evaluate("JSON.parse(document.querySelector('script.mock-index').textContent)")
+    order = [t["key"] for t in index["types"]]
+    by_type: dict[str, list[int]] = {}
+    for q, got, out_of in zip(test["questions"], marks, available, strict=True):
+        line = by_type.setdefault(q["type"], [0, 0])
+        line[0], line[1] = line[0] + got, line[1] + out_of
+    lost = [(got / out_of, got - out_of, order.index(kind), kind) for kind, (got, out_of) in by_type.items()
+            if got < out_of]
+    line = page.locator(".mock-next")
+    assert line.inner_text().startswith("What next:")
+    if not lost:
+        return None
+    weakest = min(lost)[3]
+    assert line.get_attribute("data-type") == weakest
+    title = next(t["title"] for t in index["types"] if t["key"] == weakest)
+    got, out_of = by_type[weakest]
+    assert f"practise your weakest type in this test, {title} ({got}/{out_of} mark" in line.inner_text()
+    assert line.get_by_role("link", name=title).get_attribute("href").split("#")[0].endswith(".html")
+    return weakest
 
 
 def test_paper_1_resumes_after_a_reload_and_ends_itself_when_time_is_up(student):
@@ -336,3 +389,4 @@ def test_a_graph_in_a_mock_test_is_read_by_its_cursor(student):
         slider.press("Home")
         slider.press("Home")
         assert said.text_content().startswith("Start of the time axis: t = "), said.text_content()
+

@@ -150,7 +150,7 @@ def _plan_start_and_a_definition_card(page, self_test: str) -> None:
     """On Your practice: the plan is worked out (ts-fsrs and the schedule load), Start serves
     its first card with new numbers and the review line; then the self-test opens one card,
     whose mark is kept as an attempt at that card."""
-    page.wait_for_function("document.querySelector('.pp-due-text').textContent.includes('due today')")
+    page.wait_for_function("document.documentElement.classList.contains('pp-planned')")  # progress-plan.js ran
     assert "Weakest type:" in page.locator(".pp-weakest").inner_text()
     page.get_by_role("button", name="Start", exact=True).click()
     page.wait_for_url(lambda url: "#question-" in url)

@@ -11,7 +11,9 @@ variant 0; templates are picked from the page's embedded list, so the bank can g
 
 from __future__ import annotations
 
+import itertools
 import json
+import math
 import subprocess
 from datetime import UTC, datetime, timedelta
 from pathlib import Path
@@ -32,6 +34,7 @@ PHONE = {"width": 390, "height": 844}
 # A school morning, in UTC (Chromium's zone here): the plan's "today" ends at midnight.
 MORNING = datetime(2026, 11, 26, 9, 0, tzinfo=UTC)
 AGAIN, HARD, GOOD, EASY = 1, 2, 3, 4
+NEXT = 5  # the cards Start serves after those due (progress-plan.js)
 
 # ts-fsrs called directly: each card's due date after its reviews ([[at, rating], ...]).
 FSRS_IN_NODE = """
@@ -181,8 +184,18 @@ def test_ratings_and_due_dates_follow_fsrs_and_the_wrong_one_comes_back_first(co
     assert due["wrong"] < due["partly"] < due["right"]
     assert due["wrong"] == min(due.values())
 
-    # the page says so: three due today (right was Easy: days away), the weakest type, the mistake
-    assert page.locator(".pp-due-text").inner_text().startswith("3 cards due today")
+    # the page says so: the wrong one due now; helped and partly come back in minutes, later
+    # today (FSRS's learning steps), so they are not "due today" yet; right (Easy) days away
+    now = page.evaluate("Date.now()")
+    assert due["wrong"] <= now < min(due["helped"], due["partly"])
+    back = math.ceil((min(due["helped"], due["partly"]) - now) / 60_000)
+    assert back <= 10
+    assert page.locator(".pp-due-text").inner_text() == (
+        f"1 card due today, then {NEXT} more. 2 cards come back later today, the next in {back} minutes.")
+    helped = page.locator(f'li[data-key="{key["helped"]}"] .pp-marks').text_content()
+    assert helped.endswith(f", back in {math.ceil((due['helped'] - now) / 60_000)} minutes)"), helped
+    assert page.locator(f'li[data-key="{key["wrong"]}"] .pp-marks').text_content().endswith(", due today)")
+    assert page.locator(f'.pp-type[data-type="{chosen["helped"][1]}"] .pp-line').text_content().endswith(" · 1 due")
     mistake = next(m for m in bank.TEMPLATES[key["partly"]].variant(0).parts[0].mistakes
                    if m.unit is None and m.direction is None)
     assert page.locator(".pp-often").inner_text().startswith(f"Most frequent mistake: {mistake.name} (once).")
@@ -225,10 +238,16 @@ def test_start_serves_the_due_cards_interleaved_each_with_new_numbers_then_back(
         bar = page.locator(".rv-bar")
         if card["id"].startswith("definition:"):
             item = page.locator(f"#st-card-{card['id'].split(':', 1)[1]}")
+            assert item.locator(".rv-count").inner_text() == f"Card {position + 1} of {len(cards)}"
             item.locator(".st-reveal").click()
             item.get_by_role("button", name="I knew it").click()
         else:
             form = page.locator(f'form.q-form[data-question="{card["id"]}"]')
+            # which card this is, at the top of its question, from the start
+            count = form.locator("xpath=ancestor::section[contains(@class, 'q')][1]").locator(".rv-count")
+            assert count.inner_text() == f"Card {position + 1} of {len(cards)}"
+            assert count.is_visible() and count.bounding_box()["y"] < form.bounding_box()["y"]
+            assert not bar.count()  # the way on comes after the Check
             if form.locator("button.q-new").count():  # new numbers: not the ones shown before
                 page.wait_for_function(
                     f"document.querySelector('form.q-form[data-question=\"{card['id']}\"]').dataset.variant !== '0'")
@@ -245,6 +264,29 @@ def test_start_serves_the_due_cards_interleaved_each_with_new_numbers_then_back(
     served = {a["question"] for a in progress["attempts"] if a["at"] == later}
     assert due <= served  # each due card answered again, on the numbers Start gave
     assert {c["id"] for c in cards if c["id"].startswith("definition:")} <= served
+
+
+def test_a_fresh_students_start_serves_a_card_of_every_type_in_turn(context):
+    """New cards come from every type, not the book's first two: a fresh student's first
+    sessions (Start, each card tried) serve every type within the first seven cards, and no two
+    of a type together (CLARIFICATIONS, "Start's queue")."""
+    page = _open(context, PROGRESS)
+    data = json.loads(page.locator("script.pp-data").text_content())
+    types = {kind["type"] for kind in data["types"] if any(t["page"] for t in kind["templates"])}
+    served = []
+    while len(served) < len(types):
+        page.get_by_role("button", name="Start", exact=True).click()
+        page.wait_for_url(lambda url: PROGRESS not in url)  # the first card's page
+        page.wait_for_load_state("load")
+        cards = json.loads(page.evaluate("localStorage.getItem('dynamics-review-v1')"))["cards"]
+        assert len(cards) == NEXT and len({c["id"] for c in served + cards}) == len(served) + NEXT
+        assert all(a["type"] != b["type"] for a, b in itertools.pairwise(cards)), cards
+        served += cards
+        # each tried (a Check with nothing written is no attempt: record them as the page does)
+        page.evaluate("""(cards) => cards.forEach((c, i) => ProgressStore.recordAttempt({question: c.id,
+            type: c.type, variant: 0, earned: 1, available: 1, at: Date.now() - i, mistakes: []}))""", cards)
+        page.goto(context.base + PROGRESS, wait_until="load")
+    assert {c["type"] for c in served[:len(types)]} == types
 
 
 def test_the_first_screen_shows_the_plan_and_the_page_is_at_most_two_screens(context):
@@ -290,3 +332,12 @@ def test_a_real_version_1_export_imports_into_version_2_with_every_attempt_kept(
     assert saved["version"] == 2 and saved["book"] == "dynamics"
     assert saved["sha256"] == progress_checksum(saved["attempts"])
     assert set(saved["schedule"]) == {a["question"] for a in saved["attempts"]}
+
+
+def test_the_landing_page_links_your_practice_and_the_mock_test_in_its_first_screen(context):
+    page = _open(context, "/book/intro.html")
+    for name, target in (("Your practice", "your-practice.html"), ("the mock test", "mock-test.html")):
+        link = page.locator("main, article").first.get_by_role("link", name=name, exact=True).first  # the first of the page
+        assert link.get_attribute("href").endswith(f"exam/{target}")
+        box = link.bounding_box()
+        assert box and box["y"] + box["height"] <= PHONE["height"], f"{name} is below the first screen: {box}"

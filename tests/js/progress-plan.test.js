@@ -60,20 +60,138 @@ test("Start serves the cards due today, interleaved, then the next ones: new fir
   ];
   const q = Plan.queue(data, byDue);
   assert.equal(q.due, 3);
+  // then the new ones, the least practised type first (no definition tried yet)
   assert.deepEqual(
     q.cards.map((c) => c.id),
-    ["d1", "t1", "d2", "t2", "definition:mass"],
+    ["d1", "t1", "d2", "definition:mass", "t2"],
   );
   assert.equal(q.cards[0].url, "p.html?new=d1#question-d1");
-  assert.equal(q.cards[4].url, "defs.html?card=mass#st-card-mass");
+  assert.equal(q.cards[3].url, "defs.html?card=mass#st-card-mass");
   // nothing due: the new cards, then the soonest due of the rest; never more than NEXT
   const later = Plan.queue(data, [{ id: "t2", type: "two-d", due: 9, today: false }]);
   assert.equal(later.due, 0);
   assert.deepEqual(
     later.cards.map((c) => c.id),
-    ["d1", "t1", "d2", "definition:mass", "t2"],
+    ["d1", "t1", "definition:mass", "d2", "t2"],
   );
+  // a card coming back in minutes is neither due nor one of the next: it waits for its time
+  const soon = Plan.queue(data, [{ id: "t2", type: "two-d", due: 9, today: false, soon: true }]);
+  assert.ok(!soon.cards.some((c) => c.id === "t2"));
   assert.ok(later.cards.length <= Plan.NEXT);
+});
+
+// A book of seven types in book order, as the Dynamics bank has them (the first two largest
+// but one), and the self-test's definitions sharing the "definitions" type.
+const SIZES = {
+  newton: 14,
+  drag: 15,
+  "force-momentum": 13,
+  definitions: 9,
+  "momentum-line": 7,
+  elastic: 9,
+  "two-d": 7,
+};
+const book = {
+  types: Object.entries(SIZES).map(([type, n]) => ({
+    type,
+    name: type,
+    templates: Array.from({ length: n }, (_, i) => ({
+      key: `${type}-${i}`,
+      title: "",
+      marks: 3,
+      page: "p.html",
+      see: {},
+    })),
+  })),
+  generic: {},
+  sections: {},
+  definitions: { page: "defs.html", cards: Array.from({ length: 8 }, (_, i) => ({ slug: `def-${i}`, term: "" })) },
+};
+
+// Adjacent pairs of one type: never more than the fewest any order of these cards can have.
+function clumps(cards) {
+  return cards.filter((c, i) => i > 0 && c.type === cards[i - 1].type).length;
+}
+function fewestClumps(cards) {
+  const n = {};
+  cards.forEach((c) => (n[c.type] = (n[c.type] || 0) + 1));
+  const most = Math.max(0, ...Object.values(n));
+  return Math.max(0, most - (cards.length - most) - 1);
+}
+
+test("a fresh student's new cards come from every type, session after session", () => {
+  const served = [];
+  let byDue = [];
+  const types = Object.keys(SIZES);
+  for (let session = 0; session < 4; session++) {
+    const q = Plan.queue(book, byDue);
+    assert.equal(q.due, 0);
+    assert.equal(q.cards.length, Plan.NEXT);
+    assert.equal(clumps(q.cards), 0, q.cards.map((c) => c.type).join(" "));
+    served.push(...q.cards);
+    // the student does them all; they come back days later (reviews, not due today)
+    byDue = byDue.concat(q.cards.map((c) => ({ id: c.id, type: c.type, due: 1e15, today: false, soon: false })));
+  }
+  assert.deepEqual(new Set(served.slice(0, types.length).map((c) => c.type)), new Set(types));
+  assert.equal(new Set(served.map((c) => c.id)).size, served.length); // each new card once
+  // no type has two more cards served than another
+  const n = {};
+  served.forEach((c) => (n[c.type] = (n[c.type] || 0) + 1));
+  assert.ok(Math.max(...Object.values(n)) - Math.min(...Object.values(n)) <= 1, JSON.stringify(n));
+});
+
+test("the queue looks ahead: the type with most cards left goes first, so the end does not clump", () => {
+  const cards = ["b", "c", "a", "a"].map((type, i) => ({ id: String(i), type }));
+  assert.equal(types(Plan.interleave(cards, null)), "a b c a");
+  // due cards in due order ending in a clump of one type are served mixed
+  const byDue = ["t1", "d1", "d2"].map((id, i) => ({
+    id,
+    type: id[0] === "t" ? "two-d" : "drag",
+    due: i,
+    today: true,
+  }));
+  assert.deepEqual(
+    Plan.queue(data, byDue)
+      .cards.slice(0, 3)
+      .map((c) => c.id),
+    ["d1", "t1", "d2"],
+  );
+  // and over many shuffled lists: never a clump that another order avoids, nothing lost
+  let seed = 7;
+  const random = () => (seed = (seed * 16807) % 2147483647) / 2147483647;
+  for (let trial = 0; trial < 500; trial++) {
+    const list = Array.from({ length: 1 + Math.floor(random() * 12) }, (_, i) => ({
+      id: String(i),
+      type: "abcd"[Math.floor(random() * random() * 4)],
+    }));
+    const out = Plan.interleave(list, null);
+    assert.equal(clumps(out), fewestClumps(list), `${types(list)} -> ${types(out)}`);
+    assert.deepEqual(out.map((c) => c.id).sort(), list.map((c) => c.id).sort());
+    for (const type of "abcd") {
+      // within a type, the given order (soonest due first) is kept
+      const ids = (l) => l.filter((c) => c.type === type).map((c) => c.id);
+      assert.deepEqual(ids(out), ids(list));
+    }
+  }
+});
+
+test("the plan's line: cards coming back in minutes are not due today", () => {
+  const back = (due, now) => `in ${(due - now) / 60000} minutes`;
+  const served = { due: 1, cards: [{}, {}, {}] };
+  const byDue = [
+    { id: "a", due: 0, today: true, soon: false },
+    { id: "b", due: 5 * 60000, today: false, soon: true },
+    { id: "c", due: 6 * 60000, today: false, soon: true },
+  ];
+  assert.equal(
+    Plan.dueLine(served, byDue, 0, back),
+    "1 card due today, then 2 more. 2 cards come back later today, the next in 5 minutes.",
+  );
+  assert.equal(
+    Plan.dueLine({ due: 0, cards: [{}] }, byDue.slice(2), 0, back),
+    "Nothing due yet: Start serves 1 new. 1 card comes back in 6 minutes.",
+  );
+  assert.equal(Plan.dueLine({ due: 0, cards: [] }, [], 0, back), "No cards due today.");
 });
 
 test("the weakest type: the lowest share of marks over its tried templates, best attempt each", () => {

@@ -28,6 +28,9 @@ from . import form, store
 DIRECTIVE = "mock-test"
 NEEDS_BROWSER = ("The mock test runs in your web browser: open this page in the web version of the book, "
                  "with JavaScript on, to take one.")
+#: What the setup says until its script has come and can start a test (Start the test is
+#: disabled till then: a tap before would send the form and reload the page).
+GETTING_READY = "Getting the test ready…"
 #: The scripts the page runs, after the engine's (as a question's page loads them) and the
 #: store that keeps the result (progress-store.js): the shared relabelling and draws, then the
 #: page's own.
@@ -66,6 +69,29 @@ def index_of(topics, placed: set[str]) -> dict:
     return {"types": types, "templates": templates}
 
 
+def what_next_links(app, fromdoc: str) -> dict:
+    """Where the result's "What next" sends a student, relative to fromdoc: each type's practice
+    page (the page placing most of its templates, the first in the book on a tie, at its first
+    question of the type) and method page, and Your practice."""
+    env, config = app.env, app.config
+    pages: dict[str, dict[str, list[str]]] = {}  # type -> page -> its templates of the type
+    for docname in store.book_order(env, config.root_doc):
+        for key in store.templates_used(env).get(docname, []):
+            pages.setdefault(store.template(config, key).type, {}).setdefault(docname, []).append(key)
+    uri = app.builder.get_relative_uri
+    types = {}
+    for topic in store.topics(config):
+        for kind in topic.types:
+            placed = pages.get(kind.key)
+            if not placed:
+                continue
+            page = max(placed, key=lambda doc: len(placed[doc]))  # the first of the most: max keeps it
+            types[kind.key] = {"practise": f"{uri(fromdoc, page)}#question-{placed[page][0]}",
+                               "method": uri(fromdoc, kind.method) if kind.method in env.all_docs else None}
+    practice = sorted(store.docs(env, "practice-progress"))
+    return {"types": types, "practice": uri(fromdoc, practice[0]) if practice else None}
+
+
 #: The controls (hidden until the script runs): the paper and length to choose, the clock and
 #: Finish now (with its confirm step), the polite warnings, the questions, the result.
 PAGE = """\
@@ -79,8 +105,8 @@ PAGE = """\
 <label class="mock-paper"><input type="radio" name="mock-paper" value="2"> Paper 2 style: structured questions</label>
 </fieldset>
 <label class="mock-length" for="mock-size">Length <select id="mock-size" name="size"></select></label>
-<div class="mock-buttons"><button type="submit" class="mock-start">Start the test</button></div>
-<p class="mock-status" role="status"></p>
+<div class="mock-buttons"><button type="submit" class="mock-start" disabled>Start the test</button></div>
+<p class="mock-status" role="status">{getting_ready}</p>
 </form>
 <div class="mock-result" hidden tabindex="-1"></div>
 <div class="mock-test" hidden>
@@ -100,16 +126,18 @@ PAGE = """\
 
 
 def visit_mock_test(self, node):
-    index = json.dumps(mock_index(self.builder.env, self.builder.config), ensure_ascii=False,
-                       separators=(",", ":")).replace("</", "<\\/")
+    index = {**mock_index(self.builder.env, self.builder.config), "next": node.get("next", {"types": {}})}
+    index = json.dumps(index, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
     self.body.append(PAGE.format(enlarge=escape(form.ENLARGE), hint=escape(form.UNIT_HINT), rules=form.rules_script(),
-                                 index=index, needs=escape(NEEDS_BROWSER)))
+                                 index=index, needs=escape(NEEDS_BROWSER), getting_ready=escape(GETTING_READY)))
     raise nodes.SkipNode
 
 
 def fill(app, doctree, docname):
-    if app.builder.format != "html":
-        for node in list(doctree.findall(mock_test)):
+    for node in list(doctree.findall(mock_test)):
+        if app.builder.format == "html":
+            node["next"] = what_next_links(app, docname)
+        else:
             node.parent.remove(node)
 
 

@@ -123,7 +123,9 @@ def _plan_html() -> list[str]:
             "<p>Each question and each definition of the self-test is a card. A card you answer comes back when "
             "you are about to forget it (the FSRS schedule, as Anki uses): soon when you lost marks, later when "
             "you were right. Using help makes it Hard at best; right first time at the exam's pace (1.25 minutes "
-            "a mark) makes it Easy. Start serves the cards due today, mixing the types, then new ones. The "
+            "a mark) makes it Easy. A card you got wrong comes back within minutes: the plan says when. Start "
+            "serves the cards due today, then new ones from every type in turn, never two of a type together "
+            "while another type waits. The "
             "weakest type is the one with the lowest share of the marks over the questions you tried, counting "
             "your best attempt at each.</p></details></section>")]
 

@@ -147,6 +147,32 @@
     return due;
   }
 
+  // ------------------------------------------------------------------------------ the result
+
+  /* The type a test's result shows weakest, for its "What next": the lowest share of its marks
+   * (questions: [{type, earned, available}], the mock as the store keeps it); on a tie, the one
+   * that lost more marks, then the first in the book (types: the index's, in book order).
+   * {type (the index's entry), earned, available}, or null when every mark was earned. */
+  function weakestType(types, questions) {
+    var byType = {};
+    questions.forEach(function (q) {
+      var line = (byType[q.type] = byType[q.type] || { earned: 0, available: 0 });
+      line.earned += q.earned;
+      line.available += q.available;
+    });
+    var weakest = null;
+    types.forEach(function (type) {
+      var line = byType[type.key];
+      if (!line || line.earned >= line.available) return;
+      var share = line.earned / line.available,
+        lost = line.available - line.earned;
+      if (!weakest || share < weakest.share || (share === weakest.share && lost > weakest.lost)) {
+        weakest = { type: type, earned: line.earned, available: line.available, share: share, lost: lost };
+      }
+    });
+    return weakest && { type: weakest.type, earned: weakest.earned, available: weakest.available };
+  }
+
   var api = {
     PAPERS: PAPERS,
     WARNINGS: WARNINGS,
@@ -156,6 +182,7 @@
     timeLeft: timeLeft,
     clockText: clockText,
     warningDue: warningDue,
+    weakestType: weakestType,
     DrawError: Draw.DrawError,
   };
   if (typeof module !== "undefined" && module.exports) module.exports = api;

@@ -79,8 +79,9 @@
       if (variant.graph.cursor && root.GraphCursor) root.GraphCursor.add(opener);
     }
     var form = section.querySelector("form.q-form");
-    // marked at the end only: no Check, New numbers, Clear or score line during the test
-    Array.prototype.forEach.call(form.querySelectorAll(".q-buttons, .q-score"), function (el) {
+    // marked at the end only: no Check, New numbers, Clear or score line during the test; and,
+    // as in the exam, no help (Show a step)
+    Array.prototype.forEach.call(form.querySelectorAll(".q-buttons, .q-score, .q-help"), function (el) {
       el.remove();
     });
     form.setAttribute("data-variant", String(question.variant));
@@ -131,11 +132,29 @@
     });
   }
 
+  // A part's answer has something in it (a choice, a value or a unit).
+  function partAnswered(a) {
+    return !!(a && (a.choice || (a.value || "").trim() || (a.unit || "").trim()));
+  }
+
   function answered(answers) {
     return Object.keys(answers).some(function (id) {
-      var a = answers[id];
-      return !!(a.choice || (a.value || "").trim() || (a.unit || "").trim());
+      return partAnswered(answers[id]);
     });
+  }
+
+  /* A part's feedback at the end of a test: "Not answered" for a blank (not the engine's
+   * prompt to choose or type, which is for a question still being answered), else the
+   * engine's message with what was lost; a multiple-choice part not right says the right
+   * letter, as the worked answer would. */
+  function feedbackText(m, part, right) {
+    var r = m.marked.results[part.id];
+    var blank = !partAnswered(m.answers[part.id]);
+    var lost = blank ? "" : engine.lostText(m.variant, m.marked.marks, part.id);
+    var text = (right ? "✓ " : "✗ ") + (blank ? "Not answered." : Notation.joinUnits(r.message));
+    if (lost) text += " " + lost;
+    if (part.kind === "mcq" && !right) text += " The answer is " + part.answer + ".";
+    return text;
   }
 
   /* A question's marks, each part's feedback and its worked answer, under its answers. */
@@ -146,9 +165,8 @@
         r = m.marked.results[part.id],
         got = m.marked.marks.byPart[part.id];
       var right = got[0] === got[1] && r.code !== "wrong";
-      var lost = engine.lostText(m.variant, m.marked.marks, part.id);
       var feedback = partBoxEl.querySelector(".q-feedback");
-      feedback.textContent = (right ? "✓ " : "✗ ") + Notation.joinUnits(r.message) + (lost ? " " + lost : "");
+      feedback.textContent = feedbackText(m, part, right);
       feedback.className = "q-feedback " + (right ? "q-right" : "q-wrong");
       feedback.setAttribute("data-code", r.code);
       if (m.variant.parts.length > 1) {

@@ -78,9 +78,57 @@
     return size + " " + unit[size === 1 ? 0 : 1] + " in " + minutesText(Mock.minutesFor(paper, size));
   }
 
+  /* The result's "What next": the weakest type of this test (MockDraw.weakestType) with a link
+   * to its practice page and its method (the build's links: index.next), or, with every mark,
+   * a longer test; and Your practice. A paragraph, built of text and links. */
+  function whatNext(index, mock) {
+    var weakest = Mock.weakestType(index.types, mock.questions);
+    var next = index.next || { types: {} };
+    var p = document.createElement("p");
+    p.className = "mock-next";
+    var strong = document.createElement("strong");
+    strong.textContent = "What next:";
+    p.appendChild(strong);
+    function add(part) {
+      p.appendChild(typeof part === "string" ? document.createTextNode(part) : part);
+    }
+    function link(href, text) {
+      var a = document.createElement("a");
+      a.href = href;
+      a.textContent = text;
+      return a;
+    }
+    if (weakest) {
+      var links = next.types[weakest.type.key] || {};
+      p.setAttribute("data-type", weakest.type.key);
+      add(" practise your weakest type in this test, ");
+      add(links.practise ? link(links.practise, weakest.type.title) : weakest.type.title);
+      add(" (" + engine.marksText(weakest.earned, weakest.available) + ")");
+      if (links.method) {
+        add(", after reading ");
+        add(link(links.method, "how to do it"));
+      }
+      add(".");
+    } else {
+      add(" every mark in this test. Try a longer one.");
+    }
+    if (next.practice) {
+      add(" ");
+      add(link(next.practice, "Your practice"));
+      add(" brings this test's questions back when they are due.");
+    }
+    return p;
+  }
+
   function start() {
     var box = document.querySelector(".mock");
     if (!box) return;
+    if (!Mock || !Questions || !engine || !root.QuestionRelabel) {
+      // a script the test needs did not come: Start the test stays disabled
+      box.querySelector(".mock-status").textContent =
+        "The test could not be loaded. Check your connection, then reload the page.";
+      return;
+    }
     var index = JSON.parse(box.querySelector("script.mock-index").textContent);
     var setup = box.querySelector(".mock-setup"),
       sizeBox = setup.querySelector("#mock-size"),
@@ -94,6 +142,7 @@
     var state = null,
       timer = null,
       forms = [];
+    var startButton = setup.querySelector(".mock-start");
 
     function paperChosen() {
       return setup.querySelector('input[name="mock-paper"]:checked').value;
@@ -216,9 +265,12 @@
           earned: m.marked.marks.earned,
           available: m.marked.marks.available,
           at: now,
+          // each part's named mistake, and the sign, unit and 1 s.f. slips the engine names, as a
+          // question's page records them (questions.js): the plan counts them
           mistakes: m.variant.parts
             .map(function (p) {
-              return m.marked.results[p.id].mistake;
+              var result = m.marked.results[p.id];
+              return result.mistake || engine.slipName(result.code);
             })
             .filter(Boolean),
           mock: mock.id,
@@ -229,6 +281,7 @@
 
     function finish(ended) {
       clearTimeout(timer);
+      warning.textContent = ""; // "1 minute left." is over once the test is
       if (!state.ended) {
         state.ended = ended;
         state.endedAt = Date.now();
@@ -290,6 +343,7 @@
         '<ul class="mock-types">' +
         lines +
         '</ul><p><button type="button" class="mock-again">Take another test</button></p>';
+      result.insertBefore(whatNext(index, mock), result.querySelector(".mock-again").parentNode);
       result.hidden = false;
       marked.forEach(function (m, i) {
         Questions.showMarks(forms[i], m);
@@ -311,7 +365,8 @@
       });
       warning.textContent = "";
       setup.hidden = false;
-      setup.querySelector(".mock-start").focus();
+      startButton.disabled = false;
+      startButton.focus();
     }
 
     // ------------------------------------------------------------------ starting, resuming
@@ -335,11 +390,13 @@
             if (!fresh) dropState();
             state = null;
             setup.hidden = false;
+            startButton.disabled = false;
             return;
           }
           if (fresh) {
             state.at = Date.now(); // the clock starts when the questions are there
             saveState(state);
+            status.textContent = "";
           }
           showQuestions();
           if (state.ended || Mock.timeLeft(state, Date.now()) <= 0) return finish(state.ended || "time");
@@ -366,6 +423,7 @@
         return;
       }
       status.textContent = "Loading the questions…";
+      startButton.disabled = true; // one test at a time: a second tap would draw another
       state = Object.assign(drawn, { version: 1, at: Date.now(), answers: {}, warned: [] });
       run(true);
     });
@@ -390,11 +448,15 @@
     });
 
     offerSizes();
+    // Ready: the page could not start a test before this (mock_test.py writes the button
+    // disabled, with "Getting the test ready…"), so a tap never sent the form.
+    status.textContent = "";
     state = loadState();
     if (state) {
       setup.hidden = true;
-      status.textContent = "";
       run(false);
+    } else {
+      startButton.disabled = false;
     }
   }
 

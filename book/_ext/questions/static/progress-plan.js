@@ -8,8 +8,9 @@
  * Start keeps a review queue in localStorage "dynamics-review-v1":
  *   {version: 1, home: URL of Your practice, at (ms), position: index of the card served,
  *    cards: [{id, type, url}]}
- * the cards due today, then the next ones (new cards never tried, then the soonest due), each
- * run interleaved across types. review.js, on the pages that serve the cards, moves along it. */
+ * the cards due today, then the next ones (new cards from every type in turn, then the soonest
+ * due), each run interleaved across types (never two of a type together while another waits).
+ * review.js, on the pages that serve the cards, moves along it. */
 (function (root) {
   "use strict";
 
@@ -19,21 +20,76 @@
   // After the cards due today, Start serves this many more: enough for a session, not a list.
   var NEXT = 5;
   var DEFINITION = "definition:";
+  var count = Progress.count;
 
-  /* Cards in an order that never puts two of one type together while another type is still
-   * to come: each turn takes the first card (in the given order) of a type other than the
-   * last one served; only when none is left does a type follow itself. lastType: the type
-   * served just before. */
+  function plural(n, one, many) {
+    return count(n) + " " + (n === 1 ? one : many);
+  }
+
+  /* Cards in an order that never puts two of one type together while another type has cards
+   * left (CLARIFICATIONS, "Start's queue"): each turn takes the type with the most cards left
+   * that is not the last one served, and its first card in the given order. Looking ahead
+   * like this leaves no clump of one type at the end that a mix could have avoided; only
+   * when one type has more than half the cards do two of it come together, and then at the
+   * end. On a tie, the type whose next card comes first. lastType: the type served just
+   * before. */
   function interleave(cards, lastType) {
-    var left = cards.slice(),
+    var byType = {},
+      types = [],
       out = [];
-    while (left.length) {
-      var i = 0;
-      while (i < left.length && left[i].type === lastType) i += 1;
-      if (i === left.length) i = 0;
-      var card = left.splice(i, 1)[0];
-      out.push(card);
-      lastType = card.type;
+    cards.forEach(function (card, at) {
+      if (!byType[card.type]) {
+        byType[card.type] = [];
+        types.push(card.type);
+      }
+      byType[card.type].push({ card: card, at: at });
+    });
+    function better(a, b) {
+      var left = byType[a].length - byType[b].length;
+      return left > 0 || (left === 0 && byType[a][0].at < byType[b][0].at);
+    }
+    while (out.length < cards.length) {
+      var take = null;
+      types.forEach(function (type) {
+        if (!byType[type].length || type === lastType) return;
+        if (take === null || better(type, take)) take = type;
+      });
+      if (take === null) take = lastType; // no other type has a card left
+      out.push(byType[take].shift().card);
+      lastType = take;
+    }
+    return out;
+  }
+
+  /* The new cards Start serves, `most` of them, from every type in turn: each turn takes a card
+   * of the type with the fewest cards tried so far (those in `tried`, and those taken here), on
+   * a tie the type with the most new cards left, then the first in the book; its first new
+   * card in book order. So a fresh student meets every type before a second card of any.
+   * fresh: the cards never tried, in book order. */
+  function pickNew(fresh, tried, most) {
+    var byType = {},
+      types = [],
+      done = {},
+      out = [];
+    fresh.forEach(function (card) {
+      if (!byType[card.type]) {
+        byType[card.type] = [];
+        types.push(card.type);
+      }
+      byType[card.type].push(card);
+    });
+    tried.forEach(function (card) {
+      done[card.type] = (done[card.type] || 0) + 1;
+    });
+    while (out.length < most && out.length < fresh.length) {
+      var take = null;
+      types.forEach(function (type) {
+        if (!byType[type].length) return;
+        var fewer = (done[type] || 0) - (done[take] || 0);
+        if (take === null || fewer < 0 || (fewer === 0 && byType[type].length > byType[take].length)) take = type;
+      });
+      out.push(byType[take].shift());
+      done[take] = (done[take] || 0) + 1;
     }
     return out;
   }
@@ -61,23 +117,31 @@
     return { byId: out, order: order };
   }
 
-  /* What Start serves: the cards due today (soonest due first), then NEXT more (cards never
-   * tried, in bank order, then the soonest due), each run interleaved across types.
-   * byDue: Schedule.cardsByDue(progress, now). Cards the build cannot serve are left out. */
+  /* What Start serves: the cards due today (soonest due first), then NEXT more (new cards from
+   * every type in turn, pickNew; when none is left, the soonest due of the rest), each run
+   * interleaved across types. Cards coming back later today (schedule.js: soon) wait for
+   * their time. byDue: Schedule.cardsByDue(progress, now). Cards the build cannot serve are
+   * left out. */
   function queue(data, byDue) {
     var cards = servable(data);
     var tried = {};
     byDue.forEach(function (c) {
       tried[c.id] = true;
     });
-    function card(c) {
-      return cards.byId[c.id];
+    function servableOf(list) {
+      return list
+        .filter(function (c) {
+          return cards.byId[c.id];
+        })
+        .map(function (c) {
+          return cards.byId[c.id];
+        });
     }
-    var due = byDue
-      .filter(function (c) {
-        return c.today && cards.byId[c.id];
-      })
-      .map(card);
+    var due = servableOf(
+      byDue.filter(function (c) {
+        return c.today;
+      }),
+    );
     var fresh = cards.order
       .filter(function (id) {
         return !tried[id];
@@ -85,18 +149,41 @@
       .map(function (id) {
         return cards.byId[id];
       });
-    var later = byDue
-      .filter(function (c) {
-        return !c.today && cards.byId[c.id];
-      })
-      .map(card);
-    // Taken before interleaving, so the new cards come from every type and not the first few.
-    var next = interleave(fresh.concat(later), null).slice(0, NEXT);
+    var later = servableOf(
+      byDue.filter(function (c) {
+        return !c.today && !c.soon;
+      }),
+    );
+    var next = pickNew(fresh, servableOf(byDue), NEXT);
+    next = next.concat(later.slice(0, NEXT - next.length));
     var first = interleave(due, null);
     return {
       due: first.length,
       cards: first.concat(interleave(next, first.length ? first[first.length - 1].type : null)),
     };
+  }
+
+  /* The plan's first line: the cards Start serves (served: queue()), then those coming back
+   * later today (byDue's soon ones: not due yet, so not "due today"), with when the next one
+   * does (backText(due, now): schedule.js's "in 5 minutes", "at 14:05"). */
+  function dueLine(served, byDue, now, backText) {
+    var more = served.cards.length - served.due;
+    var soon = byDue.filter(function (c) {
+      return c.soon;
+    });
+    var text = served.due
+      ? plural(served.due, "card", "cards") + " due today" + (more ? ", then " + count(more) + " more" : "") + "."
+      : (soon.length ? "Nothing due yet" : "No cards due today") +
+        (more ? ": Start serves " + count(more) + " new." : ".");
+    if (!soon.length) return text;
+    var next = backText(soon[0].due, now);
+    return (
+      text +
+      " " +
+      (soon.length === 1
+        ? "1 card comes back " + next + "."
+        : count(soon.length) + " cards come back later today, the next " + next + ".")
+    );
   }
 
   /* The type with the lowest share of marks over its tried templates (the best attempt at
@@ -171,12 +258,14 @@
     QUEUE: QUEUE,
     NEXT: NEXT,
     interleave: interleave,
+    pickNew: pickNew,
     servable: servable,
     queue: queue,
     weakestType: weakestType,
     mostFrequentMistake: mostFrequentMistake,
     mistakeSection: mistakeSection,
     definitionsRecord: definitionsRecord,
+    dueLine: dueLine,
   };
   if (typeof module === "object" && module.exports) module.exports = api;
   else root.PracticePlan = api;
@@ -186,11 +275,6 @@
   if (typeof document === "undefined" || !root.ProgressStore || !root.Schedule) return;
   var Store = root.ProgressStore;
   var Schedule = root.Schedule;
-  var count = Progress.count;
-
-  function plural(n, one, many) {
-    return count(n) + " " + (n === 1 ? one : many);
-  }
 
   function start() {
     var box = document.querySelector(".pp");
@@ -221,12 +305,7 @@
       var now = Date.now();
       var byDue = Schedule.cardsByDue(progress, now);
       served = queue(data, byDue);
-      var more = served.cards.length - served.due;
-      line(".pp-due-text", [
-        served.due
-          ? plural(served.due, "card", "cards") + " due today" + (more ? ", then " + count(more) + " more" : "") + "."
-          : "No cards due today" + (more ? ": Start serves " + count(more) + " new." : "."),
-      ]);
+      line(".pp-due-text", [dueLine(served, byDue, now, Schedule.backText)]);
       startButton.disabled = !served.cards.length;
       var weakest = weakestType(data.types, progress.attempts);
       line(

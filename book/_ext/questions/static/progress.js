@@ -283,7 +283,12 @@
               ", tried " +
               times(entry.attempts) +
               (entry.withHelp ? ", " + times(entry.withHelp) + " with help" : "") +
-              (due[t.key] ? ", " + dueText(due[t.key].due, now, dayEnds) : "") +
+              (due[t.key]
+                ? ", " +
+                  (due[t.key].soon
+                    ? "back " + Schedule.backText(due[t.key].due, now)
+                    : dueText(due[t.key].due, now, dayEnds))
+                : "") +
               ")"
             : "(" + count(t.marks) + " mark" + (t.marks === 1 ? "" : "s") + ", not tried)";
         });

@@ -1,8 +1,9 @@
-/* Start's review, on the pages that serve its cards (a question's page, the self-test's): after
- * the Check of the card being served (questions.js's "q-checked") or its self-test mark
- * (selftest.js's "st-marked"), a line says "Card 2 of 7" and offers the next card, or, after
- * the last, the way back to Your practice. The queue is progress-plan.js's, in localStorage
- * "dynamics-review-v1" ({home, position, cards: [{id, type, url}]}). Plain JavaScript, offline. */
+/* Start's review, on the pages that serve its cards (a question's page, the self-test's): the
+ * card being served says "Card 2 of 7" at its top from the start; after its Check
+ * (questions.js's "q-checked") or its self-test mark (selftest.js's "st-marked"), a line
+ * below it offers the next card, or, after the last, the way back to Your practice. The queue
+ * is progress-plan.js's, in localStorage "dynamics-review-v1" ({home, position, cards: [{id,
+ * type, url}]}). Plain JavaScript, offline. */
 (function () {
   "use strict";
 
@@ -29,12 +30,17 @@
       : document.querySelector('form.q-form[data-question="' + CSS.escape(card.id) + '"]');
     if (!place) return;
     if (!definition) place = place.closest("section.q") || place;
+    var which = "Card " + (queue.position + 1) + " of " + queue.cards.length;
+    var top = document.createElement("p");
+    top.className = "rv-count";
+    top.textContent = which;
+    place.insertAdjacentElement("afterbegin", top);
 
     function show() {
       var last = queue.position + 1 >= queue.cards.length;
       var bar = document.querySelector(".rv-bar") || document.createElement("p");
       bar.className = "rv-bar";
-      bar.textContent = "Card " + (queue.position + 1) + " of " + queue.cards.length + " · ";
+      bar.textContent = which + " · ";
       var go = document.createElement("a");
       go.className = "rv-next";
       go.href = last ? queue.home : queue.cards[queue.position + 1].url;

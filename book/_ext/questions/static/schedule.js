@@ -48,19 +48,44 @@
     return day.getTime();
   }
 
-  /* Every reviewed card, soonest due first: [{id, type, due, state, reps}], and which are due
-   * today (due before the day ends). The schedule is replayed, so it is never stale. */
+  // FSRS's states: a card in its learning or relearning steps comes back in minutes.
+  var REVIEW = 2;
+
+  /* Every reviewed card, soonest due first: [{id, type, due, state, reps, today, soon}].
+   * today: to do today, as a student expects: due already, or a review (an interval of days)
+   * that falls due before the day ends (as Anki, a day's reviews can be done in the morning).
+   * soon: a card in its learning steps (again in 1 or 10 minutes, FSRS's steps) that comes
+   * back later today: not due yet, and not "due today". The schedule is replayed, so it is
+   * never stale. */
   function cardsByDue(progress, now) {
     var schedule = replay(progress),
       until = endOfDay(now);
     return Store.cards(progress)
       .map(function (c) {
         var card = schedule[c.id];
-        return { id: c.id, type: c.type, due: card.due, state: card.state, reps: card.reps, today: card.due < until };
+        var today = card.due <= now || (card.due < until && card.state === REVIEW);
+        return {
+          id: c.id,
+          type: c.type,
+          due: card.due,
+          state: card.state,
+          reps: card.reps,
+          today: today,
+          soon: !today && card.due < until,
+        };
       })
       .sort(function (a, b) {
         return a.due - b.due;
       });
+  }
+
+  /* When a card that is coming back later today returns, as a student reads it: "in 5
+   * minutes" (a part minute counts as a whole one), else "at 14:05" (the local time). */
+  function backText(due, now) {
+    var minutes = Math.ceil((due - now) / 60000);
+    if (minutes < 60) return "in " + minutes + (minutes === 1 ? " minute" : " minutes");
+    var at = new Date(due);
+    return "at " + at.getHours() + ":" + (at.getMinutes() < 10 ? "0" : "") + at.getMinutes();
   }
 
   function due(progress, now) {
@@ -75,6 +100,7 @@
     cardsByDue: cardsByDue,
     due: due,
     endOfDay: endOfDay,
+    backText: backText,
   };
   if (typeof module === "object" && module.exports) module.exports = api;
   else root.Schedule = api;

@@ -52,8 +52,9 @@ def test_the_class_page_embeds_the_book_and_its_types_and_loads_its_scripts(tmp_
                                      for t in bank.by_type(kind["type"])]
     assert _embedded((source / "_out" / "html" / "progress.html").read_text(), "pp-data")["book"] == data["book"]
     scripts = re.findall(r'<script[^>]*src="_static/([\w.-]+\.js)', page)
-    order = [name for name in scripts if name in {"notation.js", "progress-file.js", "progress.js", "class.js"}]
-    assert order == ["notation.js", "progress-file.js", "progress.js", "class.js"]  # each uses the ones before
+    order = [name for name in scripts if name in {"notation.js", "progress-file.js", "progress.js", "class-table.js",
+                                                       "class.js"}]
+    assert order == ["notation.js", "progress-file.js", "progress.js", "class-table.js", "class.js"]  # in turn
     assert "_static/class.css" in page
     assert re.search(r'<input type="file" id="cp-choose"\s+class="cp-choose" accept="\.json,application/json" multiple>',
                      page)

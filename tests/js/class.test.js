@@ -1,4 +1,4 @@
-// The pure parts of the export's format (progress-file.js) and the class page (class.js),
+// The pure parts of the export's format (progress-file.js) and the class page (class-table.js, through class.js),
 // run with `node --test tests/js`.
 "use strict";
 const test = require("node:test");

@@ -4,9 +4,9 @@
     ```
 
 The build writes the book's id and every question type with its templates (key, title,
-marks; progress.book_types, as Your practice has them); static/class.js reads the files in
-the browser, refuses what is not this book's or was edited (progress-file.js), reads an
-export from before the checksum as "older export, not checked", and shows
+marks; progress.book_types, as Your practice has them); static/class-table.js reads the
+files in the browser (static/class.js shows them), refuses what is not this book's or was
+edited (progress-file.js), reads an export from before the checksum as "older export, not checked", and shows
 marks and attempts per student and per type, the class's mistakes and each question's share
 of full marks. Nothing is uploaded. Without JavaScript, and in print, the page says where it
 works.
@@ -92,7 +92,8 @@ def add_assets(app, pagename, templatename, context, doctree):
         app.add_css_file("class.css")
         add_notation_script(app)
         schedule.add_store_script(app)  # reads a file of format 1 or 2
-        for script in ("progress-file.js", "progress.js", "class.js"):  # each uses the ones before
+        # each uses the ones before: class-table.js reads the files, class.js shows the page
+        for script in ("progress-file.js", "progress.js", "class-table.js", "class.js"):
             app.add_js_file(script, loading_method="defer")
 
 

@@ -347,9 +347,8 @@
       return count(n) + " " + one + (n === 1 ? "" : "s");
     }
 
-    /* The name Export puts in the file: the one typed, else the one kept. A new name typed is
-     * kept in the store. With none, the first Export asks for it (and exports nothing); the
-     * next exports without a name. */
+    /* The name Export puts in the file: the one typed (kept in the store), else the one kept.
+     * With none, Export asks for it and exports nothing; pressed again, it exports without. */
     var asked = false;
     function nameToExport(progress) {
       var typed = nameInput.value.trim().slice(0, Store.NAME_LENGTH);
@@ -370,12 +369,7 @@
     }
 
     nameInput.addEventListener("change", function () {
-      var typed = nameInput.value.trim().slice(0, Store.NAME_LENGTH);
-      if (typed) {
-        Store.update(function (kept) {
-          kept.student = typed;
-        });
-      }
+      if (nameInput.value.trim()) nameToExport(Store.load().progress || Store.empty());
     });
 
     // The file carries the name, the schedule, the book's id and its records' checksum
@@ -407,10 +401,8 @@
       });
     });
 
-    /* Import: the file's attempts join the ones kept here, each once. The file is taken as the
-     * class page takes it (progress-file.js, exportCheck): another book's, or one whose records
-     * do not match their checksum, is refused; an older export (no book id or no checksum) is
-     * imported with every attempt, and the message says it was not checked. */
+    /* Import adds each attempt once. The file is taken as the class page takes it (exportCheck):
+     * refused when another book's or edited; an older export is imported, "not checked". */
     function importText(text, name) {
       var incoming = Store.read(text);
       if (!incoming.ok) {

@@ -161,14 +161,17 @@ def _graph(folder: Path, name: str, graph, last: dict, drawn: dict) -> str:
 
 def builder_index(topic) -> dict:
     """What the builder draws from: the topic's types (title, exam count) and every bank
-    template (key, type, title, marks, one-wording flag, the reserve's indices), in the bank's
-    order; and the data line and mark codes every sheet and key prints."""
-    from physics_figures.worksheets import DATA_LINE, bank_templates, template_marks
+    template (key, type, title, marks, one-wording flag, the reserve's indices, the variants the
+    ready-made worksheets print and where), in the bank's order; and the data line and mark codes every sheet and key prints."""
+    from physics_figures.worksheets import DATA_LINE, bank_templates, ready_made, template_marks
     from physics_figures.worksheets.latex import KEY_CODES
 
+    made = ready_made(topic)
     templates = [{"key": template.key, "type": template.type, "title": template.title,
                   "marks": template_marks(template), "oneWording": bool(template.one_wording),
-                  "reserve": list(template.reserve_variants)} for template in bank_templates(topic)]
+                  "reserve": list(template.reserve_variants),
+                  "readyMade": {str(i): where for i, where in made.get(template.key, {}).items()}}
+                 for template in bank_templates(topic)]
     types = [{"key": kind.key, "title": kind.title, "examCount": kind.exam_count} for kind in topic.types]
     return {"topic": topic.name, "dataLine": DATA_LINE, "keyCodes": KEY_CODES, "types": types,
             "templates": templates}

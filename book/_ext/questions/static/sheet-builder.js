@@ -42,7 +42,8 @@
   }
 
   /* A template's reserve variants in the order a seed draws them; variant 0, when the reserve
-   * holds it, last (worksheets.variant_order). */
+   * holds it, last; and the variants a ready-made worksheet prints (template.readyMade) after
+   * all the others (worksheets.variant_order with the ready-made ones to avoid). */
   function variantOrder(template, seed) {
     var drawn = seededOrder(
       template.reserve.filter(function (i) {
@@ -50,12 +51,34 @@
       }),
       "worksheet-variants:" + template.key,
       seed,
-    );
-    return drawn.concat(
+    ).concat(
       template.reserve.filter(function (i) {
         return !i;
       }),
     );
+    var made = template.readyMade || {};
+    return drawn
+      .filter(function (i) {
+        return !(String(i) in made);
+      })
+      .concat(
+        drawn.filter(function (i) {
+          return String(i) in made;
+        }),
+      );
+  }
+
+  /* Where a sheet repeats a ready-made worksheet's numbers (worksheets.ready_made_repeats):
+   * [{letter, number, where}]. */
+  function readyMadeRepeats(sheet) {
+    var out = [];
+    sheet.versions.forEach(function (version) {
+      version.items.forEach(function (item, i) {
+        var made = item.template.readyMade || {};
+        if (String(item.variant) in made) out.push({ letter: version.letter, number: i + 1, where: made[item.variant] });
+      });
+    });
+    return out;
   }
 
   /* How many versions a template can give (worksheets.usable_versions, in a fresh kit). */
@@ -122,6 +145,8 @@
     subsetSums: Draw.subsetSums,
     chooseTemplates: chooseTemplates,
     variantOrder: variantOrder,
+    usableVersions: usableVersions,
+    readyMadeRepeats: readyMadeRepeats,
     plan: plan,
     SheetError: SheetError,
   };

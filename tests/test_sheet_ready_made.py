@@ -8,7 +8,14 @@ from __future__ import annotations
 import pytest
 
 from physics_figures import topics
-from physics_figures.worksheets import plan, ready_made, ready_made_repeats, select, site_sheets, usable_versions
+from physics_figures.worksheets import (
+    plan,
+    ready_made,
+    ready_made_repeats,
+    select,
+    site_sheets,
+    usable_versions,
+)
 
 TOPIC = topics.load("physics_figures.bank")
 

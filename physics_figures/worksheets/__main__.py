@@ -17,7 +17,16 @@ from pathlib import Path
 from .. import topics
 from ..notation import format_number
 from ..topics import Topic
-from . import DEFAULT_TOPIC, SITE_SEED, bank_templates, plan, ready_made_repeats, select, site_sheets, template_marks
+from . import (
+    DEFAULT_TOPIC,
+    SITE_SEED,
+    bank_templates,
+    plan,
+    ready_made_repeats,
+    select,
+    site_sheets,
+    template_marks,
+)
 
 
 def _names(text: str) -> list[str]:

@@ -75,7 +75,8 @@
     sheet.versions.forEach(function (version) {
       version.items.forEach(function (item, i) {
         var made = item.template.readyMade || {};
-        if (String(item.variant) in made) out.push({ letter: version.letter, number: i + 1, where: made[item.variant] });
+        if (String(item.variant) in made)
+          out.push({ letter: version.letter, number: i + 1, where: made[item.variant] });
       });
     });
     return out;

@@ -85,7 +85,7 @@ PAGE = """\
 <div class="sb-numbers">
 <label for="sb-marks">Total marks <input type="number" id="sb-marks" name="marks" min="1" step="1" value="{marks}"
  inputmode="numeric"></label>
-<label for="sb-versions">Versions (<span class="sb-versions-range">1 to {most}</span>) <input type="number"
+<label for="sb-versions"><span>Versions (<span class="sb-versions-range">1 to {most}</span>)</span> <input type="number"
  id="sb-versions" name="versions" min="1" max="{most}" step="1" value="{versions}" inputmode="numeric"
  aria-describedby="sb-versions-why"></label>
 <label for="sb-seed">Seed <input type="number" id="sb-seed" name="seed" min="0" step="1" value="{seed}"

@@ -370,8 +370,12 @@ def test_a_key_s_marks_never_wrap(browser, base_url, tmp_path):
     page.close()
 
 
-def test_printed_choice_questions_keep_their_options_with_the_stem(browser, base_url, tmp_path):
-    types, marks = ["drag", "elastic", "two-d", "definitions"], 45
+@pytest.mark.parametrize("types", [[kind.key for kind in TOPIC.types], ["drag", "elastic", "two-d", "definitions"]],
+                         ids=["every-type", "four-types"])
+def test_printed_choice_questions_keep_their_options_with_the_stem(browser, base_url, tmp_path, types):
+    """Seed 2027, 30 marks: without the keeping together, a stem ends a page and its options
+    start the next (falling-graph-choice, stick-energy-choice)."""
+    marks = 30
     sheet = plan("w", "", select(types=types, topic=TOPIC), versions=VERSIONS, seed=SEED, marks=marks, topic=TOPIC)
     page = browser.new_page()
     page.goto(f"{base_url}/{PAGE}")

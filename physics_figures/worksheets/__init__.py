@@ -215,11 +215,11 @@ def select(*, types: Sequence[str] = (), templates: Sequence[str] = (), topic: T
 
 def variant_order(template: Template, seed: int, avoid: Collection[int] = ()) -> list[int]:
     """A template's reserve variants in the order a seed draws them; the printed variant (0, in
-    the book and its key), when the reserve holds it, comes last; and the variants in ``avoid``
-    (a ready-made worksheet's) after all the others, in the same order."""
+    the book and its key), when the reserve holds it, comes last; before it, the variants in
+    ``avoid`` (a ready-made worksheet's) after all the others, in the same order."""
     drawn = seeded_order([i for i in template.reserve_variants if i], f"worksheet-variants:{template.key}", seed)
-    order = [*drawn, *(i for i in template.reserve_variants if not i)]
-    return [*(i for i in order if i not in avoid), *(i for i in order if i in avoid)]
+    return [*(i for i in drawn if i not in avoid), *(i for i in drawn if i in avoid),
+            *(i for i in template.reserve_variants if not i)]
 
 
 def usable_versions(template: Template, used: int = 0) -> int:

@@ -42,8 +42,8 @@
   }
 
   /* A template's reserve variants in the order a seed draws them; variant 0, when the reserve
-   * holds it, last; and the variants a ready-made worksheet prints (template.readyMade) after
-   * all the others (worksheets.variant_order with the ready-made ones to avoid). */
+   * holds it, last; before it, the variants a ready-made worksheet prints (template.readyMade)
+   * after all the others (worksheets.variant_order with the ready-made ones to avoid). */
   function variantOrder(template, seed) {
     var drawn = seededOrder(
       template.reserve.filter(function (i) {
@@ -51,10 +51,6 @@
       }),
       "worksheet-variants:" + template.key,
       seed,
-    ).concat(
-      template.reserve.filter(function (i) {
-        return !i;
-      }),
     );
     var made = template.readyMade || {};
     return drawn
@@ -64,6 +60,9 @@
       .concat(
         drawn.filter(function (i) {
           return String(i) in made;
+        }),
+        template.reserve.filter(function (i) {
+          return !i;
         }),
       );
   }

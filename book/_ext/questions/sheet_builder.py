@@ -12,8 +12,9 @@ reserve's indices) with, for each reserve variant, its parts (label, prompt, mar
 body and key body as HTML (physics_figures.worksheets.html: the PDF key's information) and its
 graph as inline SVG. static/sheet-builder.js repeats physics_figures.worksheets.plan exactly
 (the FNV-1a draws and the templates' subset-sum); static/sheet-builder-page.js only assembles
-the pages: it computes no physics and no key. The file is a script (a <script> element loads it
-from file:// too, where fetch() cannot).
+the pages: it computes no physics and no key. The file is a script: the page fetches it and
+keeps it in its own cache (the Cache API) for offline use, and from file://, where fetch()
+cannot read, a <script> element loads it.
 
 Working every reserve variant out and drawing 76 graphs takes most of a minute, so, as for the
 site's variants (variants.py), the last build's inputs and output are recorded beside the site:

@@ -2,8 +2,8 @@
  * versions, each with its own answer key, made in this browser with no Python and no server.
  *
  * The questions come from the teachers-only data file the build writes (sheet_builder.py:
- * teachers/sheet-data.js, loaded by a <script> element on the first "Make the sheets", so it
- * works from file:// too): every bank template's reserve variants, their sheets and keys as
+ * teachers/sheet-data.js, loaded on the first "Make the sheets" and kept for offline use by
+ * sheet-builder-page.js): every bank template's reserve variants, their sheets and keys as
  * HTML and their graphs as SVG, all computed by physics_figures. This script computes no
  * physics and no key. It repeats physics_figures.worksheets.plan exactly: the same FNV-1a
  * draws (seededOrder), the same subset sums over each type's templates in the same order,

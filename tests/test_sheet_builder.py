@@ -18,7 +18,7 @@ from pathlib import Path
 import pytest
 
 from physics_figures import topics
-from physics_figures.worksheets import choose_templates, fnv1a, plan, select
+from physics_figures.worksheets import choose_templates, fnv1a, plan, ready_made_repeats, select
 from physics_figures.worksheets.html import key_body, sheet_body
 from physics_figures.worksheets.latex import ecf_note, wrong_answers
 
@@ -49,7 +49,8 @@ def python_plan(case: dict) -> dict:
         return {"error": str(error)}
     title = "Worksheet: " + "; ".join(TOPIC.type(t).title for t in case["types"])
     return {"title": title,
-            "versions": [[[item.template.key, item.variant] for item in version.items] for version in sheet.versions]}
+            "versions": [[[item.template.key, item.variant] for item in version.items] for version in sheet.versions],
+            "repeats": ready_made_repeats(sheet, TOPIC)}
 
 
 def impossible_marks(types: list[str]) -> int:

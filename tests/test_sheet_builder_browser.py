@@ -9,8 +9,12 @@ For a chosen set of types, 30 marks, 3 versions and seed 2027 (issue 26's "Done 
   those of the LaTeX sheet the command line writes;
 - it works offline after one visit that made sheets (the service worker keeps the data), and
   from the built folder opened as files;
-- a keyboard alone makes the sheets; axe finds nothing, light or dark; a request that cannot
-  be made says why and names the nearest totals.
+- a keyboard alone makes the sheets; axe finds nothing, light or dark.
+Issue 37: sheets made at once on a first visit are made again offline; the Versions field says
+and allows what the types ticked allow; a refusal says what to change on the form, in its words
+(no template ids); a Date line; sheets only or keys only; the status says where a ready-made
+worksheet's numbers repeat; a key's "[6 marks]" never wraps; printed, a choice question's
+options stay on its stem's page.
 Everything expected is computed here from physics_figures."""
 
 from __future__ import annotations
@@ -19,10 +23,12 @@ import re
 import subprocess
 
 import pytest
+import sheet_pages
 from browser import axe_violations, serve_site
+from sheet_pages import split_choices
 
 from physics_figures import topics
-from physics_figures.worksheets import plan, select
+from physics_figures.worksheets import plan, ready_made_repeats, select, usable_versions
 from physics_figures.worksheets.latex import question_sheet
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
@@ -141,8 +147,7 @@ def test_offline_after_one_visit_that_made_sheets(browser, base_url, expected):
     page = context.new_page()
     page.goto(f"{base_url}/{PAGE}")
     page.wait_for_function("navigator.serviceWorker.controller !== null", timeout=60_000)
-    make_sheets(page)
-    page.wait_for_timeout(500)  # the worker's cache.put of the data, after its reply
+    make_sheets(page)  # the page keeps the data before it makes the sheets
     context.set_offline(True)
     page.reload()
     make_sheets(page)
@@ -182,6 +187,8 @@ def test_a_keyboard_alone_makes_the_sheets(browser, base_url, expected):
         page.keyboard.press("Control+A")
         page.keyboard.type(str(value))
         page.keyboard.press("Tab")
+    assert focused() == "both"  # Make: sheets and their keys (a radio group is one stop)
+    page.keyboard.press("Tab")
     assert focused() == "Make the sheets"
     page.keyboard.press("Enter")
     page.locator(".sb-sheet").nth(VERSIONS - 1).wait_for(timeout=60_000)
@@ -208,17 +215,174 @@ def test_no_axe_violations_with_sheets_made(browser, base_url, mode):
     context.close()
 
 
-def test_marks_that_cannot_be_made_name_the_nearest_totals(browser, base_url):
+# ------------------------------------------------------------ issue 37: what a teacher met
+
+
+def made(page) -> str:
+    """The status once the sheets are made or refused (either ends the wait)."""
+    page.wait_for_function("(s => s.textContent.startsWith('Made') || s.classList.contains('sb-error'))"
+                           "(document.querySelector('.sb-status'))", timeout=60_000)
+    return words(page.locator(".sb-status").inner_text())
+
+
+def test_sheets_made_at_once_on_a_first_visit_are_made_again_offline(browser, base_url):
+    """The first sheets, made before the service worker takes the page, keep the data: the next
+    day, offline, with the browser's HTTP cache emptied, the builder makes them again. The form's
+    defaults: every type, 30 marks, 3 versions, seed 2027."""
+    every = [kind.key for kind in TOPIC.types]
+    want = plan("w", "", select(types=every, topic=TOPIC), versions=3, seed=2027, marks=30, topic=TOPIC)
+    context = browser.new_context(service_workers="allow")
+    page = context.new_page()
+    page.goto(f"{base_url}/{PAGE}")
+    # at once, with the form as it opens: within 1 s of the page's load, by the page's own clock
+    assert page.evaluate("""() => { document.querySelector('.sb-make').click();
+        return performance.now() - performance.getEntriesByType('navigation')[0].loadEventEnd; }""") < 1000
+    assert page.evaluate("navigator.serviceWorker.controller") is None  # before the worker took the page
+    assert made(page).startswith("Made")
+    page.wait_for_function("navigator.serviceWorker.controller !== null", timeout=120_000)  # its precache is done
+    context.new_cdp_session(page).send("Network.clearBrowserCache")
+    context.set_offline(True)
+    page.reload()
+    page.click(".sb-make")
+    assert made(page).startswith("Made")
+    assert [(q["key"], q["variant"]) for q in builder_questions(page)[2]] == \
+        [(i.template.key, i.variant) for i in want.versions[2].items]
+    context.close()
+
+
+def _versions_allowed(types: list[str]) -> int:
+    return min(26, *(usable_versions(t) for t in select(types=types, topic=TOPIC)))
+
+
+def test_the_versions_field_says_and_allows_what_the_types_ticked_allow(browser, base_url):
     page = browser.new_page()
     page.goto(f"{base_url}/{PAGE}")
+    page.locator(".sb-form").wait_for()
+    every = [kind.key for kind in TOPIC.types]
+    for types in (every, ["two-d"], ["drag", "two-d"], every):
+        for box in page.locator('.sb-form input[name="types"]').all():
+            box.set_checked(box.get_attribute("value") in types)
+        most = _versions_allowed(types)
+        plan("w", "", select(types=types, topic=TOPIC), versions=most, seed=SEED, topic=TOPIC)  # allowed
+        with pytest.raises(ValueError, match="versions"):
+            plan("w", "", select(types=types, topic=TOPIC), versions=most + 1, seed=SEED, topic=TOPIC)
+        label = words(page.locator('label[for="sb-versions"]').inner_text())
+        assert label == f"Versions (1 to {most})", types
+        assert page.locator("#sb-versions").get_attribute("max") == str(most)
+        assert f"allow up to {most} versions" in page.locator("#sb-versions-why").inner_text()
+    page.close()
+
+
+def _no_template_keys(text: str) -> None:
+    keys = [t.key for t in select(types=[kind.key for kind in TOPIC.types], topic=TOPIC)]
+    assert not [key for key in keys if key in text], text
+    assert "template" not in text.lower() and "got " not in text, text
+
+
+def test_refusals_speak_of_the_form_not_of_templates(browser, base_url):
+    page = browser.new_page()
+    page.goto(f"{base_url}/{PAGE}")
+    # marks that cannot be made: the nearest totals, from Python's own draw
     make_sheets(page, types=["two-d"], marks=2, wait=False)
-    status = page.locator(".sb-status.sb-error")
-    status.wait_for(timeout=60_000)
-    try:
-        select_error = plan("w", "", select(types=["two-d"], topic=TOPIC), versions=VERSIONS, seed=SEED, marks=2,
-                            topic=TOPIC)
-    except ValueError as error:
-        select_error = str(error)
-    assert status.inner_text() == f"The sheets cannot be made: {select_error}."
-    assert "the nearest totals that can are" in select_error
+    with pytest.raises(ValueError) as error:
+        plan("w", "", select(types=["two-d"], topic=TOPIC), versions=VERSIONS, seed=SEED, marks=2, topic=TOPIC)
+    below, above = re.search(r"the nearest totals that can are (\d+) and (\d+)", str(error.value)).groups()
+    text = made(page)
+    assert text == (f"The sheets cannot be made. No set of questions of the types ticked adds up to exactly 2 "
+                    f"marks: the nearest totals are {below} and {above}. Change Total marks to one of those, "
+                    "or tick other types.")
+    _no_template_keys(text)
+    # more versions than the types ticked allow: how many, which types, what to change
+    most = _versions_allowed(TYPES)
+    limiting = [TOPIC.type(t).title for t in TYPES if _versions_allowed([t]) == most]
+    make_sheets(page, versions=most + 1, wait=False)
+    text = made(page)
+    assert text.startswith(f"The sheets cannot be made. The types ticked allow at most {most} versions"), text
+    assert all(title in text for title in limiting) and f"Ask for {most} or fewer, or untick" in text, text
+    _no_template_keys(text)
+    # more marks than the types hold
+    held = sum(t.variant(0).marks for t in select(types=["drag"], topic=TOPIC))
+    make_sheets(page, types=["drag"], marks=held + 1, versions=1, wait=False)
+    text = made(page)
+    assert f"The types ticked hold {held} marks of questions in all" in text, text
+    _no_template_keys(text)
+    make_sheets(page, types=[], wait=False)
+    assert made(page) == "The sheets cannot be made. Tick at least one question type."
+    page.close()
+
+
+def test_a_date_line_beside_name_and_class(browser, base_url):
+    page = browser.new_page()
+    page.goto(f"{base_url}/{PAGE}")
+    make_sheets(page)
+    for fields in page.locator(".sb-sheet .sb-fields").all():
+        assert words(fields.inner_text()).split() == ["Name", "Class", "Date"]
+    page.close()
+
+
+@pytest.mark.parametrize(("make", "sheets", "keys"), [("sheets", VERSIONS, 0), ("keys", 0, VERSIONS)])
+def test_sheets_only_or_keys_only(browser, base_url, make, sheets, keys, tmp_path):
+    page = browser.new_page()
+    page.goto(f"{base_url}/{PAGE}")
+    page.locator(".sb-form").wait_for()
+    page.check(f'input[name="make"][value="{make}"]')
+    make_sheets(page, wait=False)
+    assert made(page).startswith("Made")
+    assert page.locator(".sb-sheet").count() == sheets and page.locator(".sb-key").count() == keys
+    pdf = tmp_path / "printed.pdf"
+    page.pdf(path=str(pdf), format="A4")
+    printed = words(" ".join(pdf_pages(pdf)))
+    assert ("Answer key, version A" in printed) == bool(keys) and ("Version A ·" in printed) == bool(sheets)
+    page.close()
+
+
+def test_the_status_says_where_a_ready_made_worksheet_s_numbers_repeat(browser, base_url):
+    page = browser.new_page()
+    page.goto(f"{base_url}/{PAGE}")
+    for versions in (1, _versions_allowed(["drag"])):
+        sheet = plan("w", "", select(types=["drag"], topic=TOPIC), versions=versions, seed=SEED, marks=MARKS,
+                     topic=TOPIC)
+        repeats = ready_made_repeats(sheet, TOPIC)
+        make_sheets(page, types=["drag"], versions=versions, wait=False)
+        text = made(page)
+        if not repeats:
+            assert "No question repeats the numbers of a ready-made worksheet" in text
+        else:
+            listed = "; ".join(r.replace("Version", "version", 1).replace(": as in", " is as in") for r in repeats)
+            assert f"the ready-made worksheets' numbers everywhere: {words(listed)}. Fewer versions avoid them." in text
+    assert repeats  # the second request needed them
+    page.close()
+
+
+def test_a_key_s_marks_never_wrap(browser, base_url, tmp_path):
+    """"[6 marks]" stays on one line in every key header, on a phone and printed."""
+    page = browser.new_page(viewport={"width": 390, "height": 844})
+    page.goto(f"{base_url}/{PAGE}")
+    make_sheets(page)
+    lines = page.evaluate("""() => [...document.querySelectorAll('.sb-key-question h4 .sb-marks')].map(m => {
+        const range = document.createRange(); range.selectNodeContents(m);
+        return [m.textContent, new Set([...range.getClientRects()].map(r => Math.round(r.top))).size]; })""")
+    assert lines and all(count == 1 for _, count in lines), [text for text, count in lines if count != 1]
+    pdf = tmp_path / "keys.pdf"
+    page.pdf(path=str(pdf), format="A4")
+    printed = "\n".join(pdf_pages(pdf))
+    assert not re.search(r"\[\d+\s*$", printed, re.MULTILINE) and re.search(r"\[\d+ marks\]", printed)
+    page.close()
+
+
+@pytest.mark.parametrize("types", [[kind.key for kind in TOPIC.types], ["drag", "elastic", "two-d", "definitions"]],
+                         ids=["every-type", "four-types"])
+def test_printed_choice_questions_keep_their_options_with_the_stem(browser, base_url, tmp_path, types):
+    """Seed 2027, 30 marks: without the keeping together, a stem ends a page and its options
+    start the next (falling-graph-choice, stick-energy-choice)."""
+    marks = 30
+    sheet = plan("w", "", select(types=types, topic=TOPIC), versions=VERSIONS, seed=SEED, marks=marks, topic=TOPIC)
+    page = browser.new_page()
+    page.goto(f"{base_url}/{PAGE}")
+    page.locator(".sb-form").wait_for()
+    page.check('input[name="make"][value="sheets"]')
+    make_sheets(page, types=types, marks=marks)
+    pdf = tmp_path / "sheets.pdf"
+    page.pdf(path=str(pdf), format="A4")
+    assert split_choices(sheet_pages.pdf_pages(pdf), list(sheet.versions)) == []
     page.close()

@@ -30,7 +30,7 @@ from __future__ import annotations
 
 import difflib
 import string
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -213,11 +213,13 @@ def select(*, types: Sequence[str] = (), templates: Sequence[str] = (), topic: T
     return chosen
 
 
-def variant_order(template: Template, seed: int) -> list[int]:
+def variant_order(template: Template, seed: int, avoid: Collection[int] = ()) -> list[int]:
     """A template's reserve variants in the order a seed draws them; the printed variant (0, in
-    the book and its key), when the reserve holds it, comes last."""
+    the book and its key), when the reserve holds it, comes last; before it, the variants in
+    ``avoid`` (a ready-made worksheet's) after all the others, in the same order."""
     drawn = seeded_order([i for i in template.reserve_variants if i], f"worksheet-variants:{template.key}", seed)
-    return [*drawn, *(i for i in template.reserve_variants if not i)]
+    return [*(i for i in drawn if i not in avoid), *(i for i in drawn if i in avoid),
+            *(i for i in template.reserve_variants if not i)]
 
 
 def usable_versions(template: Template, used: int = 0) -> int:
@@ -236,9 +238,13 @@ class Kit:
 
     seed: int
     used: dict[str, int] | None = None
+    #: Per template key, the variants to take only when no other is left (the ready-made
+    #: worksheets' numbers, for a teacher's own sheet: :func:`ready_made`).
+    avoid: dict[str, dict[int, str]] | None = None
 
     def __post_init__(self):
         self.used = {} if self.used is None else self.used
+        self.avoid = {} if self.avoid is None else self.avoid
 
     def left(self, template: Template) -> int:
         return usable_versions(template, self.used.get(template.key, 0))
@@ -249,19 +255,21 @@ class Kit:
             return [0] * count
         start = self.used.get(template.key, 0)
         self.used[template.key] = start + count
-        return variant_order(template, self.seed)[start:start + count]
+        return variant_order(template, self.seed, self.avoid.get(template.key, {}))[start:start + count]
 
 
 def plan(name: str, title: str, templates: Sequence[Template], *, versions: int, seed: int,
          marks: int | None = None, topic: Topic | None = None, kit: Kit | None = None) -> Sheet:
     """A sheet's versions: the templates (all of them, or a set making ``marks``), each
     version with its own reserve variant of each (the next unused ones of ``kit``, when the
-    sheet is one of a kit). ValueError when the request cannot be filled."""
+    sheet is one of a kit; else a teacher's own sheet, which takes the ready-made worksheets'
+    variants only when it has no others: :func:`ready_made`). ValueError when the request
+    cannot be filled."""
     _require(isinstance(versions, int) and 1 <= versions <= MAX_VERSIONS, "versions", versions,
              f"must be a whole number from 1 to {MAX_VERSIONS} (A to Z)")
     _require(isinstance(seed, int) and seed >= 0, "seed", seed, "must be a whole number, 0 or more")
     _require(bool(templates), "templates", list(templates), "must hold at least one template")
-    kit = Kit(seed) if kit is None else kit
+    kit = Kit(seed, avoid=ready_made(topic)) if kit is None else kit
     short = [t for t in templates if kit.left(t) < versions]
     _require(not short, "versions", versions,
              "needs that many different variants of every template, but "
@@ -294,3 +302,25 @@ def site_sheets(*, seed: int = SITE_SEED, versions: int = SITE_VERSIONS, topic: 
     sheets.append(plan("end-of-topic-test", f"{topic.name}: end-of-topic test", usable, versions=versions,
                        seed=seed, marks=marks, topic=topic, kit=kit))
     return sheets
+
+
+def ready_made(topic: Topic | None = None) -> dict[str, dict[int, str]]:
+    """Per template key, the variants the ready-made worksheets (the site's kit, `make
+    worksheets`) print, each with where: "Worksheet: Drag…, version B". A one-wording template
+    (a definition, the same words in every sheet) has no numbers to repeat and is left out."""
+    out: dict[str, dict[int, str]] = {}
+    for sheet in site_sheets(topic=topic):
+        for version in sheet.versions:
+            for item in version.items:
+                if not item.template.one_wording:
+                    out.setdefault(item.template.key, {})[item.variant] = f"{sheet.title}, version {version.letter}"
+    return out
+
+
+def ready_made_repeats(sheet: Sheet, topic: Topic | None = None) -> list[str]:
+    """Where a teacher's sheet repeats a ready-made worksheet's numbers (too many versions asked
+    for the variants left), as "Version C, question 2: as in Worksheet: Drag…, version A"."""
+    made = ready_made(topic)
+    return [f"Version {version.letter}, question {number}: as in {made[item.template.key][item.variant]}"
+            for version in sheet.versions for number, item in enumerate(version.items, start=1)
+            if item.variant in made.get(item.template.key, {})]

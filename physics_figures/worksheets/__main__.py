@@ -17,7 +17,16 @@ from pathlib import Path
 from .. import topics
 from ..notation import format_number
 from ..topics import Topic
-from . import DEFAULT_TOPIC, SITE_SEED, bank_templates, plan, select, site_sheets, template_marks
+from . import (
+    DEFAULT_TOPIC,
+    SITE_SEED,
+    bank_templates,
+    plan,
+    ready_made_repeats,
+    select,
+    site_sheets,
+    template_marks,
+)
 
 
 def _names(text: str) -> list[str]:
@@ -96,6 +105,10 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{sheet.name}: {len(sheet.versions)} versions, {sheet.marks} marks, "
               f"{len(sheet.templates)} questions ({', '.join(t.key for t in sheet.templates)})")
     print(f"wrote {len(pdfs)} PDFs to {args.out} in {format_number(time.perf_counter() - start, decimals=1)} s")
+    repeats = [] if args.site else ready_made_repeats(sheets[0], topic)
+    if repeats:  # the draw takes a ready-made worksheet's numbers only when no others are left
+        print("note: these questions repeat a ready-made worksheet's numbers (fewer versions avoid them): "
+              + "; ".join(repeats), file=sys.stderr)
     return 0
 
 

@@ -29,6 +29,9 @@ from .latex import (
 #: What a sheet's [n] and a key's lines are marked up with, for the builder's stylesheet
 #: (sheet-builder.css) and its tests.
 MARKS_CLASS = "sb-marks"
+#: What holds a choice question's text, graph and options, which print on one page (each part
+#: is one block too: sheet-builder.css).
+KEEP_CLASS = "sb-keep"
 
 
 def plain(text: str) -> str:
@@ -79,8 +82,11 @@ def sheet_body(question: Question, graph_svg: str = "") -> str:
     """The question on the sheet: its text (class sb-text), its graph (inline SVG, drawn for
     these numbers), then each part with room to answer and its marks."""
     figure = f'<figure class="sb-graph">{graph_svg}</figure>' if graph_svg else ""
-    parts = "".join(_sheet_part(question, index, marks) for index, marks in enumerate(question.part_marks()))
-    return f'<div class="sb-text">{question.text_html()}</div>{figure}{parts}'
+    parts = [_sheet_part(question, index, marks) for index, marks in enumerate(question.part_marks())]
+    start = f'<div class="sb-text">{question.text_html()}</div>{figure}'
+    if question.parts[0].kind == "mcq":  # a choice question's text, graph and options print on one page
+        return f'<div class="{KEEP_CLASS}">{start}{parts[0]}</div>{"".join(parts[1:])}'
+    return start + "".join(parts)
 
 
 def _key_part(question: Question, index: int, marks: int) -> str:

@@ -70,6 +70,9 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
   \advance\writinglinecount by -1\repeat\par}
 \newcommand{\question}[1]{\par\needspace{6\baselineskip}\vspace{10pt}{\sffamily\bfseries\large #1}\quad}
 \newcommand{\gridbox}{\framebox[1.1cm]{\rule{0pt}{0.5cm}}}
+% A choice question's stem, options and answer box on one page: a box no page break enters.
+\newenvironment{keeptogether}{\par\noindent\begin{minipage}{\linewidth}\setlength{\parskip}{4pt}}%
+  {\end{minipage}\par}
 """
 
 
@@ -82,7 +85,8 @@ def _subscripts(text: str) -> str:
 
 
 def _marks(count: int) -> str:
-    return f"{count} mark" if count == 1 else f"{count} marks"
+    """"6 marks", tied (~): a line never ends between the number and its word."""
+    return f"{count}~mark" if count == 1 else f"{count}~marks"
 
 
 def tex(plain: str) -> str:
@@ -202,6 +206,13 @@ def _answer_line(label: str, part, marks: int) -> str:
 
 
 def _part(question: Question, index: int, marks: int) -> str:
+    part = question.parts[index]
+    if part.kind == "mcq" and index:  # the first is kept with its question's text (question_sheet)
+        return "\\begin{keeptogether}" + _part_body(question, index, marks) + "\\end{keeptogether}"
+    return _part_body(question, index, marks)
+
+
+def _part_body(question: Question, index: int, marks: int) -> str:
     part, label = question.parts[index], question.label(index)
     if part.kind == "mcq" and part.sketches:
         return ("\\par\\vspace{4pt}" + tex(f"{label}{part.prompt}") + "\n" + sketch_row(part)
@@ -235,12 +246,18 @@ def question_sheet(sheet: Sheet, version: Version) -> str:
     body = [_cover(sheet, version)]
     for number, item in enumerate(version.items, start=1):
         question = item.question
-        body.append(f"\\question{{{number}}}{rich(question.text)}")
+        # a choice question: its text, graph and first part (the options) on one page
+        keep = question.parts[0].kind == "mcq"
+        start = [f"\\question{{{number}}}{rich(question.text)}"]
         if question.graph is not None:
-            body.append("\\par\\begin{center}\\includegraphics[width=0.78\\linewidth]{"
-                        + _graph_file(number) + "}\\end{center}")
-        for index, marks in enumerate(part_marks(question)):
-            body.append(_part(question, index, marks))
+            start.append("\\par\\begin{center}\\includegraphics[width=0.78\\linewidth]{"
+                         + _graph_file(number) + "}\\end{center}")
+        parts = [_part(question, index, marks) for index, marks in enumerate(part_marks(question))]
+        if keep:
+            body.append("\\begin{keeptogether}" + "\n\n".join([*start, parts.pop(0)]) + "\\end{keeptogether}")
+        else:
+            body += start
+        body += parts
         body.append(f"\\par\\vspace{{2pt}}\\hfill{{\\small\\itshape [Total for question {number}: "
                     f"{_marks(question.marks)}]}}\\par")
     body.append(r"\vspace{16pt}\begin{center}\textbf{End of the questions.}\end{center}")
@@ -432,7 +449,7 @@ def answer_key(sheet: Sheet, version: Version) -> str:
         question = item.question
         body.append(f"\\question{{{number}}}{{\\sffamily\\bfseries {tex(item.template.title)}}} "
                     f"{{\\small ({tex(item.template.key)}, variant {item.variant})}} \\hfill "
-                    f"\\textbf{{[{_marks(question.marks)}]}}\\par")
+                    f"\\mbox{{\\textbf{{[{_marks(question.marks)}]}}}}\\par")
         body.append("{\\small " + rich(question.text) + "}")
         for index, marks in enumerate(part_marks(question)):
             body.append("\\par\\needspace{3\\baselineskip}" + "\n\n".join(_key_part(question, index, marks)))

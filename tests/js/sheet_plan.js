@@ -18,6 +18,7 @@ process.stdin.on("end", () => {
         return {
           title: sheet.title,
           versions: sheet.versions.map((v) => v.items.map((item) => [item.template.key, item.variant])),
+          repeats: S.readyMadeRepeats(sheet).map((r) => `Version ${r.letter}, question ${r.number}: as in ${r.where}`),
         };
       } catch (error) {
         if (!(error instanceof S.SheetError)) throw error;

@@ -12,8 +12,9 @@ reserve's indices) with, for each reserve variant, its parts (label, prompt, mar
 body and key body as HTML (physics_figures.worksheets.html: the PDF key's information) and its
 graph as inline SVG. static/sheet-builder.js repeats physics_figures.worksheets.plan exactly
 (the FNV-1a draws and the templates' subset-sum); static/sheet-builder-page.js only assembles
-the pages: it computes no physics and no key. The file is a script (a <script> element loads it
-from file:// too, where fetch() cannot).
+the pages: it computes no physics and no key. The file is a script: the page fetches it and
+keeps it in its own cache (the Cache API) for offline use, and from file://, where fetch()
+cannot read, a <script> element loads it.
 
 Working every reserve variant out and drawing 76 graphs takes most of a minute, so, as for the
 site's variants (variants.py), the last build's inputs and output are recorded beside the site:
@@ -58,12 +59,23 @@ class SheetBuilderDirective(SphinxDirective):
         store.docs(self.env, DIRECTIVE).add(self.env.docname)
         uses_modules(self.env, *store.bank_modules(self.config))
         topic = store.topics(self.config)[0]
-        types = [{"key": kind.key, "title": kind.title} for kind in topic.types]
+        types = [{"key": kind.key, "title": kind.title, "versions": type_versions(topic, kind.key)}
+                 for kind in topic.types]
         return [sheet_builder(types=types)]
+
+
+def type_versions(topic, key: str) -> int:
+    """How many versions a sheet of this type can have: each version its own numbers for every
+    template of the type (worksheets.usable_versions), at most 26 (A to Z)."""
+    from physics_figures.worksheets import MAX_VERSIONS, bank_templates, usable_versions
+
+    return min([MAX_VERSIONS, *(usable_versions(t) for t in bank_templates(topic) if t.type == key)])
 
 
 #: The form, the status line and where the sheets go (hidden until the script runs). Every
 #: control has its label; Enter in a field or the button makes the sheets (a form's submit).
+#: Each type's box says how many versions its questions allow (data-versions): the Versions
+#: field's label and limit follow the boxes ticked (sheet-builder-page.js).
 PAGE = """\
 <div class="sb" data-src="{src}">
 <p class="sb-needs-js">{needs}</p>
@@ -74,11 +86,18 @@ PAGE = """\
 <div class="sb-numbers">
 <label for="sb-marks">Total marks <input type="number" id="sb-marks" name="marks" min="1" step="1" value="{marks}"
  inputmode="numeric"></label>
-<label for="sb-versions">Versions (1 to 26) <input type="number" id="sb-versions" name="versions" min="1" max="26"
- step="1" value="{versions}" inputmode="numeric"></label>
+<label for="sb-versions"><span>Versions (<span class="sb-versions-range">1 to {most}</span>)</span> <input type="number"
+ id="sb-versions" name="versions" min="1" max="{most}" step="1" value="{versions}" inputmode="numeric"
+ aria-describedby="sb-versions-why"></label>
 <label for="sb-seed">Seed <input type="number" id="sb-seed" name="seed" min="0" step="1" value="{seed}"
  inputmode="numeric"></label>
 </div>
+<p class="sb-hint" id="sb-versions-why">{why}</p>
+<fieldset class="sb-make-what"><legend>Make</legend>
+<label class="sb-type"><input type="radio" name="make" value="both" checked> Sheets and their keys</label>
+<label class="sb-type"><input type="radio" name="make" value="sheets"> Question sheets only</label>
+<label class="sb-type"><input type="radio" name="make" value="keys"> Answer keys only</label>
+</fieldset>
 <div class="sb-buttons"><button type="submit" class="sb-make">Make the sheets</button>
 <button type="button" class="sb-print" hidden>Print</button></div>
 <p class="sb-status" role="status" aria-live="polite"></p>
@@ -88,13 +107,21 @@ PAGE = """\
 """
 
 
+def versions_why(most: int) -> str:
+    """What the Versions field's limit means, for the types ticked (the script rewrites it)."""
+    return (f"The types ticked allow up to {most} versions: each version has its own numbers for every "
+            "question, from those the site does not show. Untick a type to allow more.")
+
+
 def visit_sheet_builder(self, node):
     types = "\n".join(
-        f'<label class="sb-type"><input type="checkbox" name="types" value="{escape(kind["key"])}" checked> '
-        f'{escape(kind["title"])}</label>' for kind in node["types"])
+        f'<label class="sb-type"><input type="checkbox" name="types" value="{escape(kind["key"])}" '
+        f'data-versions="{kind["versions"]}" checked> {escape(kind["title"])}</label>' for kind in node["types"])
+    most = min(kind["versions"] for kind in node["types"])
     depth = self.builder.current_docname.count("/")  # the data file is at the site's root
     self.body.append(PAGE.format(src=escape("../" * depth + DATA_FILE), needs=escape(NEEDS_BROWSER), types=types,
-                                 **DEFAULTS))
+                                 most=most, why=escape(versions_why(most)),
+                                 **{**DEFAULTS, "versions": min(DEFAULTS["versions"], most)}))
     raise nodes.SkipNode
 
 
@@ -161,14 +188,17 @@ def _graph(folder: Path, name: str, graph, last: dict, drawn: dict) -> str:
 
 def builder_index(topic) -> dict:
     """What the builder draws from: the topic's types (title, exam count) and every bank
-    template (key, type, title, marks, one-wording flag, the reserve's indices), in the bank's
-    order; and the data line and mark codes every sheet and key prints."""
-    from physics_figures.worksheets import DATA_LINE, bank_templates, template_marks
+    template (key, type, title, marks, one-wording flag, the reserve's indices, the variants the
+    ready-made worksheets print and where), in the bank's order; and the data line and mark codes every sheet and key prints."""
+    from physics_figures.worksheets import DATA_LINE, bank_templates, ready_made, template_marks
     from physics_figures.worksheets.latex import KEY_CODES
 
+    made = ready_made(topic)
     templates = [{"key": template.key, "type": template.type, "title": template.title,
                   "marks": template_marks(template), "oneWording": bool(template.one_wording),
-                  "reserve": list(template.reserve_variants)} for template in bank_templates(topic)]
+                  "reserve": list(template.reserve_variants),
+                  "readyMade": {str(i): where for i, where in made.get(template.key, {}).items()}}
+                 for template in bank_templates(topic)]
     types = [{"key": kind.key, "title": kind.title, "examCount": kind.exam_count} for kind in topic.types]
     return {"topic": topic.name, "dataLine": DATA_LINE, "keyCodes": KEY_CODES, "types": types,
             "templates": templates}

@@ -40,14 +40,23 @@
     return String(value);
   }
 
-  function DrawError(message) {
+  /* The message is Python's ValueError's; `details` says what a page needs to say it in its
+   * own words: the field (types, marks, versions, seed) and, for marks, the marks available or
+   * the nearest totals that can be made. */
+  function DrawError(message, details) {
     this.name = "DrawError";
     this.message = message;
+    Object.assign(this, details || {});
   }
   DrawError.prototype = Object.create(Error.prototype);
 
-  function require_(ok, name, value, rule) {
-    if (!ok) throw new DrawError(name + " " + rule + " (got " + name + "=" + pyRepr(value) + ")");
+  function require_(ok, name, value, rule, details) {
+    if (!ok) {
+      throw new DrawError(
+        name + " " + rule + " (got " + name + "=" + pyRepr(value) + ")",
+        Object.assign({ field: name }, details),
+      );
+    }
   }
 
   function isWhole(value) {
@@ -98,6 +107,7 @@
         " (" +
         templates.length +
         " templates)",
+      { available: available },
     );
     var counts = new Map();
     byType.forEach(function (group, type) {
@@ -150,6 +160,7 @@
           " (got marks=" +
           pyRepr(marks) +
           ")",
+        { field: "marks", nearest: [below, above] },
       );
     }
     var chosen = [];

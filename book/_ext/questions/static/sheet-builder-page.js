@@ -1,13 +1,22 @@
 /* The teachers' sheet builder's page (book/teachers.md, "Make your own"): the form, the data
- * file loaded on the first "Make the sheets" (teachers/sheet-data.js, by a <script> element, so
- * file:// works too), and each version's question sheet and answer key, assembled from the
- * HTML that physics_figures wrote into the data: nothing here computes a number. The draws are
- * sheet-builder.js (window.SheetBuilder). */
+ * file loaded on the first "Make the sheets" (teachers/sheet-data.js), and each version's
+ * question sheet and answer key, assembled from the HTML that physics_figures wrote into the
+ * data: nothing here computes a number. The draws are sheet-builder.js (window.SheetBuilder).
+ *
+ * The data comes by fetch() and is kept in this page's own cache (the Cache API, KEPT) before
+ * the sheets are made, so the builder works offline the next day, however early the first
+ * sheets were made (the service worker takes the page only after its precache). Offline, the
+ * kept copy (or the service worker's, whoever fetched it) is read. From file://, where fetch()
+ * cannot read, or where no Cache API exists (a page not served securely), a <script> element
+ * loads it. */
 (function (root) {
   "use strict";
 
   var plan = root.SheetBuilder.plan;
   var SheetError = root.SheetBuilder.SheetError;
+  var readyMadeRepeats = root.SheetBuilder.readyMadeRepeats;
+  /* The page's own cache of the data file (not "dynamics-…": a new build's worker keeps it). */
+  var KEPT = "sheet-builder-data";
   if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", start);
   else start();
 
@@ -21,6 +30,11 @@
 
   function marksText(n) {
     return n + (n === 1 ? " mark" : " marks");
+  }
+
+  /* "[6 marks]" that never wraps (a no-break space; sheet-builder.css: nowrap). */
+  function marksTag(n) {
+    return "[" + marksText(n).replace(" ", "\u00a0") + "]";
   }
 
   function today() {
@@ -65,7 +79,7 @@
       " · " +
       esc(made) +
       '</p><p class="sb-fields"><span>Name <span class="sb-blank sb-wide"></span></span> ' +
-      '<span>Class <span class="sb-blank"></span></span></p>' +
+      '<span>Class <span class="sb-blank"></span></span> <span>Date <span class="sb-blank"></span></span></p>' +
       '<ul class="sb-instructions"><li>Answer <strong>all</strong> questions in the spaces provided.</li>' +
       "<li>Show your working: marks are given for the method as well as the answer.</li>" +
       "<li>Give each numerical answer to an appropriate number of significant figures, with its unit.</li>" +
@@ -100,9 +114,9 @@
           esc(item.template.key) +
           ", variant " +
           item.variant +
-          ')</span> <span class="sb-marks">[' +
-          marksText(item.template.marks) +
-          "]</span></h4>" +
+          ')</span> <span class="sb-marks">' +
+          marksTag(item.template.marks) +
+          "</span></h4>" +
           page.key +
           "</section>"
         );
@@ -137,6 +151,225 @@
     return /^-?\d+$/.test(text) ? Number(text) : text;
   }
 
+  // ------------------------------------------------------------------- the data file
+
+  function runScript(text) {
+    var script = document.createElement("script");
+    script.text = text;
+    document.head.appendChild(script);
+    script.remove();
+  }
+
+  /* The data file's text from the network, kept in KEPT before it is used; offline (or a
+   * failed reply), the kept copy, this page's or the service worker's. */
+  function fetchKept(url) {
+    return fetch(url)
+      .then(function (response) {
+        if (!response.ok) throw new Error("HTTP " + response.status);
+        return response.text().then(function (text) {
+          var copy = new Response(text, { headers: { "Content-Type": "text/javascript; charset=utf-8" } });
+          return root.caches
+            .open(KEPT)
+            .then(function (cache) {
+              return cache.put(url, copy);
+            })
+            .then(
+              function () {
+                return text;
+              },
+              function () {
+                return text; // a full disk keeps nothing, but these sheets are still made
+              },
+            );
+        });
+      })
+      .catch(function () {
+        return root.caches.match(url).then(function (kept) {
+          if (!kept) throw new Error("unreachable");
+          return kept.text();
+        });
+      });
+  }
+
+  function scriptLoad(url) {
+    return new Promise(function (resolve, reject) {
+      var script = document.createElement("script");
+      script.src = url;
+      script.onload = resolve;
+      script.onerror = function () {
+        script.remove();
+        reject(new Error("unreachable"));
+      };
+      document.head.appendChild(script);
+    });
+  }
+
+  function loader(src) {
+    var loading = null;
+    return function load() {
+      if (root.SheetBuilderData) return Promise.resolve(root.SheetBuilderData);
+      if (!loading) {
+        var url = new URL(src, document.baseURI).href;
+        var kept = /^https?:$/.test(location.protocol) && root.caches && root.fetch;
+        loading = (kept ? fetchKept(url).then(runScript) : scriptLoad(url)).then(function () {
+          if (!root.SheetBuilderData) throw new Error("empty");
+          return root.SheetBuilderData;
+        });
+        loading.catch(function () {
+          loading = null; // try again next time (back online)
+        });
+      }
+      return loading;
+    };
+  }
+
+  // ------------------------------------------------------------------- the form
+
+  function checkedTypes(form) {
+    return Array.from(form.querySelectorAll('input[name="types"]:checked'));
+  }
+
+  function typeTitle(input) {
+    return input.parentElement.textContent.trim();
+  }
+
+  function listed(names) {
+    return names.length < 2 ? names.join("") : names.slice(0, -1).join("; ") + " and " + names[names.length - 1];
+  }
+
+  /* How many versions the types ticked allow (each type's data-versions, from
+   * worksheets.usable_versions), and the types that set that limit. */
+  function versionLimit(form) {
+    var boxes = checkedTypes(form);
+    var most = 26;
+    boxes.forEach(function (input) {
+      most = Math.min(most, Number(input.getAttribute("data-versions")));
+    });
+    var fewest = boxes.filter(function (input) {
+      return Number(input.getAttribute("data-versions")) === most;
+    });
+    return { most: most, limiting: fewest.map(typeTitle), all: boxes.length === fewest.length };
+  }
+
+  /* The Versions field's label, limit and hint follow the types ticked. */
+  function showVersionLimit(form) {
+    var limit = versionLimit(form);
+    var input = form.querySelector("#sb-versions");
+    input.max = String(limit.most);
+    form.querySelector(".sb-versions-range").textContent = "1 to " + limit.most;
+    form.querySelector("#sb-versions-why").textContent =
+      "The types ticked allow up to " +
+      limit.most +
+      " versions: each version has its own numbers for every question, from those the site does not show, and " +
+      listed(limit.limiting) +
+      (limit.limiting.length === 1 ? " has" : " have") +
+      " the fewest." +
+      (limit.all ? "" : " Untick " + (limit.limiting.length === 1 ? "it" : "them") + " to allow more.");
+  }
+
+  /* A refusal in the form's words: what was chosen, and what to change on the form. */
+  function teacherMessage(error, form, options) {
+    var field = error.field;
+    var limit = versionLimit(form);
+    if (field === "types") return "Tick at least one question type.";
+    if (field === "seed") return "The seed must be a whole number, 0 or more (the same seed makes the same sheets).";
+    if (field === "versions" && typeof options.versions === "number" && options.versions > limit.most) {
+      return (
+        "The types ticked allow at most " +
+        limit.most +
+        (limit.most === 1 ? " version" : " versions") +
+        ": every version needs its own numbers for each question, and " +
+        listed(limit.limiting) +
+        (limit.limiting.length === 1 ? " has" : " have") +
+        " no more that the site does not show. Ask for " +
+        limit.most +
+        " or fewer" +
+        (limit.all ? "." : ", or untick " + listed(limit.limiting) + ".")
+      );
+    }
+    if (field === "versions") return "Versions must be a whole number from 1 to " + limit.most + ".";
+    if (error.available !== undefined) {
+      return (
+        "The types ticked hold " +
+        error.available +
+        " marks of questions in all: ask for " +
+        error.available +
+        " marks or fewer, or tick more types."
+      );
+    }
+    if (error.nearest) {
+      return (
+        "No set of questions of the types ticked adds up to exactly " +
+        options.marks +
+        " marks: the nearest totals are " +
+        error.nearest[0] +
+        " and " +
+        error.nearest[1] +
+        ". Change Total marks to one of those, or tick other types."
+      );
+    }
+    return "Total marks must be a whole number, 1 or more.";
+  }
+
+  /* What the status says of a ready-made worksheet's numbers: avoided, or where repeated. */
+  function repeatsNote(sheet) {
+    var repeats = readyMadeRepeats(sheet);
+    if (!repeats.length) return " No question repeats the numbers of a ready-made worksheet on this page.";
+    return (
+      " Too many versions to avoid the ready-made worksheets' numbers everywhere: " +
+      repeats
+        .map(function (r) {
+          return "version " + r.letter + ", question " + r.number + " is as in " + r.where;
+        })
+        .join("; ") +
+      ". Fewer versions avoid them."
+    );
+  }
+
+  function madeText(sheet, what) {
+    var count = sheet.versions.length;
+    var each = marksText(sheet.marks) + ", " + sheet.versions[0].items.length + " questions each";
+    var made = {
+      both: count + (count === 1 ? " version" : " versions") + " of " + each + ", with their keys",
+      sheets: count + (count === 1 ? " question sheet" : " question sheets") + " of " + each + " (no keys)",
+      keys:
+        "the answer " +
+        (count === 1 ? "key" : "keys") +
+        " of " +
+        count +
+        (count === 1 ? " version" : " versions") +
+        " of " +
+        each +
+        " (no question sheets)",
+    }[what];
+    return "Made " + made + ", below. Print them with the Print button (each starts a new page).";
+  }
+
+  /* The form's choices, as the plan takes them. */
+  function formOptions(form) {
+    return {
+      types: checkedTypes(form).map(function (input) {
+        return input.value;
+      }),
+      marks: whole(form.querySelector("#sb-marks")),
+      versions: whole(form.querySelector("#sb-versions")),
+      seed: whole(form.querySelector("#sb-seed")),
+      make: (form.querySelector('input[name="make"]:checked') || { value: "both" }).value,
+    };
+  }
+
+  function pages(data, sheet, what) {
+    var made = today();
+    return sheet.versions
+      .map(function (version) {
+        return (
+          (what === "keys" ? "" : sheetHtml(data, sheet, version, made)) +
+          (what === "sheets" ? "" : keyHtml(data, sheet, version, made))
+        );
+      })
+      .join("");
+  }
+
   function start() {
     var box = document.querySelector(".sb");
     if (!box) return;
@@ -146,28 +379,11 @@
     var printButton = box.querySelector(".sb-print");
     box.querySelector(".sb-needs-js").hidden = true;
     form.hidden = false;
-    var loading = null;
-
-    function load() {
-      if (root.SheetBuilderData) return Promise.resolve(root.SheetBuilderData);
-      if (!loading) {
-        loading = new Promise(function (resolve, reject) {
-          var script = document.createElement("script");
-          script.src = box.getAttribute("data-src");
-          script.onload = function () {
-            if (root.SheetBuilderData) resolve(root.SheetBuilderData);
-            else reject(new Error("empty"));
-          };
-          script.onerror = function () {
-            loading = null; // try again next time (back online)
-            script.remove();
-            reject(new Error("unreachable"));
-          };
-          document.head.appendChild(script);
-        });
-      }
-      return loading;
-    }
+    var load = loader(box.getAttribute("data-src"));
+    showVersionLimit(form);
+    form.addEventListener("change", function (event) {
+      if (event.target.name === "types") showVersionLimit(form);
+    });
 
     function say(message, isError) {
       status.textContent = message;
@@ -184,54 +400,36 @@
       document.documentElement.classList.add("sb-has-sheets");
     }
 
+    function make(data, options) {
+      var sheet;
+      try {
+        sheet = plan(data, options);
+      } catch (error) {
+        if (!(error instanceof SheetError)) throw error;
+        say("The sheets cannot be made. " + teacherMessage(error, form, options), true);
+        return;
+      }
+      output.innerHTML = pages(data, sheet, options.make);
+      output.hidden = false;
+      printButton.hidden = false;
+      markPath();
+      say(madeText(sheet, options.make) + repeatsNote(sheet));
+    }
+
     form.addEventListener("submit", function (event) {
       event.preventDefault();
-      var types = Array.from(form.querySelectorAll('input[name="types"]:checked')).map(function (input) {
-        return input.value;
-      });
-      var options = {
-        types: types,
-        marks: whole(form.querySelector("#sb-marks")),
-        versions: whole(form.querySelector("#sb-versions")),
-        seed: whole(form.querySelector("#sb-seed")),
-      };
+      var options = formOptions(form);
       say("Loading the questions…");
       load().then(
         function (data) {
-          var sheet;
-          try {
-            sheet = plan(data, options);
-          } catch (error) {
-            if (!(error instanceof SheetError)) throw error;
-            say("The sheets cannot be made: " + error.message + ".", true);
-            return;
-          }
-          var made = today();
-          output.innerHTML = sheet.versions
-            .map(function (version) {
-              return sheetHtml(data, sheet, version, made) + keyHtml(data, sheet, version, made);
-            })
-            .join("");
-          output.hidden = false;
-          printButton.hidden = false;
-          markPath();
-          say(
-            "Made " +
-              sheet.versions.length +
-              (sheet.versions.length === 1 ? " version" : " versions") +
-              " of " +
-              marksText(sheet.marks) +
-              ", " +
-              sheet.versions[0].items.length +
-              " questions each, with their keys, below. Print them with the Print button " +
-              "(each sheet and each key starts a new page).",
-          );
+          make(data, options);
         },
         function () {
           say(
             "The questions could not be loaded (" +
               box.getAttribute("data-src") +
-              "). Open this page once while online; after that the builder works offline.",
+              "): this browser has no copy of them yet. Connect to the internet and press Make the sheets " +
+              "once; from then on the builder works offline in this browser.",
             true,
           );
         },

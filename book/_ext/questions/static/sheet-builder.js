@@ -2,8 +2,8 @@
  * versions, each with its own answer key, made in this browser with no Python and no server.
  *
  * The questions come from the teachers-only data file the build writes (sheet_builder.py:
- * teachers/sheet-data.js, loaded by a <script> element on the first "Make the sheets", so it
- * works from file:// too): every bank template's reserve variants, their sheets and keys as
+ * teachers/sheet-data.js, loaded on the first "Make the sheets" and kept for offline use by
+ * sheet-builder-page.js): every bank template's reserve variants, their sheets and keys as
  * HTML and their graphs as SVG, all computed by physics_figures. This script computes no
  * physics and no key. It repeats physics_figures.worksheets.plan exactly: the same FNV-1a
  * draws (seededOrder), the same subset sums over each type's templates in the same order,
@@ -42,7 +42,8 @@
   }
 
   /* A template's reserve variants in the order a seed draws them; variant 0, when the reserve
-   * holds it, last (worksheets.variant_order). */
+   * holds it, last; before it, the variants a ready-made worksheet prints (template.readyMade)
+   * after all the others (worksheets.variant_order with the ready-made ones to avoid). */
   function variantOrder(template, seed) {
     var drawn = seededOrder(
       template.reserve.filter(function (i) {
@@ -51,11 +52,33 @@
       "worksheet-variants:" + template.key,
       seed,
     );
-    return drawn.concat(
-      template.reserve.filter(function (i) {
-        return !i;
-      }),
-    );
+    var made = template.readyMade || {};
+    return drawn
+      .filter(function (i) {
+        return !(String(i) in made);
+      })
+      .concat(
+        drawn.filter(function (i) {
+          return String(i) in made;
+        }),
+        template.reserve.filter(function (i) {
+          return !i;
+        }),
+      );
+  }
+
+  /* Where a sheet repeats a ready-made worksheet's numbers (worksheets.ready_made_repeats):
+   * [{letter, number, where}]. */
+  function readyMadeRepeats(sheet) {
+    var out = [];
+    sheet.versions.forEach(function (version) {
+      version.items.forEach(function (item, i) {
+        var made = item.template.readyMade || {};
+        if (String(item.variant) in made)
+          out.push({ letter: version.letter, number: i + 1, where: made[item.variant] });
+      });
+    });
+    return out;
   }
 
   /* How many versions a template can give (worksheets.usable_versions, in a fresh kit). */
@@ -122,6 +145,8 @@
     subsetSums: Draw.subsetSums,
     chooseTemplates: chooseTemplates,
     variantOrder: variantOrder,
+    usableVersions: usableVersions,
+    readyMadeRepeats: readyMadeRepeats,
     plan: plan,
     SheetError: SheetError,
   };

@@ -1,0 +1,61 @@
+"""Where a sheet's choice questions fall on printed pages (tests/test_sheet_print.py): read a PDF
+page by page with pdftotext and find, in order, each choice part's stem and its answer line.
+
+Text is compared by its letters alone (a PDF's spaces, hyphens and symbols are not the
+source's), from a running position, so a stem that begins like an earlier one is found after it."""
+
+from __future__ import annotations
+
+import re
+import subprocess
+from pathlib import Path
+
+from physics_figures.worksheets import Version
+
+ANSWER_LINE = "AnswerABCorD"
+STEM_LETTERS = 40
+
+
+def letters(text: str) -> str:
+    return re.sub(r"[^A-Za-z]", "", text)
+
+
+def pdf_pages(path: Path) -> list[str]:
+    info = subprocess.run(["pdfinfo", str(path)], capture_output=True, text=True, check=True).stdout
+    count = int(re.search(r"Pages:\s+(\d+)", info)[1])
+    return [subprocess.run(["pdftotext", "-enc", "UTF-8", "-f", str(n), "-l", str(n), str(path), "-"],
+                           capture_output=True, text=True, check=True).stdout for n in range(1, count + 1)]
+
+
+def _stem(question, index: int) -> str:
+    """The words a choice part starts from: the question's text for its first part, else the
+    part's own prompt."""
+    source = re.sub(r"<[^>]+>", "", question.text_html()) if index == 0 else question.parts[index].prompt
+    return letters(source)[:STEM_LETTERS]
+
+
+def split_choices(pages: list[str], versions: list[Version]) -> list[str]:
+    """Each choice part whose stem and answer line (after its options) print on different
+    pages, as "version A, question 3 (key): stem on page 2, answer line on page 3"."""
+    text, starts = "", []
+    for page in pages:
+        starts.append(len(text))
+        text += letters(page)
+
+    def page_of(offset: int) -> int:
+        return max(n for n, start in enumerate(starts) if start <= offset) + 1
+
+    split, cursor = [], 0
+    for version in versions:
+        for number, item in enumerate(version.items, start=1):
+            for index, part in enumerate(item.question.parts):
+                if part.kind != "mcq":
+                    continue
+                stem = text.find(_stem(item.question, index), cursor)
+                answer = text.find(ANSWER_LINE, max(stem, 0))
+                assert stem >= 0 and answer >= 0, (version.letter, number, item.template.key, _stem(item.question, index))
+                if page_of(stem) != page_of(answer):
+                    split.append(f"version {version.letter}, question {number} ({item.template.key}): stem on page "
+                                 f"{page_of(stem)}, answer line on page {page_of(answer)}")
+                cursor = answer + len(ANSWER_LINE)
+    return split

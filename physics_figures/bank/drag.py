@@ -781,6 +781,7 @@ def drag_law_terminal_ratio(power: float = 2, grams_a: float = 20.0, grams_b: fl
     ga, gb, va = n(grams_a, 2), n(grams_b, 2), n(speed_a, 2)
     root = f"√({gb} / {ga})" if power == 2 else f"({gb} / {ga})"
     forgot_root = "square root forgotten" if power == 2 else "square root taken"
+    factor = "√(m_B / m_A)" if power == 2 else "m_B / m_A"  # what B's speed is A's times
     return Question(
         key="drag-law-terminal-ratio",
         text=(f"Two balls A and B have the same size and shape, so the air resistance on each is {law}, "
@@ -801,8 +802,9 @@ def drag_law_terminal_ratio(power: float = 2, grams_a: float = 20.0, grams_b: fl
                              "of the ratio of the masses." if power == 2 else
                              "The law is F = kv, so v itself is proportional to the mass: no square root."),
                      Mistake("masses the wrong way up", speed_a * terminal_velocity_ratio(1 / ratio, power=power),
-                             "You divided B's terminal speed by the ratio. B is heavier, so it needs more "
-                             "air resistance, and so a higher speed, to balance its weight."),
+                             f"You divided A's terminal speed by {factor}: the masses the wrong way up, so "
+                             "B came out slower than A. B is heavier, so it needs more air resistance, and so "
+                             f"a higher speed, to balance its weight: multiply A's terminal speed by {factor}."),
                      Mistake("same terminal speed as A", speed_a,
                              "Without air resistance both would fall alike. With it, the heavier ball "
                              "needs a larger drag, so a higher speed, before the drag equals its weight."),

@@ -176,5 +176,5 @@ def test_repeats_the_site_names_a_repeated_answer_and_givens_under_another_law()
     found = repeats_the_site(skydiver_velocity_time(terminal=61.0, mass=70.0),
                              [skydiver_velocity_time(terminal=45.0, mass=70.0)])
     assert found == ["drag force at terminal velocity = 687, as in site variant 0"]
-    found = repeats_the_site(drag_law_terminal_ratio(1, 20.0, 80.0, 15.0), [drag_law_terminal_ratio(2, 20.0, 80.0, 15.0)])
+    found = repeats_the_site(drag_law_terminal_ratio(1, 45.0, 65.0, 5.5), [drag_law_terminal_ratio(2, 45.0, 65.0, 5.5)])
     assert found[0] == "the givens of site variant 0"

@@ -1,14 +1,19 @@
-# ruff: noqa: RUF002, RUF003  (question text is typeset: true minus, times, Greek letters)
+# ruff: noqa: RUF001, RUF002, RUF003  (question text is typeset: true minus, times, Greek letters)
 """Issue 37, the new templates read as an examiner would: each finding, checked over every variant."""
 
 from __future__ import annotations
 
+import dataclasses
 import math
+import re
+from decimal import Decimal
 
 import pytest
 from test_new_templates_b import _law_power, _printed
+from working_lines import wrong_steps
 
 from physics_figures.bank import TEMPLATES
+from physics_figures.models import reynolds_number, sphere_drag_constant, stokes_reynolds_number
 
 
 def _variants(key):
@@ -64,3 +69,60 @@ def test_both_balls_are_real_and_fall_at_plausible_speeds_under_either_law(index
     predicted = question.parts[0].value
     assert predicted == pytest.approx(_reached(given["mass of B"], given["diameter"]), rel=0.3), power
     assert predicted < 50
+
+
+def _checkable(question):
+    """The question with its scheme written as tests/working_lines.py reads arithmetic: a number
+    printed with a power of ten (3.35 × 10⁻⁸) in full, with the same figures (0.0000000335); π as
+    its number."""
+    powers = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
+
+    def in_full(found: re.Match) -> str:
+        return format(Decimal(found[1]).scaleb(int(found[2].translate(powers))), "f")
+
+    def text(line: str) -> str:
+        line = re.sub(r"(\d+(?:\.\d+)?) × 10([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)", in_full, line)
+        line = re.sub(r"(\d+(?:\.\d+)?) × 10<sup>([−-]?\d+)</sup>",
+                      lambda m: format(Decimal(m[1]).scaleb(int(m[2].replace("−", "-"))), "f"), line)
+        return line.replace("π", f" × {math.pi!r}")
+
+    return dataclasses.replace(question, mark_scheme=tuple(
+        dataclasses.replace(mark, text=text(mark.text)) for mark in question.mark_scheme))
+
+
+@pytest.mark.parametrize(("index", "question"), _variants("stokes-terminal-speed"))
+def test_stokes_working_gives_the_printed_answers_from_its_printed_numbers(index, question):
+    """Issue 37: (a)'s working printed V to 3 s.f., and ρgV from it gave another third figure than
+    the key in 9 of 20 variants. Each step, worked from its numbers as printed, gives its result."""
+    wrong, checked = wrong_steps(_checkable(question))
+    assert checked >= 3 and not wrong, wrong
+
+
+@pytest.mark.parametrize(("index", "question"), _variants("stokes-terminal-speed"))
+def test_stokes_law_holds_for_every_variant(index, question):
+    """Issue 37: the Reynolds number reached 0.997. Stokes' law holds in creeping flow: Re = ρvd/η
+    (d the diameter) below 0.1, where Oseen's correction (3Re/16) stays under 2 %."""
+    given = _printed(question)
+    speed = question.parts[1].value
+    reynolds = given["density of the liquid"] * speed * 2 * given["radius"] / 1000 / given["viscosity"]
+    assert reynolds < 0.1, reynolds
+
+
+def test_the_models_refuse_stokes_law_outside_creeping_flow_by_name():
+    assert reynolds_number(1260.0, 0.05, 0.004, 1.4) == pytest.approx(0.18)
+    assert stokes_reynolds_number(1260.0, 0.02, 0.003, 1.4) == pytest.approx(0.054)
+    with pytest.raises(ValueError, match=r"reynolds_number must be below 0\.1 for Stokes' law .*"
+                                         r"\(got reynolds_number=0\.18"):
+        stokes_reynolds_number(1260.0, 0.05, 0.004, 1.4)
+    with pytest.raises(ValueError, match=r"viscosity must be positive \(got viscosity=0\.0 Pa s\)"):
+        reynolds_number(1260.0, 0.05, 0.004, 0.0)
+    # a golf ball, 4.3 cm: k = ½ × 0.47 × 1.2 × π × 0.0215² = 4.10 × 10⁻⁴ kg m⁻¹
+    assert sphere_drag_constant(0.043) == pytest.approx(0.5 * 0.47 * 1.2 * math.pi * 0.0215**2)
+    with pytest.raises(ValueError, match=r"diameter must be positive"):
+        sphere_drag_constant(-0.01)
+
+
+def test_a_stokes_variant_outside_creeping_flow_is_refused_by_name():
+    """The printed variant of issue 25 (0.26 g, 2.0 mm, η = 1.4 Pa s) had Re = 0.15: refused now."""
+    with pytest.raises(ValueError, match=r"reynolds_number must be below 0\.1 .*\(got reynolds_number=0\.14"):
+        TEMPLATES["stokes-terminal-speed"].build(grams=0.26, radius_mm=2.0)

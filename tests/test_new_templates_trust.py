@@ -126,3 +126,24 @@ def test_a_stokes_variant_outside_creeping_flow_is_refused_by_name():
     """The printed variant of issue 25 (0.26 g, 2.0 mm, η = 1.4 Pa s) had Re = 0.15: refused now."""
     with pytest.raises(ValueError, match=r"reynolds_number must be below 0\.1 .*\(got reynolds_number=0\.14"):
         TEMPLATES["stokes-terminal-speed"].build(grams=0.26, radius_mm=2.0)
+
+
+@pytest.mark.parametrize(("index", "question"), _variants("graph-lorry-speed-momentum-time"))
+def test_every_lorry_speeds_up_as_a_loaded_lorry_can(index, question):
+    """Issue 37: lorries sped up at 3.5 m s⁻², and one needed 565 kW. From the graph each variant
+    draws and its printed mass: a loaded lorry's 0.5 to 1.5 m s⁻², and at most 300 kW (the
+    resultant force, the graph's gradient, × the speed at the end)."""
+    mass = _printed(question)["mass"]
+    (_, p0), (t1, p1), (t2, p2), _ = question.graph.points
+    force = (p2 - p1) / (t2 - t1)
+    assert p0 == p1 and 0.5 <= force / mass <= 1.5, force / mass
+    assert force * p2 / mass <= 300e3, force * p2 / mass
+
+
+@pytest.mark.parametrize(("values", "message"), [
+    ({"speed_before": 12.0, "speed_after": 26.0, "lasts": 4.0}, r"lasts must give a lorry's acceleration, 0\.5 to 1\.5"),
+    ({"mass": 9000.0, "speed_before": 8.0, "speed_after": 23.0, "lasts": 10.0}, r"must need at most 300 kW"),
+])
+def test_a_lorry_beyond_a_lorry_is_refused_by_name(values, message):
+    with pytest.raises(ValueError, match=message):
+        TEMPLATES["graph-lorry-speed-momentum-time"].build(**values)

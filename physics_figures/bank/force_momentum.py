@@ -684,6 +684,24 @@ def force_from_momentum_graph_choice(story: float = 0) -> Question:
 
 
 c_answer, d_answer, mass_given = sympy.symbols("c d mass_given")
+#: A loaded lorry speeds up at about 0.5 to 1.5 m s^-2 (issue 37: 3.5 m s^-2 is a sports car's),
+#: and its engine gives a few hundred kW at most: the resultant force × the speed at the end of
+#: the speeding up stays at or below this, W.
+LORRY_ACCELERATION = (0.5, 1.5)
+LORRY_POWER = 300e3
+
+
+def _lorry_within_its_engine(mass: float, gain_in_momentum: float, lasts: float, speed_after: float) -> None:
+    """Refuse a lorry that speeds up harder, or needs more power, than a lorry does."""
+    force = average_force(gain_in_momentum, lasts)  # the gradient of the momentum-time graph
+    rate = acceleration(force, mass)
+    if not LORRY_ACCELERATION[0] <= rate <= LORRY_ACCELERATION[1]:
+        raise ValueError(f"lasts must give a lorry's acceleration, {LORRY_ACCELERATION[0]:g} to "
+                         f"{LORRY_ACCELERATION[1]:g} m s^-2 (got lasts={lasts!r} s: {rate:.2g} m s^-2)")
+    if force * speed_after > LORRY_POWER:
+        raise ValueError(f"mass, speed_after and lasts must need at most {LORRY_POWER / 1000:g} kW, a lorry "
+                         f"engine's power (got mass={mass!r}, speed_after={speed_after!r}, lasts={lasts!r}: "
+                         f"{force * speed_after / 1000:.0f} kW)")
 
 
 def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 8.0, speed_after: float = 20.0,
@@ -693,9 +711,11 @@ def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 
     shape"). A lorry's momentum runs to tens of thousands of N s, so the axis grows with it
     (parts.graph.value_axis). Readings earn B1 within half a small square; each calculation C1
     A1, as 9702/21/M/J/23 Q3 reads a block's momentum off its graph, and 9702/21/M/J/16
-    Q3(b)(ii) marks a change in momentum C1 then its result A1."""
+    Q3(b)(ii) marks a change in momentum C1 then its result A1. The lorry speeds up as a loaded
+    lorry can (_lorry_within_its_engine)."""
     history = MomentumHistory((0.0, begins, begins + lasts, 20.0),
                               (momentum(mass, speed_before),) * 2 + (momentum(mass, speed_after),) * 2)
+    _lorry_within_its_engine(mass, history.momenta[2] - history.momenta[1], lasts, speed_after)
     before, after = (float(p) for p in history.momenta[1:3])
     _, top, division = value_axis(after)
     tolerance = division / 2

@@ -12,8 +12,10 @@ import pytest
 from test_new_templates_b import _law_power, _printed
 from working_lines import wrong_steps
 
+from physics_figures import textformat
 from physics_figures.bank import TEMPLATES
 from physics_figures.models import reynolds_number, sphere_drag_constant, stokes_reynolds_number
+from physics_figures.parts import OPTION_LETTERS
 
 
 def _variants(key):
@@ -147,3 +149,23 @@ def test_every_lorry_speeds_up_as_a_loaded_lorry_can(index, question):
 def test_a_lorry_beyond_a_lorry_is_refused_by_name(values, message):
     with pytest.raises(ValueError, match=message):
         TEMPLATES["graph-lorry-speed-momentum-time"].build(**values)
+
+
+@pytest.mark.parametrize(("index", "question"), _variants("falling-graph-choice"))
+def test_each_skydiver_story_and_its_sketches_tell_one_story(index, question):
+    """Issue 37: the parachute variant said she "falls at her terminal velocity", and every sketch
+    started from rest; its feedback put the largest deceleration at the start of a curve the key
+    calls "ever more quickly, then ever more slowly". Each option starts where the story starts."""
+    words = textformat.to_plain(question.text)
+    (part,) = question.parts
+    key = part.options[OPTION_LETTERS.index(part.answer)]
+    at_terminal = "at her terminal velocity" in words
+    assert at_terminal != ("jumps from" in words), words
+    for option in part.options:
+        shape = option.text.split(": ", 1)[1]
+        if at_terminal:  # level at her terminal velocity before the parachute opens
+            assert shape.startswith("starts at a positive value, stays constant, then"), option.text
+        elif key.sketch.quantity == "velocity" and option is key:
+            assert shape.startswith("starts at zero"), option.text
+    if "ever more quickly, then ever more slowly" in key.text:
+        assert not [o.feedback for o in part.options if "most at the start" in o.feedback]

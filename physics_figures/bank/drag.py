@@ -22,6 +22,7 @@ from ..models import (
     stokes_reynolds_number,
     terminal_velocity,
     terminal_velocity_ratio,
+    time_to_terminal_velocity,
     upthrust,
     velocity_from_rest,
     weight,
@@ -1014,16 +1015,25 @@ def _relabel(sketch: Sketch, quantity: str, symbol: str, scale: float = 1.0) -> 
     return Sketch(quantity, symbol, tuple((t, scale * y) for t, y in sketch.points))
 
 
+#: "At her terminal velocity" in a sketch: within this fraction of it, so the line starts level.
+_AT_TERMINAL_IN_SKETCH = 0.001
+
+
 def _opening_sketches() -> dict[str, Sketch]:
     """Velocity before and after the parachute opens (models.skydive), and the misconceptions:
-    she moves upwards, she stops, her speed drops at once."""
+    she moves upwards, she stops, her speed drops at once. The story (_OPENS) starts with her
+    falling at her terminal velocity, so every sketch starts when the model has her there
+    (time_to_terminal_velocity, within 0.1 %), not at the jump (issue 37: they started from rest), with that
+    moment as t = 0."""
     dive = skydive(**_SKYDIVER)
-    opens = dive.parachute_opens_at
-    times = numpy.linspace(0.0, dive.duration, _SKETCH_POINTS)
+    start = time_to_terminal_velocity(dive.terminal_velocity_freefall, within=_AT_TERMINAL_IN_SKETCH)
+    opens = dive.parachute_opens_at - start
+    times = numpy.linspace(start, dive.duration, _SKETCH_POINTS)
     speeds = dive.velocity_at(times)
+    times = times - start
     before = [(t, v) for t, v in zip(times, speeds, strict=True) if t < opens]
     after = [(t, v) for t, v in zip(times, speeds, strict=True) if t >= opens]
-    at_opening = float(dive.velocity_at(opens))
+    at_opening = float(dive.velocity_at(dive.parachute_opens_at))
     slow = dive.terminal_velocity_parachute
 
     def sketch(points) -> Sketch:
@@ -1108,8 +1118,9 @@ def _skydiver_story(index: int):
          ("She slows down only until the drag equals her weight again, at the new terminal velocity. Her "
          "velocity never reaches zero."), opening["stops"]),
         ("her speed drops at once",
-         ("A change of velocity takes time: the drag is larger than her weight, so she decelerates, most at "
-         "the start, and her velocity falls along a curve to the new terminal velocity."), opening["at once"]),
+         ("A change of velocity takes time: while the canopy opens the drag grows larger than her weight, so "
+         "she decelerates, most just after it has opened, and her velocity falls along a curve to the new "
+         "terminal velocity."), opening["at once"]),
     ))
 
 

@@ -169,3 +169,21 @@ def test_each_skydiver_story_and_its_sketches_tell_one_story(index, question):
             assert shape.startswith("starts at zero"), option.text
     if "ever more quickly, then ever more slowly" in key.text:
         assert not [o.feedback for o in part.options if "most at the start" in o.feedback]
+
+
+#: Named mistakes the examiner found no student makes (issue 37).
+NO_STUDENT_MAKES = {"difference of the momenta after", "momentum ÷ distance"}
+
+
+@pytest.mark.parametrize("key", sorted(TEMPLATES))
+def test_no_named_mistake_is_one_no_student_makes(key):
+    named = {m.name for q in TEMPLATES[key].variants for p in q.parts for m in getattr(p, "mistakes", ())}
+    assert not named & NO_STUDENT_MAKES, key
+
+
+@pytest.mark.parametrize(("index", "question"), _variants("collision-third-law"))
+def test_the_force_on_b_names_the_mass_left_out(index, question):
+    """In its place, a mistake students make: B's change in velocity ÷ the time (the acceleration)."""
+    force = question.parts[-1]
+    (left_out,) = [m.value for m in force.mistakes if m.name == "mass left out"]
+    assert left_out == pytest.approx(abs(force.value) / _printed(question)["mass of B"])

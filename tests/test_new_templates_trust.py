@@ -187,3 +187,16 @@ def test_the_force_on_b_names_the_mass_left_out(index, question):
     force = question.parts[-1]
     (left_out,) = [m.value for m in force.mistakes if m.name == "mass left out"]
     assert left_out == pytest.approx(abs(force.value) / _printed(question)["mass of B"])
+
+
+@pytest.mark.parametrize("key", sorted(TEMPLATES))
+def test_the_positive_direction_is_worded_as_a_sentence(key):
+    """Issue 37: "Momentum is positive in towards the wall". The stories say "Take momentum towards
+    the wall as positive" (or upwards, in its direction of motion)."""
+    bad = [textformat.to_plain(q.text) for q in TEMPLATES[key].variants
+           if re.search(r"positive in (towards|upwards|downwards|away)", textformat.to_plain(q.text))]
+    assert not bad, bad
+    if key == "force-from-momentum-graph-choice":
+        for question in TEMPLATES[key].variants:
+            assert re.search(r"Take momentum (towards the wall|upwards|in (its|her) direction of motion) as "
+                             r"positive\.", textformat.to_plain(question.text)), question.text

@@ -589,21 +589,21 @@ def mass_from_velocity_change(force: float = 6.0, duration: float = 2.5, speed_b
 
 
 #: Bodies whose momentum–time graph the "which graph?" item shows: (what it is, how it moves,
-#: the positive direction, its momentum-time corners (s, N s), the graph's small squares in
-#: time, s). Straight lines: the resultant force is constant in each piece (notes: "A straight
+#: the positive direction as "Take momentum ... as positive" words it, its momentum-time corners
+#: (s, N s), the graph's small squares in time, s). Straight lines: the resultant force is constant in each piece (notes: "A straight
 #: line means a constant force").
 _MOMENTUM_STORIES = (
-    ("a car", "as it moves along a straight road", "its direction of motion",
+    ("a car", "as it moves along a straight road", "in its direction of motion",
      ((0.0, 0.0), (4.0, 12000.0), (10.0, 12000.0), (16.0, 0.0)), 0.5),
     ("a trolley", "as it is pushed from rest and then rolls freely along a level, frictionless track",
-     "its direction of motion", ((0.0, 0.0), (1.5, 2.4), (6.0, 2.4)), 0.1),
+     "in its direction of motion", ((0.0, 0.0), (1.5, 2.4), (6.0, 2.4)), 0.1),
     ("a ball thrown vertically upwards", ("from the moment it leaves the hand until it is back at the "
      "same height (air resistance is negligible)"), "upwards", ((0.0, 3.0), (4.0, -3.0)), 0.1),
     ("a ball", "as it hits a wall at right angles and bounces straight back", "towards the wall",
      ((0.0, 2.4), (0.02, 2.4), (0.05, -1.6), (0.1, -1.6)), 0.002),
-    ("a lorry", "as it brakes to rest on a straight road", "its direction of motion",
+    ("a lorry", "as it brakes to rest on a straight road", "in its direction of motion",
      ((0.0, 60000.0), (10.0, 0.0), (20.0, 0.0)), 0.5),
-    ("a cyclist", "as she speeds up along a straight, level road", "her direction of motion",
+    ("a cyclist", "as she speeds up along a straight, level road", "in her direction of motion",
      ((0.0, 240.0), (4.0, 240.0), (12.0, 640.0), (20.0, 640.0)), 0.5),
 )
 
@@ -669,8 +669,8 @@ def force_from_momentum_graph_choice(story: float = 0) -> Question:
     letter = OPTION_LETTERS[place]
     return Question(
         key="force-from-momentum-graph-choice",
-        text=(f"The graph shows how the momentum of {what} varies with time {how}. Momentum is positive "
-              f"in {positive}."),
+        text=(f"The graph shows how the momentum of {what} varies with time {how}. Take momentum "
+              f"{positive} as positive."),
         givens=(),
         graph=graph,
         parts=(ChoicePart(f"Which graph shows how the resultant force on {what} varies "

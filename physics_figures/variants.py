@@ -262,7 +262,8 @@ class Template:
         if not self.draws:
             return tuple(chosen)
         rng = random.Random(self.key)  # the same variants in every build
-        letters = Counter(_key_letters(question))
+        site_count = self._site_count()
+        letters = (Counter(_key_letters(question)), Counter())  # the site's variants', the reserve's
         printed_as = {_printed_as(question)}  # a variant must print differently from the others
         for _ in range(_MAX_TRIES):
             if len(chosen) == self.variant_count:
@@ -271,11 +272,13 @@ class Template:
             if any(values == taken for taken, _ in chosen):
                 continue
             question = self._checked(values)
-            site = [q for _, q in chosen[:self._site_count()]] if len(chosen) >= self._site_count() else []
-            if (question is not None and self._letters_fit(question, letters)
+            in_site = len(chosen) < site_count
+            site = [] if in_site else [q for _, q in chosen[:site_count]]
+            group, size = (letters[0], site_count) if in_site else (letters[1], self.variant_count - site_count)
+            if (question is not None and self._letters_fit(question, group, size)
                     and _printed_as(question) not in printed_as and not repeats_the_site(question, site)):
                 chosen.append((values, question))
-                letters.update(_key_letters(question))
+                group.update(_key_letters(question))
                 printed_as.add(_printed_as(question))
         raise ValueError(f"template {self.key} found only {len(chosen)} of {self.variant_count} "
                          f"variants in {_MAX_TRIES} draws: widen its draws")
@@ -295,12 +298,13 @@ class Template:
             return question  # the notes' numbers are what they are
         return None if confused or rounding_ties(question) else question
 
-    def _letters_fit(self, question: Question, letters: Counter) -> bool:
+    def _letters_fit(self, question: Question, letters: Counter, size: int) -> bool:
         """A multiple-choice draw is refused when its key's letter already has its share of the
-        variants (issue 25: no letter is the key in more than MOST_OF_ONE_LETTER of them), so the
-        letter never gives the answer away, however many variants the template keeps."""
+        variants it joins (issue 25: no letter is the key in more than MOST_OF_ONE_LETTER of them),
+        counted over the site's variants and over the reserve's apart (issue 37: B was the key in 5
+        of the site's 10), so the letter never gives the answer away in what a student meets."""
         drawn = _key_letters(question)
-        most = MOST_OF_ONE_LETTER * self.variant_count * len(drawn)
+        most = MOST_OF_ONE_LETTER * size * len(drawn)
         return all(letters[letter] + drawn.count(letter) <= most for letter in set(drawn))
 
     def variant(self, index: int) -> Question:

@@ -714,7 +714,7 @@ def _ball_terminal_speed(grams: float, diameter_cm: float, name: str = "grams") 
     if not _BALL_IN_AIR_DENSITY[0] <= density <= _BALL_IN_AIR_DENSITY[1]:
         raise ValueError(f"{name} and diameter_cm must give a ball of {_BALL_IN_AIR_DENSITY[0]:g} to "
                          f"{_BALL_IN_AIR_DENSITY[1]:g} kg m^-3, a table-tennis ball to solid rubber (got "
-                         f"{name}={grams!r}, diameter_cm={diameter_cm!r}: {density:.0f} kg m^-3)")
+                         f"{name}={grams!r}, diameter_cm={diameter_cm!r}: {n(density, 2)} kg m^-3)")
     return terminal_velocity(grams / 1000, sphere_drag_constant(diameter))
 
 
@@ -817,9 +817,9 @@ def drag_law_terminal_ratio(power: float = 2, grams_a: float = 20.0, grams_b: fl
     speed_b = speed_a * terminal_velocity_ratio(ratio, power=power)
     reached = _ball_terminal_speed(grams_b, diameter_cm, "grams_b")
     if abs(speed_b / reached - 1) > _LINEAR_LAW_SPREAD:
-        raise ValueError(f"grams_b / grams_a = {ratio:.2g} makes {law} predict {speed_b:.0f} m s^-1 for B, "
-                         f"where a ball of its size and mass reaches {reached:.0f} m s^-1: keep the prediction "
-                         f"within {_LINEAR_LAW_SPREAD:.0%} (got grams_a={grams_a!r}, grams_b={grams_b!r})")
+        raise ValueError(f"grams_b / grams_a = {n(ratio, 2)} makes {law} predict {n(speed_b, 2)} m s^-1 for B, "
+                         f"where a ball of its size and mass reaches {n(reached, 2)} m s^-1: keep the prediction "
+                         f"within {n(100 * _LINEAR_LAW_SPREAD, 2)} % (got grams_a={grams_a!r}, grams_b={grams_b!r})")
     w_a, w_b = weight(m_a), weight(m_b)
     a = falling_acceleration(m_b, w_a)  # at A's terminal speed the drag on B is A's weight
     ga, gb, va, d = n(grams_a, 2), n(grams_b, 2), n(speed_a, 2), n(diameter_cm, 2)

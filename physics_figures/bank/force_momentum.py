@@ -697,11 +697,11 @@ def _lorry_within_its_engine(mass: float, gain_in_momentum: float, lasts: float,
     rate = acceleration(force, mass)
     if not LORRY_ACCELERATION[0] <= rate <= LORRY_ACCELERATION[1]:
         raise ValueError(f"lasts must give a lorry's acceleration, {LORRY_ACCELERATION[0]:g} to "
-                         f"{LORRY_ACCELERATION[1]:g} m s^-2 (got lasts={lasts!r} s: {rate:.2g} m s^-2)")
+                         f"{LORRY_ACCELERATION[1]:g} m s^-2 (got lasts={lasts!r} s: {n(rate, 2)} m s^-2)")
     if force * speed_after > LORRY_POWER:
         raise ValueError(f"mass, speed_after and lasts must need at most {LORRY_POWER / 1000:g} kW, a lorry "
                          f"engine's power (got mass={mass!r}, speed_after={speed_after!r}, lasts={lasts!r}: "
-                         f"{force * speed_after / 1000:.0f} kW)")
+                         f"{n(force * speed_after / 1000, 3)} kW)")
 
 
 def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 8.0, speed_after: float = 20.0,

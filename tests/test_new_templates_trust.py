@@ -200,3 +200,12 @@ def test_the_positive_direction_is_worded_as_a_sentence(key):
         for question in TEMPLATES[key].variants:
             assert re.search(r"Take momentum (towards the wall|upwards|in (its|her) direction of motion) as "
                              r"positive\.", textformat.to_plain(question.text)), question.text
+
+
+@pytest.mark.parametrize("key", sorted(TEMPLATES))
+def test_every_working_line_with_a_power_of_ten_or_pi_gives_its_printed_result(key):
+    """The check tests/test_printed_numbers.py makes, on the steps it cannot read (3.35 × 10⁻⁸,
+    6π): worked from its numbers as printed, each step gives its printed result."""
+    wrong = [f"variant {index}: {step}" for index, question in enumerate(TEMPLATES[key].variants)
+             for step in wrong_steps(_checkable(question))[0]]
+    assert not wrong, wrong

@@ -792,6 +792,25 @@ def drag_law_constant(power: float = 2, grams: float = 45.0, diameter_cm: float 
     )
 
 
+def _two_balls_speeds(power: int, grams_a: float, grams_b: float, diameter_cm: float) -> tuple[float, float]:
+    """A's terminal speed as printed, the one a ball of its mass and diameter reaches in air
+    (_ball_terminal_speed), and B's as the law predicts it from A's. Under F = kv the prediction
+    must stay within _LINEAR_LAW_SPREAD of what B itself reaches (issue 37: 65–86 m s⁻¹ before);
+    a variant that does not is refused, by name."""
+    if grams_b <= grams_a:
+        raise ValueError(f"grams_b must be more than grams_a: B is the heavier ball, which passes A's "
+                         f"terminal speed on its way to its own (got grams_a={grams_a!r}, grams_b={grams_b!r})")
+    speed_a = _printed_speed(_ball_terminal_speed(grams_a, diameter_cm, "grams_a"))
+    speed_b = speed_a * terminal_velocity_ratio(grams_b / grams_a, power=power)
+    reached = _ball_terminal_speed(grams_b, diameter_cm, "grams_b")
+    if abs(speed_b / reached - 1) > _LINEAR_LAW_SPREAD:
+        raise ValueError(f"grams_b / grams_a = {n(grams_b / grams_a, 2)} makes {_DRAG_LAWS[power][1]} predict "
+                         f"{n(speed_b, 2)} m s^-1 for B, where a ball of its size and mass reaches {n(reached, 2)} "
+                         f"m s^-1: keep the prediction within {n(100 * _LINEAR_LAW_SPREAD, 2)} % (got "
+                         f"grams_a={grams_a!r}, grams_b={grams_b!r})")
+    return speed_a, speed_b
+
+
 def drag_law_terminal_ratio(power: float = 2, grams_a: float = 20.0, grams_b: float = 80.0,
                             diameter_cm: float = 6.0) -> Question:
     """A ratio from a drag law given in the question (issue 25): two balls of one size and shape
@@ -799,27 +818,15 @@ def drag_law_terminal_ratio(power: float = 2, grams_a: float = 20.0, grams_b: fl
     twice as fast with F = kv², four times as fast with F = kv (notes: same size and shape,
     heavier one -> higher terminal velocity). Then the heavier ball's acceleration as it passes
     the lighter one's terminal speed: the drag there is the lighter ball's weight, so
-    a = (m_B g − m_A g) / m_B, whichever the law. A's terminal speed is the one a ball of its mass
-    and diameter reaches in air (_ball_terminal_speed); under F = kv the predicted speed of B stays
-    within _LINEAR_LAW_SPREAD of what B itself would reach, so the law's prediction is plausible
-    (issue 37: 65–86 m s⁻¹ before).
+    a = (m_B g − m_A g) / m_B, whichever the law. The speeds: _two_balls_speeds.
 
     Marks: 9702/02/M/J/06 sets the given drag law equal to the weight (mg = crv_T); 9702/21/M/J/16
     Q3(b)(ii) gives C1 for the working with its numbers, then A1 for the answer."""
     power = int(power)
-    if grams_b <= grams_a:
-        raise ValueError(f"grams_b must be more than grams_a: B is the heavier ball, which passes A's "
-                         f"terminal speed on its way to its own (got grams_a={grams_a!r}, grams_b={grams_b!r})")
     law = _DRAG_LAWS[power][0]
-    speed_a = _printed_speed(_ball_terminal_speed(grams_a, diameter_cm, "grams_a"))
+    speed_a, speed_b = _two_balls_speeds(power, grams_a, grams_b, diameter_cm)
     m_a, m_b = grams_a / 1000, grams_b / 1000
     ratio = grams_b / grams_a
-    speed_b = speed_a * terminal_velocity_ratio(ratio, power=power)
-    reached = _ball_terminal_speed(grams_b, diameter_cm, "grams_b")
-    if abs(speed_b / reached - 1) > _LINEAR_LAW_SPREAD:
-        raise ValueError(f"grams_b / grams_a = {n(ratio, 2)} makes {law} predict {n(speed_b, 2)} m s^-1 for B, "
-                         f"where a ball of its size and mass reaches {n(reached, 2)} m s^-1: keep the prediction "
-                         f"within {n(100 * _LINEAR_LAW_SPREAD, 2)} % (got grams_a={grams_a!r}, grams_b={grams_b!r})")
     w_a, w_b = weight(m_a), weight(m_b)
     a = falling_acceleration(m_b, w_a)  # at A's terminal speed the drag on B is A's weight
     ga, gb, va, d = n(grams_a, 2), n(grams_b, 2), n(speed_a, 2), n(diameter_cm, 2)

@@ -7,6 +7,9 @@ given's ``Draw`` with a seed fixed by the template's key, so every build gives t
 variants. A draw is refused when the physics refuses it (the models raise ValueError),
 when it repeats an earlier variant, or when a named mistake would land inside the band
 that the key accepts at 2 significant figures (then the marker could not tell them apart).
+A reserve variant (the teacher's kit) is refused, too, when it prints a site variant's givens
+or gives one of a site variant's answers (``repeats_the_site``): a student who has met the site's
+question must not meet its numbers, or a key they remember, on a sheet.
 """
 
 from __future__ import annotations
@@ -120,6 +123,28 @@ def rounding_ties(question: Question) -> list[str]:
     return found
 
 
+def _answers(question: Question) -> dict[str, float]:
+    """Each number a key gives (a calculated or read part), to the 3 s.f. a key prints."""
+    return {part.prompt: float(round_number(part.value, 3)) for part in question.parts
+            if part.kind in ("numeric", "graph")}
+
+
+def repeats_the_site(question: Question, site: list[Question]) -> list[str]:
+    """How a reserve variant repeats the site's: its printed givens (and graph) all equal a site
+    variant's (a given the text does not print, such as which drag law, does not tell them apart), or a
+    part's key, to 3 s.f., is that part's key in a site variant (say, the same mass, so the same
+    weight). Empty when it repeats none (issue 37)."""
+    found = []
+    givens = (tuple((g.name, g.text, g.unit) for g in question.givens), question.graph)
+    answers = _answers(question)
+    for index, other in enumerate(site):
+        if givens[0] and givens == (tuple((g.name, g.text, g.unit) for g in other.givens), other.graph):
+            found.append(f"the givens of site variant {index}")
+        found += [f"{prompt} = {value:g}, as in site variant {index}"
+                  for prompt, value in _answers(other).items() if answers.get(prompt) == value]
+    return found
+
+
 @dataclass(frozen=True)
 class Template:
     """A question whose numbers are drawn afresh. ``build(**values)`` gives its Question.
@@ -215,6 +240,14 @@ class Template:
         """The variants only the teacher's kit uses (all of them when they are shared)."""
         return range(len(self.values)) if self.shares_variants else range(len(self.site_variants), len(self.values))
 
+    def _site_count(self) -> int:
+        """How many of the variant_count variants the site will ship (site_variants, known before
+        they are drawn); all of them when they are shared."""
+        total = self.variant_count
+        if not self.fresh_numbers and total < SHARED_BELOW:
+            return total
+        return min(total, MIN_VARIANTS) if self.fresh_numbers else total - total // 2
+
     @cached_property
     def values(self) -> tuple[dict[str, float], ...]:
         """The givens of every variant; variant 0 is the printed one."""
@@ -229,7 +262,8 @@ class Template:
         if not self.draws:
             return tuple(chosen)
         rng = random.Random(self.key)  # the same variants in every build
-        letters = Counter(_key_letters(question))
+        site_count = self._site_count()
+        letters = (Counter(_key_letters(question)), Counter())  # the site's variants', the reserve's
         printed_as = {_printed_as(question)}  # a variant must print differently from the others
         for _ in range(_MAX_TRIES):
             if len(chosen) == self.variant_count:
@@ -238,10 +272,13 @@ class Template:
             if any(values == taken for taken, _ in chosen):
                 continue
             question = self._checked(values)
-            if (question is not None and self._letters_fit(question, letters)
-                    and _printed_as(question) not in printed_as):
+            in_site = len(chosen) < site_count
+            site = [] if in_site else [q for _, q in chosen[:site_count]]
+            group, size = (letters[0], site_count) if in_site else (letters[1], self.variant_count - site_count)
+            if (question is not None and self._letters_fit(question, group, size)
+                    and _printed_as(question) not in printed_as and not repeats_the_site(question, site)):
                 chosen.append((values, question))
-                letters.update(_key_letters(question))
+                group.update(_key_letters(question))
                 printed_as.add(_printed_as(question))
         raise ValueError(f"template {self.key} found only {len(chosen)} of {self.variant_count} "
                          f"variants in {_MAX_TRIES} draws: widen its draws")
@@ -261,12 +298,13 @@ class Template:
             return question  # the notes' numbers are what they are
         return None if confused or rounding_ties(question) else question
 
-    def _letters_fit(self, question: Question, letters: Counter) -> bool:
+    def _letters_fit(self, question: Question, letters: Counter, size: int) -> bool:
         """A multiple-choice draw is refused when its key's letter already has its share of the
-        variants (issue 25: no letter is the key in more than MOST_OF_ONE_LETTER of them), so the
-        letter never gives the answer away, however many variants the template keeps."""
+        variants it joins (issue 25: no letter is the key in more than MOST_OF_ONE_LETTER of them),
+        counted over the site's variants and over the reserve's apart (issue 37: B was the key in 5
+        of the site's 10), so the letter never gives the answer away in what a student meets."""
         drawn = _key_letters(question)
-        most = MOST_OF_ONE_LETTER * self.variant_count * len(drawn)
+        most = MOST_OF_ONE_LETTER * size * len(drawn)
         return all(letters[letter] + drawn.count(letter) <= most for letter in set(drawn))
 
     def variant(self, index: int) -> Question:

@@ -141,15 +141,15 @@ def test_the_law_and_the_direction_change_with_the_variant():
 
 
 def test_the_printed_variants_match_the_worked_numbers():
-    """Variant 0, worked by hand: 45 g at 12 m s⁻¹ with F = kv²: k = 0.441 / 144 = 0.0031 kg m⁻¹;
-    20 g and 80 g: v_B = 15 × √4 = 30 m s⁻¹; the pucks: 0.60 cos 40° = 0.46 N s; the shell:
+    """Variant 0, worked by hand: 45 g (a golf ball, 4.3 cm) at 33 m s⁻¹ with F = kv²: k = 0.4415 / 33²
+    = 4.05 × 10⁻⁴, 4.1 × 10⁻⁴ kg m⁻¹ at 2 s.f.; 20 g and 80 g: v_B = 16 × √4 = 32 m s⁻¹; the pucks: 0.60 cos 40° = 0.46 N s; the shell:
     10 − 6.0 cos 40° = 5.4 N s east, 6.0 sin 40° = 3.9 N s south, 4.4 m s⁻¹ at 35.5° south of east."""
-    assert [p.answer_text for p in TEMPLATES["drag-law-constant"].variant(0).parts] == ["0.441 N", "0.0031 kg m⁻¹"]
-    assert TEMPLATES["drag-law-terminal-ratio"].variant(0).parts[0].answer_text == "30 m s⁻¹"
-    # 0.26 g, r = 2.0 mm in a liquid of 1260 kg m⁻³, η = 1.4 Pa s: U = 1260 × 9.81 × 3.35 × 10⁻⁸ N,
-    # v = (2.55 × 10⁻³ − 4.14 × 10⁻⁴) / (6π × 1.4 × 2.0 × 10⁻³) = 0.040 m s⁻¹
+    assert [p.answer_text for p in TEMPLATES["drag-law-constant"].variant(0).parts] == ["0.441 N", "4.1 × 10⁻⁴ kg m⁻¹"]
+    assert TEMPLATES["drag-law-terminal-ratio"].variant(0).parts[0].answer_text == "32 m s⁻¹"
+    # 0.11 g, r = 1.5 mm in a liquid of 1260 kg m⁻³, η = 1.4 Pa s: U = 1260 × 9.81 × 1.414 × 10⁻⁸ N,
+    # v = (1.079 × 10⁻³ − 1.75 × 10⁻⁴) / (6π × 1.4 × 1.5 × 10⁻³) = 0.023 m s⁻¹ (Re = 0.06: Stokes holds)
     stokes = [p.answer_text for p in TEMPLATES["stokes-terminal-speed"].variant(0).parts]
-    assert stokes == ["4.14 × 10⁻⁴ N", "0.040 m s⁻¹"]
+    assert stokes == ["1.75 × 10⁻⁴ N", "0.023 m s⁻¹"]
     assert TEMPLATES["puck-components"].variant(0).parts[0].answer_text == "0.46 N s"
     shell = [p.answer_text for p in TEMPLATES["explosion-two-pieces"].variant(0).parts]
     assert shell == ["5.4 N s (positive: east)", "3.9 N s", "4.4 m s⁻¹", "35.5° south of east"]

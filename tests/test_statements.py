@@ -33,13 +33,13 @@ ROOT = Path(__file__).resolve().parents[1]
 #: - define-momentum: "product of mass and velocity" (9702 syllabus 3.1.3), a vector (the notes);
 #: - define-force: "rate of change of momentum" (9702/21/M/J/16 Q3(b)(i); notes, "Defining force
 #:   as mass times acceleration ... examiner reports say this every year");
-#: - mass-and-weight-defined: 8702/02/O/N/01 Q1, four B1: resists change in motion; scalar /
-#:   constant; effect of a gravitational field on a mass; vector / variable;
+#: - mass-and-weight-defined: 8702/02/O/N/01 Q1, four B1: resists change in motion; constant OR
+#:   scalar; effect of a gravitational field on a mass; variable OR vector (either half earns it);
 #: - define-the-newton: 1 kg given 1 m s⁻² (the notes: the constant in F ∝ Δp/Δt is 1);
 #: - state-first-law: at rest or constant velocity unless a resultant force acts (CIE booklet,
 #:   Newton's laws mark scheme 1, Q1(a));
 #: - state-third-law: "equal and opposite" and "on different bodies" (notes, How to get the
-#:   marks; 9702/21/M/J/15 Q3(c)), the same type of force (notes, Newton's third law);
+#:   marks; 9702/21/M/J/15 Q3(c)); no scheme asks for "the same type of force";
 #: - state-second-law: "(resultant) force proportional/equal to rate of change of momentum"
 #:   (9702/21/M/J/16 Q3(b)(i), 9702/21/M/J/23 Q3(a));
 #: - state-momentum-conservation: "total momentum of a system remains constant" B1, "provided
@@ -51,11 +51,11 @@ ROOT = Path(__file__).resolve().parents[1]
 KEY_WORDS: dict[str, tuple[tuple[str, ...], ...]] = {
     "define-momentum": (("product of mass and velocity",), ("vector", "direction of the velocity")),
     "define-force": (("rate of change of momentum",),),
-    "mass-and-weight-defined": (("mass", "resists a change", "motion"), ("scalar", "same wherever"),
-                                ("weight", "force", "gravitational field"), ("vector", "changes")),
+    "mass-and-weight-defined": (("mass", "resists a change", "motion"), ("either", "scalar", "or", "same wherever"),
+                                ("weight", "force", "gravitational field"), ("either", "vector", "or", "changes")),
     "define-the-newton": (("1 kg", "acceleration of 1 m s"),),
     "state-first-law": (("at rest", "constant velocity", "unless a resultant force"),),
-    "state-third-law": (("different bodies", "same type"),
+    "state-third-law": (("different bodies",),
                         ("equal and opposite", "equal in magnitude", "opposite in direction")),
     "state-second-law": (("resultant force", "proportional", "rate of change of momentum"),),
     "state-momentum-conservation": (("total momentum", "system", "constant"),
@@ -244,3 +244,14 @@ def test_moodle_exports_a_statement_as_an_essay_with_its_marking_points_for_the_
             grader = essay.findtext("graderinfo/text")
             for mark in question.mark_scheme:
                 assert f"{textformat.to_html(mark.text, paragraphs=False)} <strong>B1</strong>" in grader
+
+
+def test_a_point_the_scheme_marks_either_way_takes_either_and_no_point_asks_more_than_its_scheme():
+    """Issue 37. 8702/02/O/N/01 Q1 gives a B1 for "constant OR scalar" and one for "variable OR
+    vector": the points say either earns it (they asked for both). 9702/21/M/J/15 Q3(c) marks the
+    third law as "equal and opposite" on the two bodies: no point asks for "the same type"."""
+    lines = [textformat.to_plain(m.text) for m in bank.TEMPLATES["mass-and-weight-defined"].variant(0).mark_scheme]
+    for line, (one, other) in ((lines[1], ("scalar", "same wherever")), (lines[3], ("vector", "changes"))):
+        assert re.fullmatch(rf"Either: [^;]*{one}[^;]*; or: [^;]*{other}[^;]*", line), line
+    third = [textformat.to_plain(m.text) for m in bank.TEMPLATES["state-third-law"].variant(0).mark_scheme]
+    assert not [line for line in third if "same type" in line.lower()], third

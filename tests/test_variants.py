@@ -24,6 +24,7 @@ from physics_figures.variants import (
     Template,
     accepted_band,
     confusable_mistakes,
+    repeats_the_site,
 )
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -153,3 +154,27 @@ def test_feedback_hints_and_prompts_are_plain_text(template, index):
         texts += [m.feedback for m in getattr(part, "mistakes", ())]
         texts += [o.feedback for o in getattr(part, "options", ())]
         assert not [text for text in texts if tag.search(text)], template.key
+
+
+RESERVED = [t for t in TEMPLATES if not t.shares_variants and len(t.values) > 1]
+
+
+@pytest.mark.parametrize("template", RESERVED, ids=lambda t: t.key)
+def test_no_reserve_variant_repeats_a_site_variants_givens_or_answers(template):
+    """Issue 37: a sheet's question (the reserve) never prints a site variant's givens, nor gives a
+    key (to 3 s.f.) that a site variant gives for the same part: graph-skydiver-terminal's reserve
+    had a site variant's mass (the same drag), drag-law-terminal-ratio a site variant's masses and
+    speed under the other law."""
+    site = [template.variant(i) for i in template.site_variants]
+    repeats = {i: repeats_the_site(template.variant(i), site) for i in template.reserve_variants}
+    assert template.reserve_variants and not {i: r for i, r in repeats.items() if r}, template.key
+
+
+def test_repeats_the_site_names_a_repeated_answer_and_givens_under_another_law():
+    from physics_figures.bank.drag import drag_law_terminal_ratio, skydiver_velocity_time
+
+    found = repeats_the_site(skydiver_velocity_time(terminal=61.0, mass=70.0),
+                             [skydiver_velocity_time(terminal=45.0, mass=70.0)])
+    assert found == ["drag force at terminal velocity = 687, as in site variant 0"]
+    found = repeats_the_site(drag_law_terminal_ratio(1, 45.0, 65.0, 5.5), [drag_law_terminal_ratio(2, 45.0, 65.0, 5.5)])
+    assert found[0] == "the givens of site variant 0"

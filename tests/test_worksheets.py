@@ -3,6 +3,7 @@ Moodle export. Fast tests here; tests/test_worksheets_pdf.py reads the typeset P
 
 from __future__ import annotations
 
+import math
 import re
 import subprocess
 import sys
@@ -308,12 +309,17 @@ def test_moodle_grades_each_mistake_by_the_lines_it_keeps(small_export):
     cloze = _question(root, f"quick-check-3-v{index}-b")
     assert cloze.get("type") == "cloze"
     text = cloze.findtext("questiontext/text")
-    size = format_number(bank.TEMPLATES["quick-check-3"].variant(index).parts[1].value, 3)
-    assert "{2:NUMERICAL:=" + size + ":0.05#" in text
+    value = bank.TEMPLATES["quick-check-3"].variant(index).parts[1].value
+    size = format_number(value, 3)
+
+    def half(of: float) -> str:  # half a unit in the 3rd figure, as the export writes it
+        return format(10 ** (math.floor(math.log10(abs(of))) - 2) / 2, ".10g")
+
+    assert "{2:NUMERICAL:=" + size + f":{half(value)}#" in text
     assert "{1:MULTICHOICE:=" in text
     g_ten = bank.TEMPLATES["quick-check-3"].variant(index).parts[1].answer_for_g(10.0)
-    assert f"%50%{format_number(g_ten, 3)}:0.05#" in text
-    assert "~=-" + size + ":0.05#Right: the minus sign is ignored" in text
+    assert f"%50%{format_number(g_ten, 3)}:{half(g_ten)}#" in text
+    assert "~=-" + size + f":{half(value)}#Right: the minus sign is ignored" in text
 
 
 def test_moodle_units_have_their_forms_and_other_sizes(small_export):

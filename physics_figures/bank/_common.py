@@ -1,4 +1,4 @@
-# ruff: noqa: RUF001, RUF002  (typeset text: true minus, times)
+# ruff: noqa: RUF001, RUF002, RUF003  (typeset text: true minus, times)
 """What the bank's modules share: the units answers are typed in, and how working prints a number."""
 
 from __future__ import annotations
@@ -55,6 +55,10 @@ def _figures(value: float, sig_figs: int, in_full_up_to: int) -> tuple[str, floa
     return format_number(value, sig_figs), float(round_number(value, sig_figs))
 
 
+#: A power of ten as notation.format_number prints it (10⁻⁴), read back.
+_FROM_SUPERSCRIPTS = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
+
+
 def _last_place(printed: str) -> float:
     """The place of a printed number's last digit: 0.01 for 42.25, 10 for 9970."""
     digits = re.sub(r"[^\d.]", "", printed)
@@ -70,8 +74,10 @@ def enough_figures(values: Sequence[float], step: Callable[..., float], printed_
     until step(inputs as printed) rounds to printed_result at its last digit, as an examiner
     checks it. in_full_up_to=3 prints a value exact to 4 figures at 3 s.f. first (687 for 686.7),
     when the working carries an answer printed to 3 s.f."""
-    place = _last_place(printed_result)
-    target = float(re.sub(r"[^\d.\-]", "", printed_result.replace("−", "-")))
+    mantissa, _, power = printed_result.partition("×")  # "1.75 × 10⁻⁴": the power scales both
+    scale = 10.0 ** int(power.strip()[2:].translate(_FROM_SUPERSCRIPTS)) if power else 1.0
+    place = _last_place(mantissa) * scale
+    target = float(re.sub(r"[^\d.\-]", "", mantissa.replace("−", "-"))) * scale
     for sig_figs in range(3, _EXACT_UP_TO + 1):
         printed = [_figures(value, sig_figs, in_full_up_to) for value in values]
         got = step(*(number for _, number in printed))

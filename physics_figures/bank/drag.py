@@ -1,4 +1,4 @@
-# ruff: noqa: RUF001, RUF002  (question text is typeset: true minus, times, Greek letters)
+# ruff: noqa: RUF001, RUF002, RUF003  (question text is typeset: true minus, times, Greek letters)
 """Drag and terminal velocity: the skydiver, falling through a fluid, resultant force and acceleration."""
 
 from __future__ import annotations
@@ -16,15 +16,19 @@ from ..models import (
     power_law_constant,
     power_law_terminal_velocity,
     skydive,
+    sphere_drag_constant,
     sphere_volume,
     stokes_constant,
+    stokes_reynolds_number,
     terminal_velocity,
     terminal_velocity_ratio,
+    time_to_terminal_velocity,
     upthrust,
     velocity_from_rest,
     weight,
 )
 from ..notation import format_number as n
+from ..notation import round_number
 from ..questions import (
     G_TEN,  # the g students use instead of the data's 9.81 m s^-2
     OPTION_LETTERS,
@@ -693,29 +697,60 @@ def _speed_power(speed_text: str, power: int) -> str:
     return speed_text if power == 1 else f"{speed_text}<sup>{power}</sup>"
 
 
-def drag_law_constant(power: float = 2, grams: float = 45.0, speed: float = 12.0) -> Question:
+#: Densities of the balls the drag-law questions drop through air, kg m^-3: a table-tennis ball
+#: (about 80) to solid rubber (about 1500); a golf ball is 1130.
+_BALL_IN_AIR_DENSITY = (80.0, 1500.0)
+#: Under F = kv a heavier ball's terminal speed is predicted as v_A × m_B / m_A; the bank keeps it
+#: within this fraction of what a ball of that size and mass reaches (quadratic drag, the model).
+_LINEAR_LAW_SPREAD = 0.3
+
+
+def _ball_terminal_speed(grams: float, diameter_cm: float, name: str = "grams") -> float:
+    """The terminal speed, m s^-1, that a ball of this mass and diameter reaches falling through
+    still air: D = (1/2) C ρ A v² with a sphere's C (models.fluids), so the story's numbers agree
+    with its ball. Raises ValueError for a ball no real ball is (its density, mass / volume)."""
+    diameter = diameter_cm / 100
+    density = grams / 1000 / sphere_volume(diameter / 2)
+    if not _BALL_IN_AIR_DENSITY[0] <= density <= _BALL_IN_AIR_DENSITY[1]:
+        raise ValueError(f"{name} and diameter_cm must give a ball of {_BALL_IN_AIR_DENSITY[0]:g} to "
+                         f"{_BALL_IN_AIR_DENSITY[1]:g} kg m^-3, a table-tennis ball to solid rubber (got "
+                         f"{name}={grams!r}, diameter_cm={diameter_cm!r}: {n(density, 2)} kg m^-3)")
+    return terminal_velocity(grams / 1000, sphere_drag_constant(diameter))
+
+
+def _printed_speed(speed: float) -> float:
+    """A terminal speed as the question prints it, to 2 s.f. (the keys work from that number)."""
+    return float(round_number(speed, 2))
+
+
+def drag_law_constant(power: float = 2, grams: float = 45.0, diameter_cm: float = 4.3) -> Question:
     """A drag law given in the question (issue 25): the constant k of F = kvⁿ from a terminal
     speed. At terminal speed the resultant force is zero, so kvₜⁿ = mg and k = mg / vₜⁿ (notes:
     "with a given drag formula ... set it equal to W and solve for v or the constant"). The law
-    is F = kv or F = kv² by the variant: the same step, with its own power and unit.
+    is F = kv or F = kv² by the variant: the same step, with its own power and unit. The ball's
+    terminal speed is the one a ball of its mass and diameter reaches in air (_ball_terminal_speed;
+    45 g and 4.3 cm, a golf ball, 33 m s⁻¹), whichever law the question models it with.
 
     Marks: 9702/02/M/J/06 gives the drag law (F = crv) and credits "mg = crv_T"; 9702/21/M/J/16
     Q3(a)(i) gives "force (= mg = 0.15 × 9.81) = 1.5 N" one mark on its own (B1 here), and Q3(b)(ii)
     a C1 for the equation with its numbers before the A1 for the answer."""
     power = int(power)
     law, plain_law, k_unit, k_unit_text, k_units = _DRAG_LAWS[power]
+    speed = _printed_speed(_ball_terminal_speed(grams, diameter_cm))
     mass = grams / 1000
     drag = weight(mass)  # at terminal speed the resultant force is zero
     k = power_law_constant(drag, speed, power=power)
-    gr, v = n(grams, 2), n(speed, 2)
+    gr, v, d = n(grams, 2), n(speed, 2), n(diameter_cm, 2)
     other = 3 - power  # the other law's power: the speed squared when it should not be, or not
     return Question(
         key="drag-law-constant",
-        text=(f"A small ball of mass {gr} g falls vertically through still air. In a model of its fall, the "
+        text=(f"A ball of mass {gr} g and diameter {d} cm falls vertically through still air. In a model of its "
+              "fall, the "
               f"air resistance on it is {law}, where <em>v</em> is its speed and <em>k</em> is a constant. "
               f"The ball reaches a terminal speed of {v} {PER_S}. (a) State the air resistance on the ball "
               "at its terminal speed. (b) Calculate <em>k</em>."),
-        givens=(Given("mass", grams, "g", 2), Given("terminal speed", speed, "m s^-1", 2)),
+        givens=(Given("mass", grams, "g", 2), Given("diameter", diameter_cm, "cm", 2),
+                Given("terminal speed", speed, "m s^-1", 2)),
         parts=(
             Part("air resistance at the terminal speed", drag, "N", "force", shown_sig_figs=3, asks="state",
                  answer_for_g=lambda g: weight(mass, g=g),
@@ -757,39 +792,57 @@ def drag_law_constant(power: float = 2, grams: float = 45.0, speed: float = 12.0
     )
 
 
+def _two_balls_speeds(power: int, grams_a: float, grams_b: float, diameter_cm: float) -> tuple[float, float]:
+    """A's terminal speed as printed, the one a ball of its mass and diameter reaches in air
+    (_ball_terminal_speed), and B's as the law predicts it from A's. Under F = kv the prediction
+    must stay within _LINEAR_LAW_SPREAD of what B itself reaches (issue 37: 65–86 m s⁻¹ before);
+    a variant that does not is refused, by name."""
+    if grams_b <= grams_a:
+        raise ValueError(f"grams_b must be more than grams_a: B is the heavier ball, which passes A's "
+                         f"terminal speed on its way to its own (got grams_a={grams_a!r}, grams_b={grams_b!r})")
+    speed_a = _printed_speed(_ball_terminal_speed(grams_a, diameter_cm, "grams_a"))
+    speed_b = speed_a * terminal_velocity_ratio(grams_b / grams_a, power=power)
+    reached = _ball_terminal_speed(grams_b, diameter_cm, "grams_b")
+    if abs(speed_b / reached - 1) > _LINEAR_LAW_SPREAD:
+        raise ValueError(f"grams_b / grams_a = {n(grams_b / grams_a, 2)} makes {_DRAG_LAWS[power][1]} predict "
+                         f"{n(speed_b, 2)} m s^-1 for B, where a ball of its size and mass reaches {n(reached, 2)} "
+                         f"m s^-1: keep the prediction within {n(100 * _LINEAR_LAW_SPREAD, 2)} % (got "
+                         f"grams_a={grams_a!r}, grams_b={grams_b!r})")
+    return speed_a, speed_b
+
+
 def drag_law_terminal_ratio(power: float = 2, grams_a: float = 20.0, grams_b: float = 80.0,
-                            speed_a: float = 15.0) -> Question:
+                            diameter_cm: float = 6.0) -> Question:
     """A ratio from a drag law given in the question (issue 25): two balls of one size and shape
     (one k), F = kvⁿ. At terminal speed kvⁿ = mg, so vₜ ∝ m^(1/n): four times the mass falls
     twice as fast with F = kv², four times as fast with F = kv (notes: same size and shape,
     heavier one -> higher terminal velocity). Then the heavier ball's acceleration as it passes
     the lighter one's terminal speed: the drag there is the lighter ball's weight, so
-    a = (m_B g − m_A g) / m_B, whichever the law.
+    a = (m_B g − m_A g) / m_B, whichever the law. The speeds: _two_balls_speeds.
 
     Marks: 9702/02/M/J/06 sets the given drag law equal to the weight (mg = crv_T); 9702/21/M/J/16
     Q3(b)(ii) gives C1 for the working with its numbers, then A1 for the answer."""
     power = int(power)
-    if grams_b <= grams_a:
-        raise ValueError(f"grams_b must be more than grams_a: B is the heavier ball, which passes A's "
-                         f"terminal speed on its way to its own (got grams_a={grams_a!r}, grams_b={grams_b!r})")
     law = _DRAG_LAWS[power][0]
+    speed_a, speed_b = _two_balls_speeds(power, grams_a, grams_b, diameter_cm)
     m_a, m_b = grams_a / 1000, grams_b / 1000
     ratio = grams_b / grams_a
-    speed_b = speed_a * terminal_velocity_ratio(ratio, power=power)
     w_a, w_b = weight(m_a), weight(m_b)
     a = falling_acceleration(m_b, w_a)  # at A's terminal speed the drag on B is A's weight
-    ga, gb, va = n(grams_a, 2), n(grams_b, 2), n(speed_a, 2)
+    ga, gb, va, d = n(grams_a, 2), n(grams_b, 2), n(speed_a, 2), n(diameter_cm, 2)
     root = f"√({gb} / {ga})" if power == 2 else f"({gb} / {ga})"
     forgot_root = "square root forgotten" if power == 2 else "square root taken"
+    factor = "√(m_B / m_A)" if power == 2 else "m_B / m_A"  # what B's speed is A's times
     return Question(
         key="drag-law-terminal-ratio",
-        text=(f"Two balls A and B have the same size and shape, so the air resistance on each is {law}, "
+        text=(f"Two balls A and B have the same shape and the same diameter, {d} cm, so the air resistance "
+              f"on each is {law}, "
               "where <em>v</em> is its speed, with the same constant <em>k</em>. Ball A has mass "
               f"{ga} g and falls vertically at a terminal speed of {va} {PER_S}. Ball B has mass {gb} g and "
               "is dropped from rest. Calculate (a) the terminal speed of B and (b) the size of B's "
               f"acceleration at the moment its speed is {va} {PER_S}."),
         givens=(Given("mass of A", grams_a, "g", 2), Given("mass of B", grams_b, "g", 2),
-                Given("terminal speed of A", speed_a, "m s^-1", 2)),
+                Given("diameter", diameter_cm, "cm", 2), Given("terminal speed of A", speed_a, "m s^-1", 2)),
         parts=(
             Part("terminal speed of B", speed_b, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
                  revisit=(f"At terminal speed {'kv²' if power == 2 else 'kv'} = mg, so "
@@ -801,8 +854,9 @@ def drag_law_terminal_ratio(power: float = 2, grams_a: float = 20.0, grams_b: fl
                              "of the ratio of the masses." if power == 2 else
                              "The law is F = kv, so v itself is proportional to the mass: no square root."),
                      Mistake("masses the wrong way up", speed_a * terminal_velocity_ratio(1 / ratio, power=power),
-                             "You divided B's terminal speed by the ratio. B is heavier, so it needs more "
-                             "air resistance, and so a higher speed, to balance its weight."),
+                             f"You divided A's terminal speed by {factor}: the masses the wrong way up, so "
+                             "B came out slower than A. B is heavier, so it needs more air resistance, and so "
+                             f"a higher speed, to balance its weight: multiply A's terminal speed by {factor}."),
                      Mistake("same terminal speed as A", speed_a,
                              "Without air resistance both would fall alike. With it, the heavier ball "
                              "needs a larger drag, so a higher speed, before the drag equals its weight."),
@@ -842,7 +896,7 @@ _BALL_DENSITY = (2500.0, 11300.0)
 viscosity_symbol, radius_symbol = sympy.symbols("viscosity radius")
 
 
-def stokes_terminal_speed(grams: float = 0.26, radius_mm: float = 2.0, density: float = 1260.0,
+def stokes_terminal_speed(grams: float = 0.11, radius_mm: float = 1.5, density: float = 1260.0,
                           viscosity: float = 1.4) -> Question:
     """A terminal speed from a drag law given in the question (issue 25): Stokes' law
     F = 6πηrv for a small ball sinking through a viscous liquid. At terminal speed
@@ -851,7 +905,10 @@ def stokes_terminal_speed(grams: float = 0.26, radius_mm: float = 2.0, density: 
 
     Marks: 9702/02/M/J/06 gives the law (F = crv) and credits the weight set equal to it with
     the terminal speed (mg = crv_T); 9702/21/M/J/16 Q3(b)(ii) gives a C1 for the working with
-    its numbers, then the A1; the upthrust follows sphere-in-liquid (a)."""
+    its numbers, then the A1; the upthrust follows sphere-in-liquid (a). Stokes' law holds only in
+    creeping flow: a variant whose Reynolds number is not below models.STOKES_REYNOLDS_LIMIT is
+    refused (issue 37: it reached 0.997). The working prints the volume and the upthrust with the
+    figures that give the printed answers (enough_figures), as an examiner checks them."""
     radius, mass = radius_mm / 1000, grams / 1000
     volume = sphere_volume(radius)
     if not _BALL_DENSITY[0] <= mass / volume <= _BALL_DENSITY[1]:
@@ -860,8 +917,11 @@ def stokes_terminal_speed(grams: float = 0.26, radius_mm: float = 2.0, density: 
     u = upthrust(density, volume)
     k = stokes_constant(viscosity, radius)
     v_t = power_law_terminal_velocity(mass, k, power=1, upthrust=u)
+    stokes_reynolds_number(density, v_t, 2 * radius, viscosity)  # raises when the law does not hold
     w_ = weight(mass)
     gr, r, rho, eta = n(grams, 2), n(radius_mm, 2), n(density, 3), n(viscosity, 2)
+    (vol,) = enough_figures((volume,), lambda v: upthrust(density, v), n(u, 3))
+    (u_b,) = enough_figures((u,), lambda u1: (w_ - u1) / k, n(v_t, 2))
     return Question(
         key="stokes-terminal-speed",
         text=(f"A small ball of mass {gr} g and radius {r} mm is released in a tall tube of a liquid of "
@@ -905,11 +965,11 @@ def stokes_terminal_speed(grams: float = 0.26, radius_mm: float = 2.0, density: 
                  ), see="skydiver"),
         ),
         mark_scheme=(
-            Mark(f"V = 4/3 π × ({r} × 10<sup>−3</sup>)<sup>3</sup> = {n(volume, 3)} m<sup>3</sup>; U = ρgV = "
-                 f"{rho} × {n(G_EARTH, 3)} × {n(volume, 3)}", "C1", "a"),
+            Mark(f"V = 4/3 π × ({r} × 10<sup>−3</sup>)<sup>3</sup> = {vol} m<sup>3</sup>; U = ρgV = "
+                 f"{rho} × {n(G_EARTH, 3)} × {vol}", "C1", "a"),
             Mark(f"= {n(u, 3)} N", "A1", "a"),
             Mark("At terminal speed weight = drag + upthrust: mg = 6πηrv + U", "C1", "b"),
-            Mark(f"v = ({n(mass, 2)} × {n(G_EARTH, 3)} − {n(u, 3)}) / (6π × {eta} × {r} × 10<sup>−3</sup>)",
+            Mark(f"v = ({n(mass, 2)} × {n(G_EARTH, 3)} − {u_b}) / (6π × {eta} × {r} × 10<sup>−3</sup>)",
                  "C1", "b"),
             Mark(f"= {n(v_t, 2)} {PER_S}", "A1", "b"),
         ),
@@ -962,16 +1022,25 @@ def _relabel(sketch: Sketch, quantity: str, symbol: str, scale: float = 1.0) -> 
     return Sketch(quantity, symbol, tuple((t, scale * y) for t, y in sketch.points))
 
 
+#: "At her terminal velocity" in a sketch: within this fraction of it, so the line starts level.
+_AT_TERMINAL_IN_SKETCH = 0.001
+
+
 def _opening_sketches() -> dict[str, Sketch]:
     """Velocity before and after the parachute opens (models.skydive), and the misconceptions:
-    she moves upwards, she stops, her speed drops at once."""
+    she moves upwards, she stops, her speed drops at once. The story (_OPENS) starts with her
+    falling at her terminal velocity, so every sketch starts when the model has her there
+    (time_to_terminal_velocity, within 0.1 %), not at the jump (issue 37: they started from rest), with that
+    moment as t = 0."""
     dive = skydive(**_SKYDIVER)
-    opens = dive.parachute_opens_at
-    times = numpy.linspace(0.0, dive.duration, _SKETCH_POINTS)
+    start = time_to_terminal_velocity(dive.terminal_velocity_freefall, within=_AT_TERMINAL_IN_SKETCH)
+    opens = dive.parachute_opens_at - start
+    times = numpy.linspace(start, dive.duration, _SKETCH_POINTS)
     speeds = dive.velocity_at(times)
+    times = times - start
     before = [(t, v) for t, v in zip(times, speeds, strict=True) if t < opens]
     after = [(t, v) for t, v in zip(times, speeds, strict=True) if t >= opens]
-    at_opening = float(dive.velocity_at(opens))
+    at_opening = float(dive.velocity_at(dive.parachute_opens_at))
     slow = dive.terminal_velocity_parachute
 
     def sketch(points) -> Sketch:
@@ -1056,8 +1125,9 @@ def _skydiver_story(index: int):
          ("She slows down only until the drag equals her weight again, at the new terminal velocity. Her "
          "velocity never reaches zero."), opening["stops"]),
         ("her speed drops at once",
-         ("A change of velocity takes time: the drag is larger than her weight, so she decelerates, most at "
-         "the start, and her velocity falls along a curve to the new terminal velocity."), opening["at once"]),
+         ("A change of velocity takes time: while the canopy opens the drag grows larger than her weight, so "
+         "she decelerates, most just after it has opened, and her velocity falls along a curve to the new "
+         "terminal velocity."), opening["at once"]),
     ))
 
 
@@ -1119,13 +1189,13 @@ TEMPLATES = (
     Template("drag-law-constant", "drag", ("numeric",), "A drag law: find k", drag_law_constant,
              # in 3 g steps: 50 g would weigh 0.4905 N, a tie at 3 s.f. that g = 9.8 (0.490 N) sits on
              {"power": Draw(2, 1, 2, 1), "grams": Draw(45.0, 21.0, 96.0, 3.0),
-              "speed": Draw(12.0, 4.0, 40.0, 1.0)}),
+              "diameter_cm": Draw(4.3, 3.0, 9.0, 0.1)}),
     Template("drag-law-terminal-ratio", "drag", ("numeric",), "A drag law: heavier, faster",
              drag_law_terminal_ratio,
              {"power": Draw(2, 1, 2, 1), "grams_a": Draw(20.0, 10.0, 50.0, 5.0),
-              "grams_b": Draw(80.0, 30.0, 95.0, 5.0), "speed_a": Draw(15.0, 5.0, 30.0, 1.0)}),
+              "grams_b": Draw(80.0, 30.0, 95.0, 5.0), "diameter_cm": Draw(6.0, 4.0, 9.0, 0.5)}),
     Template("stokes-terminal-speed", "drag", ("numeric",), "A drag law: Stokes' law", stokes_terminal_speed,
-             {"grams": Draw(0.26, 0.10, 0.90, 0.01), "radius_mm": Draw(2.0, 1.5, 3.0, 0.1),
+             {"grams": Draw(0.11, 0.10, 0.90, 0.01), "radius_mm": Draw(1.5, 1.5, 3.0, 0.1),
               "density": Draw(1260.0, 900.0, 1260.0, 10.0), "viscosity": Draw(1.4, 0.6, 1.5, 0.1)}),
     Template("falling-graph-choice", "drag", ("mcq",), "Which graph for a falling skydiver?",
              falling_graph_choice, {"story": Draw(0, 0, 4, 1)}, variant_count=5),

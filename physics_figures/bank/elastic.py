@@ -149,6 +149,18 @@ def elastic_or_not_choice(situation: float = 0) -> Question:
              f"{w(ke_after)} J after"
     speeds = f"approach {w(approach)} {PER_S}, separation {w(separation)} {PER_S}"
     plain_energy, plain_speeds = textformat.to_plain(energy), speeds.replace(PER_S, _PER_S_PLAIN)
+    # two options give each verdict (issue 37: the key's verdict was the odd one out), so the verdict
+    # alone never picks the key: the other option of the key's verdict gives a wrong reason for it
+    momentum_kept = Option(f"It is elastic: the total momentum of the {body}s is the same before and after.",
+                           "momentum conserved, so elastic",
+                           ("It is elastic, but not for that reason. " if elastic else "")
+                           + "Momentum is conserved in every collision, elastic or not, so it cannot decide. "
+                           f"Compare the total kinetic energy: {plain_energy}.")
+    always_lost = Option("It is inelastic: some kinetic energy is lost in every collision.",
+                         "kinetic energy lost in every collision",
+                         ("It is inelastic, but not for that reason. " if not elastic else "")
+                         + "Not in every collision: in an elastic one the total kinetic energy is kept. Compare "
+                         f"the totals, or the relative speeds ({plain_speeds}).")
     if elastic:
         key = Option(f"It is elastic: the relative speed of separation of the {body}s equals their relative "
                      "speed of approach.")
@@ -157,32 +169,19 @@ def elastic_or_not_choice(situation: float = 0) -> Question:
                    "looked at one body's kinetic energy",
                    f"A does lose kinetic energy, but B gains exactly as much. Elastic means the "
                    f"total kinetic energy is kept: {plain_energy}."),
-            Option("It is inelastic: some kinetic energy is lost in every collision.",
-                   "kinetic energy lost in every collision",
-                   "Not in every collision: in an elastic one the total kinetic energy is kept. Compare "
-                   f"the totals, or the relative speeds ({plain_speeds})."),
-            Option(f"It is inelastic: the relative speeds of approach and separation of the {body}s do not add "
-                   "up to zero.",
-                   "approach + separation = 0",
-                   "Relative speeds are sizes, so they never add to zero. The test for an elastic "
-                   f"collision is that they are equal: {plain_speeds}."),
+            always_lost,
+            momentum_kept,
         )
     else:
         key = Option(f"It is inelastic: the total kinetic energy of the {body}s after the collision is less "
                      "than before.")
         wrong = (
-            Option(f"It is elastic: the total momentum of the {body}s is the same before and after.",
-                   "momentum conserved, so elastic",
-                   "Momentum is conserved in every collision, elastic or not, so it cannot decide. "
-                   f"Compare the total kinetic energy: {plain_energy}."),
+            momentum_kept,
             Option(f"It is elastic: the {body}s bounce apart instead of sticking together.",
                    "the bodies separate, so elastic",
                    "Bodies that stick together always have an inelastic collision, but bouncing apart "
                    f"does not make one elastic. Compare the total kinetic energy: {plain_energy}."),
-            Option("It is elastic: kinetic energy is conserved in every collision.",
-                   "kinetic energy conserved in every collision",
-                   "Kinetic energy is conserved only in an elastic collision; momentum is the one "
-                   f"always conserved. Here {plain_energy}."),
+            always_lost,
         )
     turn = int(situation) % len(OPTION_LETTERS)  # the key is not always the same letter
     options = (*wrong[:turn], key, *wrong[turn:])

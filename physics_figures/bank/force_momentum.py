@@ -589,21 +589,21 @@ def mass_from_velocity_change(force: float = 6.0, duration: float = 2.5, speed_b
 
 
 #: Bodies whose momentum–time graph the "which graph?" item shows: (what it is, how it moves,
-#: the positive direction, its momentum-time corners (s, N s), the graph's small squares in
-#: time, s). Straight lines: the resultant force is constant in each piece (notes: "A straight
+#: the positive direction as "Take momentum ... as positive" words it, its momentum-time corners
+#: (s, N s), the graph's small squares in time, s). Straight lines: the resultant force is constant in each piece (notes: "A straight
 #: line means a constant force").
 _MOMENTUM_STORIES = (
-    ("a car", "as it moves along a straight road", "its direction of motion",
+    ("a car", "as it moves along a straight road", "in its direction of motion",
      ((0.0, 0.0), (4.0, 12000.0), (10.0, 12000.0), (16.0, 0.0)), 0.5),
     ("a trolley", "as it is pushed from rest and then rolls freely along a level, frictionless track",
-     "its direction of motion", ((0.0, 0.0), (1.5, 2.4), (6.0, 2.4)), 0.1),
+     "in its direction of motion", ((0.0, 0.0), (1.5, 2.4), (6.0, 2.4)), 0.1),
     ("a ball thrown vertically upwards", ("from the moment it leaves the hand until it is back at the "
      "same height (air resistance is negligible)"), "upwards", ((0.0, 3.0), (4.0, -3.0)), 0.1),
     ("a ball", "as it hits a wall at right angles and bounces straight back", "towards the wall",
      ((0.0, 2.4), (0.02, 2.4), (0.05, -1.6), (0.1, -1.6)), 0.002),
-    ("a lorry", "as it brakes to rest on a straight road", "its direction of motion",
+    ("a lorry", "as it brakes to rest on a straight road", "in its direction of motion",
      ((0.0, 60000.0), (10.0, 0.0), (20.0, 0.0)), 0.5),
-    ("a cyclist", "as she speeds up along a straight, level road", "her direction of motion",
+    ("a cyclist", "as she speeds up along a straight, level road", "in her direction of motion",
      ((0.0, 240.0), (4.0, 240.0), (12.0, 640.0), (20.0, 640.0)), 0.5),
 )
 
@@ -669,8 +669,8 @@ def force_from_momentum_graph_choice(story: float = 0) -> Question:
     letter = OPTION_LETTERS[place]
     return Question(
         key="force-from-momentum-graph-choice",
-        text=(f"The graph shows how the momentum of {what} varies with time {how}. Momentum is positive "
-              f"in {positive}."),
+        text=(f"The graph shows how the momentum of {what} varies with time {how}. Take momentum "
+              f"{positive} as positive."),
         givens=(),
         graph=graph,
         parts=(ChoicePart(f"Which graph shows how the resultant force on {what} varies "
@@ -684,6 +684,24 @@ def force_from_momentum_graph_choice(story: float = 0) -> Question:
 
 
 c_answer, d_answer, mass_given = sympy.symbols("c d mass_given")
+#: A loaded lorry speeds up at about 0.5 to 1.5 m s^-2 (issue 37: 3.5 m s^-2 is a sports car's),
+#: and its engine gives a few hundred kW at most: the resultant force × the speed at the end of
+#: the speeding up stays at or below this, W.
+LORRY_ACCELERATION = (0.5, 1.5)
+LORRY_POWER = 300e3
+
+
+def _lorry_within_its_engine(mass: float, gain_in_momentum: float, lasts: float, speed_after: float) -> None:
+    """Refuse a lorry that speeds up harder, or needs more power, than a lorry does."""
+    force = average_force(gain_in_momentum, lasts)  # the gradient of the momentum-time graph
+    rate = acceleration(force, mass)
+    if not LORRY_ACCELERATION[0] <= rate <= LORRY_ACCELERATION[1]:
+        raise ValueError(f"lasts must give a lorry's acceleration, {LORRY_ACCELERATION[0]:g} to "
+                         f"{LORRY_ACCELERATION[1]:g} m s^-2 (got lasts={lasts!r} s: {n(rate, 2)} m s^-2)")
+    if force * speed_after > LORRY_POWER:
+        raise ValueError(f"mass, speed_after and lasts must need at most {LORRY_POWER / 1000:g} kW, a lorry "
+                         f"engine's power (got mass={mass!r}, speed_after={speed_after!r}, lasts={lasts!r}: "
+                         f"{n(force * speed_after / 1000, 3)} kW)")
 
 
 def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 8.0, speed_after: float = 20.0,
@@ -693,9 +711,11 @@ def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 
     shape"). A lorry's momentum runs to tens of thousands of N s, so the axis grows with it
     (parts.graph.value_axis). Readings earn B1 within half a small square; each calculation C1
     A1, as 9702/21/M/J/23 Q3 reads a block's momentum off its graph, and 9702/21/M/J/16
-    Q3(b)(ii) marks a change in momentum C1 then its result A1."""
+    Q3(b)(ii) marks a change in momentum C1 then its result A1. The lorry speeds up as a loaded
+    lorry can (_lorry_within_its_engine)."""
     history = MomentumHistory((0.0, begins, begins + lasts, 20.0),
                               (momentum(mass, speed_before),) * 2 + (momentum(mass, speed_after),) * 2)
+    _lorry_within_its_engine(mass, history.momenta[2] - history.momenta[1], lasts, speed_after)
     before, after = (float(p) for p in history.momenta[1:3])
     _, top, division = value_axis(after)
     tolerance = division / 2

@@ -386,13 +386,9 @@ def collision_third_law(mass_a: float = 0.60, speed_a: float = 2.5, mass_b: floa
                     f"That is all of A's momentum, as if A stopped. A moves on at {va} m s⁻¹: B gains only "
                     "what A loses.", see="conservation"))
     f_mistakes = [
-        Mistake("difference of the momenta after", average_force(momentum(mass_b, v_b) - momentum(mass_a, after_a),
-                                                                 contact) if after_a else
-                average_force(2 * dp_b, contact),
-                "The force on B comes from B's own change in momentum ÷ the contact time, not from the "
-                "difference between the two trolleys' momenta." if after_a else
-                "You doubled the change in momentum. The force on B comes from B's own change in momentum "
-                "only: A's equal and opposite change is the other half of the pair, on A."),
+        Mistake("mass left out", (v_b - u_b) / contact,
+                "You divided B's change in velocity by the time: that is its acceleration, in m s⁻². The "
+                "force is B's change in momentum ÷ the time, F = mΔv / Δt.", see="second-law"),
         Mistake("multiplied by the time", dp_b * contact,
                 "You multiplied by the contact time. Force is the rate of change of momentum: F = Δp / Δt.",
                 see="second-law"),

@@ -12,7 +12,6 @@ from ..models import (
     kinetic_energy,
     lift_contact_force,
     mass_from_weight,
-    momentum,
     thrust_for_acceleration,
     towing,
     weight,
@@ -675,9 +674,6 @@ def stopping_force_from_distance(mass: float = 1500.0, speed: float = 20.0, dist
                      Mistake("the ½ left out of the kinetic energy", mass * speed**2 / distance,
                              f"You used F s = mu². The kinetic energy the brakes remove is ½mu²: "
                              f"F × {s} = ½ × {m} × {u}²."),
-                     Mistake("momentum ÷ distance", momentum(mass, speed) / distance,
-                             f"You divided the momentum, {m} × {u}, by the distance. Force is momentum "
-                             "÷ time; with a distance, use F = ma (or F s = ½mu²).", see="momentum"),
                      Mistake("kinetic energy given", kinetic_energy(mass, speed),
                              "That is the car's kinetic energy, ½mu², in J. The force is that energy ÷ "
                              "the distance, or ma.", unit="J", see="kinetic-energy"),

@@ -84,20 +84,22 @@ def define_force() -> Question:
 
 #: 8702/02/O/N/01 Q1 (the scheme of 9702's Paper 2 before 2002), [4]: "mass: property of body
 #: which resists change in motion B1; constant OR scalar quantity B1; weight: effect of
-#: gravitational field on a mass/body B1; variable OR vector quantity B1". Notes: "Mass is a
+#: gravitational field on a mass/body B1; variable OR vector quantity B1". Either half of the
+#: second and of the fourth line earns its B1 (issue 37), so each point says "either". Notes: "Mass is a
 #: scalar ... the same wherever the object is"; "Weight: the force on a mass due to a
 #: gravitational field; W = mg"; "weight depends on where you are".
 MASS_WEIGHT_POINTS = (
     "Mass is the property of an object that resists a change in its motion",
-    "Mass is a scalar, and it is the same wherever the object is",
+    "Either: mass is a scalar; or: mass is the same wherever the object is (constant)",
     "Weight is the force on a mass due to a gravitational field, W = mg",
-    ("Weight is a vector (towards the centre of the planet), and it changes where the gravitational "
-    "field strength g changes"),
+    ("Either: weight is a vector (towards the centre of the planet); or: weight changes where the "
+    "gravitational field strength g changes (variable)"),
 )
 
 
 def mass_and_weight_defined() -> Question:
-    """Distinguish between mass and weight [4]: four B1 points, as 8702/02/O/N/01 Q1."""
+    """Distinguish between mass and weight [4]: four B1 points, as 8702/02/O/N/01 Q1 (its second
+    and fourth lines take either of two answers: "constant OR scalar", "variable OR vector")."""
     return _statement(
         "mass-and-weight-defined", "Give each definition in words.",
         "Distinguish between mass and weight.",
@@ -149,19 +151,21 @@ def state_first_law() -> Question:
 
 
 #: Notes, Newton's third law: "if body A exerts a force on body B, then B exerts a force on A
-#: that is equal in size and opposite in direction"; the pair acts "on different bodies", is "the
-#: same type of force"; How to get the marks: "Newton's third law needs 'equal and opposite' and
-#: 'on different bodies'".
+#: that is equal in size and opposite in direction"; How to get the marks: "Newton's third law
+#: needs 'equal and opposite' and 'on different bodies'". The pair is also "the same type of
+#: force", which the model answer says; no mark needs it (9702/21/M/J/15 Q3(c) marks "force on X
+#: is equal and opposite to force on Y"; issue 37).
 THIRD_LAW_POINTS = (
-    ("If body A exerts a force on body B, then body B exerts a force of the same type on body A: the "
-    "two forces act on different bodies"),
+    ("If body A exerts a force on body B, then body B exerts a force on body A: the two forces act on "
+    "different bodies"),
     "The two forces are equal and opposite: equal in magnitude and opposite in direction",
 )
 
 
 def state_third_law() -> Question:
-    """State Newton's third law [2]: a B1 for the pair on different bodies (of the same type) and
-    a B1 for equal and opposite. 9702/21/M/J/15 Q3(c): "force on X is equal and opposite to force
+    """State Newton's third law [2]: a B1 for the pair on different bodies and a B1 for equal and
+    opposite ("the same type of force" is true, in the model answer, but earns no mark and no
+    mark needs it). 9702/21/M/J/15 Q3(c): "force on X is equal and opposite to force
     on Y (Newton III)"; the notes' How to get the marks asks for both "equal and opposite" and "on
     different bodies"."""
     return _statement(

@@ -265,10 +265,6 @@ def two_trolleys() -> Question:
                  revisit="The force on B is B's own change in momentum ÷ the contact time: "
                          "F = Δp / Δt.",
                  mistakes=(
-                     Mistake("difference of the momenta after", (dp_b - a_after) / contact,
-                             "You used the difference between the two trolleys' momenta. The force "
-                             "on B is B's own change in momentum ÷ time (using the wrong momentum "
-                             "for a force)."),
                      Mistake("A's momentum before", before / contact,
                              "That is A's momentum before ÷ time. The force on B is B's own change "
                              "in momentum ÷ time.", see="conservation"),

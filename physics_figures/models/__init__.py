@@ -49,7 +49,16 @@ from .drag import (
     velocity_from_rest,
     velocity_slowing_to_terminal,
 )
-from .fluids import drag_at_terminal_velocity, upthrust
+from .fluids import (
+    AIR_DENSITY,
+    SPHERE_DRAG_COEFFICIENT,
+    STOKES_REYNOLDS_LIMIT,
+    drag_at_terminal_velocity,
+    reynolds_number,
+    sphere_drag_constant,
+    stokes_reynolds_number,
+    upthrust,
+)
 from .momentum import (
     average_force,
     change_in_momentum,
@@ -91,7 +100,10 @@ from .two_d import (
 )
 
 __all__ = [
+    "AIR_DENSITY",
     "OPENING_STEPS",
+    "SPHERE_DRAG_COEFFICIENT",
+    "STOKES_REYNOLDS_LIMIT",
     "WITHIN_TERMINAL",
     "CanopyOpening",
     "GlancingCollision",
@@ -138,12 +150,15 @@ __all__ = [
     "power_law_drag",
     "power_law_terminal_velocity",
     "relative_speed",
+    "reynolds_number",
     "skydive",
     "speed_from_momentum_and_energy",
+    "sphere_drag_constant",
     "sphere_volume",
     "split_in_two",
     "stick_together",
     "stokes_constant",
+    "stokes_reynolds_number",
     "stream_force",
     "terminal_velocity",
     "terminal_velocity_ratio",

@@ -257,3 +257,26 @@ def test_every_slip_a_record_names_is_an_outcome_of_the_rule_table():
     for name, slip in marking.slips().items():
         assert slip["rule"] in slip["outcomes"], f"{name!r} links to a rule it does not cover"
     assert {"sign", "missing-unit", "too-few-sf"} <= set(marking.outcome_slips())
+
+
+@pytest.mark.parametrize(("typed", "padded"), [("60", True), ("60.", True), ("6.0e1", True), ("6e1", False)])
+def test_the_1_sf_feedback_is_the_rule_tables_in_the_browser_and_in_python(typed, padded):
+    """The key to 1 s.f., written with or without zeros after it (60. for 64 N is 64 N to
+    1 s.f.), is one slip: all but the A1, and the one feedback the table gives (Moodle's rows
+    and the sheets fill it with physics_figures.marking.too_few_sf_feedback)."""
+    part = QC3.parts[0]  # the drag, in N
+    data = QC3.browser_data()
+    data["parts"][0]["value"] = 64.2  # the issue's case: a key of 64 N
+    answer = {"a": {"value": typed, "unit": part.unit}}
+    marked = mark_questions([(data, answer)])[0]
+    result = marked["results"]["a"]
+    assert result["code"] == "too-few-sf", result
+    assert result["message"] == marking.too_few_sf_feedback(1, padded=padded)
+    assert "Work to 3 s.f.; give 2 or more." in result["message"]
+    got, available = marked["marks"]["byPart"]["a"]
+    assert (got, available) == (available - 1, available)
+
+
+def test_too_few_sf_feedback_refuses_a_count_that_is_not_too_few():
+    with pytest.raises(ValueError, match="few must be at least 1 and fewer than min_sf=2"):
+        marking.too_few_sf_feedback(2)

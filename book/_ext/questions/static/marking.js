@@ -50,7 +50,8 @@
   // An outcome as the markers give it (code, message and what else they say).
   var outcome = KINDS.numeric.outcome;
 
-  /* Mark one answer to one part: its kind's marker gives the outcome (code, message). */
+  /* Mark one answer to one part: its kind's marker gives the outcome (code, message). The
+   * marker gets the rule table's figures too: its feedback on too few figures is the table's. */
   function mark(part, answer) {
     var kind = KINDS[part.kind || "numeric"];
     if (!kind) throw new Error("no marker for the part kind " + JSON.stringify(part.kind));
@@ -58,7 +59,7 @@
     if (part.minSf === undefined || part.checkSf === undefined) {
       part = Object.assign({ minSf: figures.min, checkSf: figures.check }, part);
     }
-    return kind.mark(part, answer || {});
+    return kind.mark(part, answer || {}, figures);
   }
 
   // ------------------------------------------------------------ marks, as an exam awards them

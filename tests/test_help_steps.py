@@ -64,5 +64,21 @@ def test_every_numeric_part_has_steps_and_none_gives_its_answer_away():
             printed = format_number(abs(part.value), part.shown_sig_figs)
             problems += [f"{where}: a step holds the answer {printed}: {_text(s)}" for s in part_steps
                          if holds(_text(s), printed)]
+            problems += _earlier_answers_given(question, part_id, part_steps)
     assert shown > 500  # the whole bank's numeric parts were seen
     assert not problems, "\n".join(problems[:30])
+
+
+def _earlier_answers_given(question, part_id, part_steps) -> list[str]:
+    """A later part's steps that print an earlier part's answer (the bounce graph's (c) gave
+    both readings): help says "your answer to (a)" instead."""
+    found = []
+    for earlier_id, earlier in zip(question.part_ids, question.parts, strict=True):
+        if earlier_id == part_id:
+            break
+        if earlier.kind not in ("numeric", "graph") or not earlier.value:
+            continue
+        printed = format_number(abs(earlier.value), earlier.shown_sig_figs)
+        found += [f"{question.key} ({part_id}): a step holds ({earlier_id})'s answer {printed}: {_text(s)}"
+                  for s in part_steps if holds(_text(s), printed)]
+    return found

@@ -125,7 +125,7 @@ def test_a_check_keeps_the_help_the_time_and_the_first_try_and_help_is_hard_at_b
     _later(page, 42)  # 42 s after the numbers came on screen
     _answer_right(page, question)
     _form(page).locator("button.q-check").click()
-    assert _form(page).locator(".q-score").inner_text() == "4/4 marks"
+    assert _form(page).locator(".q-score").inner_text() == "4/4 marks, with 3 steps of help"
     [attempt] = _attempts(page)
     assert attempt["help"] == 3 and attempt["first"] is True and attempt["seconds"] == 42
     assert attempt["rating"] == 2  # full marks with help: Hard (CLARIFICATIONS, Plan)
@@ -146,6 +146,7 @@ def test_without_help_a_quick_first_try_is_easy(page):
     _later(page, 30)
     _answer_right(page, question)
     _form(page).locator("button.q-check").click()
+    assert _form(page).locator(".q-score").inner_text() == "4/4 marks"  # no help: nothing said
     [attempt] = _attempts(page)
     assert attempt["help"] == 0 and attempt["first"] is True and attempt["seconds"] == 30
     assert attempt["rating"] == 4

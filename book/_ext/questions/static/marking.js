@@ -111,27 +111,78 @@
     return list.indexOf(index) >= 0 && (needs === undefined || needs === null || list.indexOf(needs) >= 0);
   }
 
-  /* What a part lost, in words: "2/3 marks: the A1 is lost; the C1 and B1 stand." */
+  /* What a part lost, in words, each code glossed by what the line is for: "2/3 marks: the
+   * answer mark (A1) is lost; the method mark (C1) and the direction mark (B1) stand." Lines
+   * of one kind go together: "both method marks (C1) stand". */
   function lostText(data, awarded, partId) {
     var lost = [],
       kept = [];
+    var part = data.parts.filter(function (p) {
+      return p.id === partId;
+    })[0];
     data.marks.forEach(function (line, i) {
-      if (line.part === partId) (awarded.lines[i] ? kept : lost).push(line.code);
+      if (line.part === partId) (awarded.lines[i] ? kept : lost).push(line);
     });
     if (!lost.length || !kept.length) return "";
-    function list(codes) {
-      return codes.length === 1 ? codes[0] : codes.slice(0, -1).join(", ") + " and " + codes[codes.length - 1];
+    function names(lines) {
+      return lines.map(function (line) {
+        return markName(line, part);
+      });
+    }
+    // a kind on both sides: "one method mark (C1) is lost; the other method mark (C1) stands"
+    function list(lines, others, first) {
+      var order = [],
+        codes = {};
+      lines.forEach(function (line) {
+        var name = markName(line, part);
+        if (!codes[name]) {
+          codes[name] = [];
+          order.push(name);
+        }
+        codes[name].push(line.code);
+      });
+      var phrases = order.map(function (name) {
+        return glossed(name, codes[name], others.indexOf(name) >= 0, first);
+      });
+      return phrases.length === 1
+        ? phrases[0]
+        : phrases.slice(0, -1).join(", ") + " and " + phrases[phrases.length - 1];
     }
     return (
       marksText(kept.length, kept.length + lost.length) +
-      ": the " +
-      list(lost) +
+      ": " +
+      list(lost, names(kept), true) +
       (lost.length === 1 ? " is" : " are") +
-      " lost; the " +
-      list(kept) +
+      " lost; " +
+      list(kept, names(lost), false) +
       (kept.length === 1 ? " stands." : " stand.")
     );
   }
+
+  /* What a mark line is for, in a student's words: its role (marking_rules.json "roles"). */
+  function markName(line, part) {
+    if (line.roles.indexOf("method") >= 0) return "method mark";
+    if (line.roles.indexOf("answer") >= 0) return part && part.kind === "explain" ? "marking point" : "answer mark";
+    if (line.roles.indexOf("direction") >= 0) return "direction mark";
+    return "mark";
+  }
+
+  /* "the method mark (C1)", "both method marks (C1)", "the three method marks (C1, M1, C1)";
+   * of a kind the other side has too (shared; first: the lost side): "one method mark (C1)",
+   * "the other two method marks (C1)". */
+  function glossed(name, codes, shared, first) {
+    var same = codes.every(function (code) {
+      return code === codes[0];
+    });
+    var n = codes.length,
+      word = NUMBER_WORDS[n] || String(n);
+    var shown = " (" + (same ? codes[0] : codes.join(", ")) + ")";
+    if (shared && first) return word + " " + name + (n === 1 ? "" : "s") + shown;
+    if (shared) return "the other " + (n === 1 ? name : word + " " + name + "s") + shown;
+    if (n === 1) return "the " + name + shown;
+    return (n === 2 ? "both " : "the " + word + " ") + name + "s" + shown;
+  }
+  var NUMBER_WORDS = { 1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six" };
 
   function marksText(earned, available) {
     return earned + "/" + available + " mark" + (available === 1 ? "" : "s");

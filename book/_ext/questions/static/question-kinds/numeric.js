@@ -341,10 +341,13 @@
         "The size is right but the direction is wrong." + (part.directionHint ? " " + part.directionHint : ""),
       );
     }
-    if (result.matchFewSf) {
+    // The key to too few figures, as it may be read (60 for 64); written with zeros after it
+    // (60. or 6.0e1), only where no slip below is what it is.
+    function tooFewSf() {
       var few = Math.min(number.sfMax, result.fewSf || minSf - 1);
       return out("too-few-sf", fewSfMessage(figures, few, minSf, checkSf, number.sfMax > few));
     }
+    if (result.matchFewSf && number.sfMin < minSf) return tooFewSf();
     // Slips computed from the working (physics_figures.questions): nothing else is called rounding.
     if (number.sfMax >= 2 && typeof part.gNineEight === "number" && against(part.gNineEight, reading.scale).match) {
       return out(
@@ -364,6 +367,7 @@
         );
       }
     }
+    if (result.matchFewSf) return tooFewSf();
     return out("wrong", "Not right. " + (part.revisit || "Check your method and your arithmetic."));
   }
 

@@ -80,5 +80,14 @@ def _earlier_answers_given(question, part_id, part_steps) -> list[str]:
             continue
         printed = format_number(abs(earlier.value), earlier.shown_sig_figs)
         found += [f"{question.key} ({part_id}): a step holds ({earlier_id})'s answer {printed}: {_text(s)}"
-                  for s in part_steps if holds(_text(s), printed)]
+                  for s in part_steps if _holds_as(_text(s), printed, earlier.unit)]
     return found
+
+
+def _holds_as(text: str, printed: str, unit: str) -> bool:
+    """Does the text hold this number as a value in this unit (not "0.40 J" for 0.40 m s⁻¹)?"""
+    for found in re.finditer(rf"(?<![\d.]){re.escape(printed)}(?!\.?\d)", text):
+        written = re.match(r"[\s\u00a0]*(kg|g|m|s|N|J|W|kW|Pa|cm|mm|km|ms|rad|°)(?![A-Za-z])", text[found.end():])
+        if not written or written.group(1) == unit.split(" ")[0]:
+            return True
+    return False

@@ -88,7 +88,9 @@
       doubt =
         doubt ||
         givens.some(function (given) {
-          return given.unit !== part.unit && given.value !== 0 && gives(number, given.value);
+          return (
+            given.unit !== part.unit && given.value !== 0 && (gives(number, given.value) || same(number, given.value))
+          );
         });
       // a minus sign that is the answer's own sign goes with it; a subtraction's stays
       var sign = minus && part.value > 0 ? minus : "";

@@ -67,6 +67,12 @@ def too_few_sf_feedback(few: int, *, min_sf: int | None = None, check_sf: int | 
     return text.format(few=few, min=min_sf, work=max(check_sf, min_sf + 1))
 
 
+def mark_names() -> dict[str, str]:
+    """What feedback calls a mark line: {code or "direction" or "point": name}, e.g. "C1":
+    "method mark" (the browser's engine glosses each code it names with these)."""
+    return {key: name for key, name in rules()["mark_names"].items() if key != "why"}
+
+
 def mistake_losses(kind: str) -> tuple[str, ...]:
     """The roles a named mistake of this kind loses by default."""
     kinds = rules()["mistakes"]

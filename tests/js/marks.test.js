@@ -171,15 +171,15 @@ test("what a part lost glosses each code by what its mark is for, and names two 
   const lost = (lines) => lostText(data, { lines: lines }, "b");
   assert.equal(
     lost([true, true, false, true]),
-    "3/4 marks: the answer mark (A1) is lost; both method marks (C1) and the direction mark (B1) stand.",
+    "3/4 marks: the accuracy mark (A1) is lost; both method marks (C1) and the direction mark (B1) stand.",
   );
   assert.equal(
     lost([false, false, false, true]),
-    "1/4 marks: both method marks (C1) and the answer mark (A1) are lost; the direction mark (B1) stands.",
+    "1/4 marks: both method marks (C1) and the accuracy mark (A1) are lost; the direction mark (B1) stands.",
   );
   assert.equal(
     lost([true, false, true, true]),
-    "3/4 marks: one method mark (C1) is lost; the other method mark (C1), the answer mark (A1) and the " +
+    "3/4 marks: one method mark (C1) is lost; the other method mark (C1), the accuracy mark (A1) and the " +
       "direction mark (B1) stand.",
   );
   assert.equal(lost([true, true, true, true]), ""); // nothing lost: nothing to say

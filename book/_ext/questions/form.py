@@ -172,7 +172,7 @@ def _explain_html(base: str, part: dict, data: dict) -> str:
 def rules_script() -> str:
     """The rule table the marking engine reads (physics_figures/marking_rules.json), once a page."""
     table = json.dumps({"outcomes": marking.outcome_losses(), "sigFigs": marking.sig_figs(),
-                        "slips": marking.outcome_slips()})
+                        "slips": marking.outcome_slips(), "names": marking.mark_names()})
     return f'<script type="application/json" class="q-rules">{table}</script>'
 
 

@@ -26,7 +26,7 @@
           slips[code] = name;
         });
       });
-      rulesCache = { outcomes: losses, sigFigs: table.sig_figs, slips: slips };
+      rulesCache = { outcomes: losses, sigFigs: table.sig_figs, slips: slips, names: table.mark_names };
     }
     return rulesCache;
   }
@@ -112,29 +112,24 @@
   }
 
   /* What a part lost, in words, each code glossed by what the line is for: "2/3 marks: the
-   * answer mark (A1) is lost; the method mark (C1) and the direction mark (B1) stand." Lines
+   * accuracy mark (A1) is lost; the method mark (C1) and the direction mark (B1) stand." Lines
    * of one kind go together: "both method marks (C1) stand". */
   function lostText(data, awarded, partId) {
     var lost = [],
       kept = [];
-    var part = data.parts.filter(function (p) {
-      return p.id === partId;
-    })[0];
     data.marks.forEach(function (line, i) {
       if (line.part === partId) (awarded.lines[i] ? kept : lost).push(line);
     });
     if (!lost.length || !kept.length) return "";
     function names(lines) {
-      return lines.map(function (line) {
-        return markName(line, part);
-      });
+      return lines.map(markName);
     }
     // a kind on both sides: "one method mark (C1) is lost; the other method mark (C1) stands"
     function list(lines, others, first) {
       var order = [],
         codes = {};
       lines.forEach(function (line) {
-        var name = markName(line, part);
+        var name = markName(line);
         if (!codes[name]) {
           codes[name] = [];
           order.push(name);
@@ -159,12 +154,12 @@
     );
   }
 
-  /* What a mark line is for, in a student's words: its role (marking_rules.json "roles"). */
-  function markName(line, part) {
-    if (line.roles.indexOf("method") >= 0) return "method mark";
-    if (line.roles.indexOf("answer") >= 0) return part && part.kind === "explain" ? "marking point" : "answer mark";
-    if (line.roles.indexOf("direction") >= 0) return "direction mark";
-    return "mark";
+  /* What a mark line is for, in a student's words (marking_rules.json "mark_names"): by its
+   * code, but a line that only gives a direction is the direction mark. */
+  function markName(line) {
+    var names = rules().names || {};
+    if (line.roles.length === 1 && line.roles[0] === "direction") return names.direction;
+    return names[line.code] || "mark";
   }
 
   /* "the method mark (C1)", "both method marks (C1)", "the three method marks (C1, M1, C1)";

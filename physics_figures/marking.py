@@ -45,10 +45,32 @@ def outcome_slips() -> dict[str, str]:
     return {code: name for name, slip in slips().items() for code in slip["outcomes"]}
 
 
-def sig_figs() -> dict[str, int]:
-    """{"min": figures the A1 needs, "check": figures the key is trusted to}."""
+def sig_figs() -> dict:
+    """{"min": figures the A1 needs, "check": figures the key is trusted to, "feedback" and
+    "feedback_padded": what a too-few-figures answer reads (too_few_sf_feedback)}."""
     table = rules()["sig_figs"]
-    return {"min": table["min"], "check": table["check"]}
+    return {key: table[key] for key in ("min", "check", "feedback", "feedback_padded")}
+
+
+def too_few_sf_feedback(few: int, *, min_sf: int | None = None, check_sf: int | None = None,
+                        padded: bool = False) -> str:
+    """The feedback on the key given to ``few`` s.f. where the A1 needs ``min_sf`` (the table's
+    by default): "1 s.f.: the A1 needs 2 or more. Work to 3 s.f.; give 2 or
+    more." padded: written with zeros after it (60. or 6.0e1 for 64), the same slip. The
+    browser's engine (question-kinds/numeric.js) fills the same texts the same way."""
+    table = sig_figs()
+    min_sf = table["min"] if min_sf is None else min_sf
+    check_sf = table["check"] if check_sf is None else check_sf
+    if not 1 <= few < min_sf:
+        raise ValueError(f"few must be at least 1 and fewer than min_sf={min_sf} (got few={few!r})")
+    text = table["feedback_padded" if padded else "feedback"]
+    return text.format(few=few, min=min_sf, work=max(check_sf, min_sf + 1))
+
+
+def mark_names() -> dict[str, str]:
+    """What feedback calls a mark line: {code or "direction" or "point": name}, e.g. "C1":
+    "method mark" (the browser's engine glosses each code it names with these)."""
+    return {key: name for key, name in rules()["mark_names"].items() if key != "why"}
 
 
 def mistake_losses(kind: str) -> tuple[str, ...]:

@@ -301,8 +301,11 @@ class Question:
                 data["alternatives"] = data["alternatives"] + [{"value": a.value, "why": a.why} for a in extra]
             parts.append(data)
         lines = [m for m in self.mark_scheme if m.code]
+        # the givens: help on a later part tells an earlier part's answer from a given that
+        # has its value (static/help-steps.js)
         return {"id": self.key, "parts": parts,
-                "marks": [self._line_data(m, index, lines) for index, m in enumerate(lines)]}
+                "marks": [self._line_data(m, index, lines) for index, m in enumerate(lines)],
+                "givens": [{"value": g.value, "unit": g.unit} for g in self.givens]}
 
     def _line_data(self, mark: Mark, index: int, lines: list[Mark]) -> dict:
         data = {"part": self.owner(mark), "code": mark.code, "roles": list(self.line_roles(mark)),

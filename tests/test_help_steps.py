@@ -64,5 +64,30 @@ def test_every_numeric_part_has_steps_and_none_gives_its_answer_away():
             printed = format_number(abs(part.value), part.shown_sig_figs)
             problems += [f"{where}: a step holds the answer {printed}: {_text(s)}" for s in part_steps
                          if holds(_text(s), printed)]
+            problems += _earlier_answers_given(question, part_id, part_steps)
     assert shown > 500  # the whole bank's numeric parts were seen
     assert not problems, "\n".join(problems[:30])
+
+
+def _earlier_answers_given(question, part_id, part_steps) -> list[str]:
+    """A later part's steps that print an earlier part's answer (the bounce graph's (c) gave
+    both readings): help says "your answer to (a)" instead."""
+    found = []
+    for earlier_id, earlier in zip(question.part_ids, question.parts, strict=True):
+        if earlier_id == part_id:
+            break
+        if earlier.kind not in ("numeric", "graph") or not earlier.value:
+            continue
+        printed = format_number(abs(earlier.value), earlier.shown_sig_figs)
+        found += [f"{question.key} ({part_id}): a step holds ({earlier_id})'s answer {printed}: {_text(s)}"
+                  for s in part_steps if _holds_as(_text(s), printed, earlier.unit)]
+    return found
+
+
+def _holds_as(text: str, printed: str, unit: str) -> bool:
+    """Does the text hold this number as a value in this unit (not "0.40 J" for 0.40 m s⁻¹)?"""
+    for found in re.finditer(rf"(?<![\d.]){re.escape(printed)}(?!\.?\d)", text):
+        written = re.match(r"[\s\u00a0]*(kg|g|m|s|N|J|W|kW|Pa|cm|mm|km|ms|rad|°)(?![A-Za-z])", text[found.end():])
+        if not written or written.group(1) == unit.split(" ")[0]:
+            return True
+    return False

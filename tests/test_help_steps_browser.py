@@ -106,9 +106,14 @@ def test_steps_come_one_at_a_time_by_keyboard_and_never_give_the_answer(page):
         assert shown[0] == part.revisit
         lines = [m["html"] for m in data["marks"] if m["part"] == part_id]
         answer_line = [m["html"] for m in data["marks"] if m["part"] == part_id and m["code"] == "A1"][-1]
-        assert len(shown) >= 2 and all(step in lines and step != answer_line for step in shown[1:])
-        texts = box.locator(".q-steps").inner_text()
-        assert not _holds(texts.replace("\u00a0", " "), _printed_answer(part)), texts
+        # a later part's line says "your answer to (a)" where the scheme prints (a)'s answer
+        earlier = [(pid, _printed_answer(p)) for pid, p in zip(question.part_ids, question.parts, strict=True)
+                   if question.part_ids.index(pid) < question.part_ids.index(part_id)]
+        ours = lines + [line.replace(printed, f"your answer to ({pid})") for line in lines for pid, printed in earlier]
+        assert len(shown) >= 2 and all(step in ours and step != answer_line for step in shown[1:]), shown
+        texts = box.locator(".q-steps").inner_text().replace("\u00a0", " ")
+        assert not _holds(texts, _printed_answer(part)), texts
+        assert not any(_holds(texts, printed) for _, printed in earlier), texts
         # the last step shown, the button is gone and the answer boxes have the focus
         assert page.evaluate("document.activeElement.classList.contains('q-value')")
     # On paper the steps (in the form) are not printed.
@@ -125,7 +130,7 @@ def test_a_check_keeps_the_help_the_time_and_the_first_try_and_help_is_hard_at_b
     _later(page, 42)  # 42 s after the numbers came on screen
     _answer_right(page, question)
     _form(page).locator("button.q-check").click()
-    assert _form(page).locator(".q-score").inner_text() == "4/4 marks"
+    assert _form(page).locator(".q-score").inner_text() == "4/4 marks, with 3 steps of help"
     [attempt] = _attempts(page)
     assert attempt["help"] == 3 and attempt["first"] is True and attempt["seconds"] == 42
     assert attempt["rating"] == 2  # full marks with help: Hard (CLARIFICATIONS, Plan)
@@ -146,6 +151,7 @@ def test_without_help_a_quick_first_try_is_easy(page):
     _later(page, 30)
     _answer_right(page, question)
     _form(page).locator("button.q-check").click()
+    assert _form(page).locator(".q-score").inner_text() == "4/4 marks"  # no help: nothing said
     [attempt] = _attempts(page)
     assert attempt["help"] == 0 and attempt["first"] is True and attempt["seconds"] == 30
     assert attempt["rating"] == 4

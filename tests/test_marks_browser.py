@@ -51,15 +51,15 @@ CASES = {
                    "1 s.f.: the A1 needs 2 or more"),
     "missing-unit": ("quick-check-3", {"a": {"value": typed(QC3.parts[0].value), "unit": ""}}, "a", (0, 1),
                      "give the unit"),
-    "wrong-unit": ("quick-check-3", {"b": {**RIGHT_B, "unit": "m/s"}}, "b", (2, 3), "the A1 is lost"),
+    "wrong-unit": ("quick-check-3", {"b": {**RIGHT_B, "unit": "m/s"}}, "b", (2, 3), "the accuracy mark (A1) is lost"),
     "prefix": ("quick-check-1", {"a": {"value": "15", "unit": "kN s"}}, "a", (1, 2), "prefix"),
     "direction": ("quick-check-3", {"b": {**RIGHT_B, "direction": "downwards"}}, "b", (2, 3),
-                  "the B1 is lost; the C1 and A1 stand"),
+                  "the direction mark (B1) is lost; the method mark (C1) and the accuracy mark (A1) stand"),
     "mistake-slip": ("quick-check-3", {"b": {**RIGHT_B, "value": typed(QC3.parts[1].answer_for_g(10.0))}}, "b",
-                     (2, 3), "the A1 is lost; the C1 and B1 stand"),
+                     (2, 3), "the accuracy mark (A1) is lost; the method mark (C1) and the direction mark (B1) stand"),
     "mistake-physics": ("quick-check-3", {"b": {**RIGHT_B, "value": typed(1500 / 70)}}, "b", (1, 3),
-                        "the C1 and A1 are lost; the B1 stands"),
-    "wrong": ("quick-check-3", {"b": {**RIGHT_B, "value": "42"}}, "b", (1, 3), "the C1 and A1 are lost"),
+                        "the method mark (C1) and the accuracy mark (A1) are lost; the direction mark (B1) stands"),
+    "wrong": ("quick-check-3", {"b": {**RIGHT_B, "value": "42"}}, "b", (1, 3), "the method mark (C1) and the accuracy mark (A1) are lost"),
     "compensatory": ("quick-check-1", {"b": {"value": "7.5", "unit": "m/s"}}, "b", (2, 2), "Correct"),
     "dependent-a1": ("terminal-velocity-explained", {"a": {"text": "It speeds up less.", "ticks": [0, 2]}},
                      "a", (1, 3), ""),
@@ -117,4 +117,4 @@ def test_a_rule_marks_as_the_table_says_on_its_page(site, rule):
         # a tick only beside a part that earned all its marks; one that lost some says which
         assert feedback.startswith("✓") == (earned == available) or feedback[:1] not in "✓✗", feedback
         if 0 < earned < available:
-            assert re.search(r"the [ABCM]1.* (is|are) lost", feedback), feedback
+            assert re.search(r"\([ABCM]1\).* (is|are) lost", feedback), feedback  # each code glossed

@@ -53,7 +53,7 @@ def test_the_right_size_in_the_wrong_direction_loses_only_the_direction_mark():
     for direction in ("downwards", ""):  # the named mistake "still falling", and no direction chosen
         marked = one("quick-check-3", {"b": {**right(b), "direction": direction}})
         assert marked["marks"]["byPart"]["b"] == [2, 3], direction
-        assert marked["lost"]["b"] == "2/3 marks: the B1 is lost; the C1 and A1 stand."
+        assert marked["lost"]["b"] == "2/3 marks: the direction mark (B1) is lost; the method mark (C1) and the accuracy mark (A1) stand."
 
 
 def test_g_equals_10_loses_only_the_a1_and_says_so():
@@ -61,7 +61,7 @@ def test_g_equals_10_loses_only_the_a1_and_says_so():
     marked = one("quick-check-3", {"b": {**right(b), "value": typed(b.answer_for_g(10.0))}})
     assert marked["results"]["b"]["mistake"] == "used g = 10 m s⁻²"
     assert marked["marks"]["byPart"]["b"] == [2, 3]
-    assert marked["lost"]["b"] == "2/3 marks: the A1 is lost; the C1 and B1 stand."
+    assert marked["lost"]["b"] == "2/3 marks: the accuracy mark (A1) is lost; the method mark (C1) and the direction mark (B1) stand."
     assert "A1" in marked["results"]["b"]["message"]
 
 
@@ -111,7 +111,7 @@ def test_a_power_of_ten_slip_keeps_the_c1():
     assert slip.kind == "slip"
     marked = one("practice-wall-bounce", {"b": {**right(question.parts[1]), "value": typed(slip.value)}})
     assert marked["marks"]["byPart"]["b"] == [2, 3]  # the C1 and the direction's B1
-    assert marked["lost"]["b"] == "2/3 marks: the A1 is lost; the C1 and B1 stand."
+    assert marked["lost"]["b"] == "2/3 marks: the accuracy mark (A1) is lost; the method mark (C1) and the direction mark (B1) stand."
 
 
 def test_every_part_right_earns_its_own_marks_whatever_the_other_parts_say():
@@ -257,3 +257,36 @@ def test_every_slip_a_record_names_is_an_outcome_of_the_rule_table():
     for name, slip in marking.slips().items():
         assert slip["rule"] in slip["outcomes"], f"{name!r} links to a rule it does not cover"
     assert {"sign", "missing-unit", "too-few-sf"} <= set(marking.outcome_slips())
+
+
+@pytest.mark.parametrize(("typed", "padded"), [("60", True), ("60.", True), ("6.0e1", True), ("6e1", False)])
+def test_the_1_sf_feedback_is_the_rule_tables_in_the_browser_and_in_python(typed, padded):
+    """The key to 1 s.f., written with or without zeros after it (60. for 64 N is 64 N to
+    1 s.f.), is one slip: all but the A1, and the one feedback the table gives (Moodle's rows
+    and the sheets fill it with physics_figures.marking.too_few_sf_feedback)."""
+    part = QC3.parts[0]  # the drag, in N
+    data = QC3.browser_data()
+    data["parts"][0]["value"] = 64.2  # the issue's case: a key of 64 N
+    answer = {"a": {"value": typed, "unit": part.unit}}
+    marked = mark_questions([(data, answer)])[0]
+    result = marked["results"]["a"]
+    assert result["code"] == "too-few-sf", result
+    assert result["message"] == marking.too_few_sf_feedback(1, padded=padded)
+    assert "Work to 3 s.f.; give 2 or more." in result["message"]
+    got, available = marked["marks"]["byPart"]["a"]
+    assert (got, available) == (available - 1, available)
+
+
+def test_too_few_sf_feedback_refuses_a_count_that_is_not_too_few():
+    with pytest.raises(ValueError, match="few must be at least 1 and fewer than min_sf=2"):
+        marking.too_few_sf_feedback(2)
+
+
+def test_feedback_names_each_mark_by_the_rule_table_s_names():
+    """The engine glosses a code with the table's "mark_names" (the book's glossary: an A1 is the
+    accuracy mark), which the page ships with the outcomes."""
+    names = marking.mark_names()
+    assert names["A1"] == "accuracy mark" and names["C1"] == "method mark" and names["direction"] == "direction mark"
+    b = QC3.parts[1]
+    marked = one("quick-check-3", {"b": {**right(b), "direction": "downwards"}})
+    assert f"the {names['direction']} (B1) is lost" in marked["lost"]["b"]

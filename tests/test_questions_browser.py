@@ -12,6 +12,8 @@ import pytest
 from browser import VIEWPORTS, axe_violations, open_browser, serve_site
 from design_tokens import rgb
 
+from physics_figures import bank
+from physics_figures.notation import join_units
 from physics_figures.style import colour as token
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
@@ -76,6 +78,74 @@ def test_a_sign_slip_gets_its_own_message_and_direction_is_chosen_from_a_list(br
     page.select_option("#q-quick-check-3-b-direction", "upwards")
     page.press("#q-quick-check-3-b-value", "Enter")
     assert _feedback(page, 3, "b").inner_text() == "✓ Correct."
+    assert not errors
+    context.close()
+
+
+def _sign_note(key: str, variant: int) -> str:
+    """The note above a signed part, as form.py writes it, with this variant's words."""
+    positive = next(p.positive for p in bank.TEMPLATES[key].variant(variant).parts if p.direction == "signed")
+    return f"Give a signed value: positive is {join_units(positive)}."
+
+
+def test_the_sign_note_names_the_new_numbers_masses_after_new_numbers_and_a_reload(browser_and_url):
+    """The note names the ball by its mass ("the 1.0 kg ball"): New numbers, and a page opened
+    on the numbers a student had (a Start card), give it the numbers' own."""
+    browser, url = browser_and_url
+    context, page, errors = _open(browser, url)
+    form = page.locator('form.q-form[data-question="quick-check-4"]')
+    note = page.locator("#q-quick-check-4-a-note")
+    assert note.inner_text() == _sign_note("quick-check-4", 0)
+    form.locator("button.q-new").click()
+    page.wait_for_function("document.querySelector('form[data-question=\"quick-check-4\"]').dataset.variant !== '0'")
+    variant = int(form.get_attribute("data-variant"))
+    assert _sign_note("quick-check-4", variant) != _sign_note("quick-check-4", 0)  # the masses differ
+    assert note.inner_text() == _sign_note("quick-check-4", variant)
+    assert page.locator("#q-quick-check-4-b-note").inner_text() == _sign_note("quick-check-4", variant)
+    page.reload(wait_until="load")
+    assert form.get_attribute("data-variant") == str(variant)
+    assert note.inner_text() == _sign_note("quick-check-4", variant)
+    assert not errors
+    context.close()
+
+
+#: A mock test that draws one of `wanted` ("key:variant"), stored for the page to take up.
+WITH_ONE_OF = """(wanted) => {
+    const index = JSON.parse(document.querySelector('script.mock-index').textContent);
+    for (let seed = 0; seed < 5000; seed++) {
+        const test = MockDraw.draw(index, '2', 30, seed);
+        if (test.questions.some(q => wanted.includes(q.question + ':' + q.variant))) {
+            Object.assign(test, {version: 1, at: Date.now(), answers: {}, warned: []});
+            localStorage.setItem('dynamics-mock-v1', JSON.stringify(test));
+            return test;
+        }
+    }
+    return null;
+}"""
+
+
+def _signed(key: str) -> bool:
+    return any(getattr(p, "direction", "") == "signed" for p in bank.TEMPLATES[key].variant(0).parts)
+
+
+def test_the_sign_note_in_a_mock_test_names_the_drawn_variant_s_masses(browser_and_url):
+    """The mock test writes each question's form from its template's (variant 0's words) and
+    relabels it: the note names the drawn variant's masses."""
+    browser, url = browser_and_url
+    signed = [key for key in bank.TEMPLATES if _signed(key)]
+    wanted = [f"{key}:{v}" for key in signed for v in bank.TEMPLATES[key].site_variants
+              if _sign_note(key, v) != _sign_note(key, 0)]
+    assert wanted, "no template's sign note changes with its numbers"
+    context, page, errors = _open(browser, url.replace("quick-check.html", "mock-test.html"))
+    test = page.evaluate(WITH_ONE_OF, wanted)
+    assert test, f"no mock test draws one of {wanted}"
+    page.reload(wait_until="load")
+    page.locator(".mock-q").first.wait_for()
+    drawn = [(i, q["question"], q["variant"]) for i, q in enumerate(test["questions"]) if q["question"] in signed]
+    assert any(f"{key}:{v}" in wanted for _, key, v in drawn)
+    for index, key, variant in drawn:
+        note = page.locator(f'.mock-q[data-index="{index}"] .q-note').first
+        assert note.inner_text() == _sign_note(key, variant), (key, variant)
     assert not errors
     context.close()
 

@@ -59,3 +59,33 @@ def test_the_site_s_own_scripts_are_shipped_minified(site_dir):
             assert text.count("\n") <= 1 and len(text) < len(source.read_text(encoding="utf-8")), source
             shipped += 1
     assert shipped >= 10
+
+
+def test_no_page_title_repeats_the_book_s_title(site_dir):
+    """A tab reads "Page — Dynamics", and the landing page, whose title is the book's, reads
+    "Dynamics" once (it read "Dynamics — Dynamics")."""
+    repeated = {}
+    for name, text in _pages(site_dir).items():
+        found = re.search(r"<title>(.*?)</title>", text, re.DOTALL)
+        if not found:
+            continue
+        title = found.group(1).replace("&#8212;", "—").strip()
+        parts = [part.strip() for part in title.split("—")]
+        if len(parts) != len(set(parts)):
+            repeated[name] = title
+    assert not repeated, repeated
+    intro = re.search(r"<title>(.*?)</title>", _pages(site_dir)["book/intro.html"], re.DOTALL).group(1)
+    assert intro.strip() == "Dynamics"
+
+
+def test_each_worked_example_is_labelled_as_its_page_s_example(site_dir):
+    """The question of book/exam/example-N is "Example N" (sphinx-exercise's numfig_format,
+    _config.yml), and its solution "Solution to Example N", never "Exercise"."""
+    pages = _pages(site_dir)
+    examples = sorted(name for name in pages if re.fullmatch(r"book/exam/example-\d+\.html", name))
+    assert len(examples) >= 5
+    for name in examples:
+        number = re.search(r"example-(\d+)", name).group(1)
+        text = re.sub(r"<[^>]+>", "", pages[name])
+        assert "Exercise" not in text, name
+        assert f"Example {number} " in text and f"Solution to Example {number} " in text, name

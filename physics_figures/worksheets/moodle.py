@@ -181,7 +181,7 @@ def graded_answers(question: Question, index: int, *, direction_box: int = 0) ->
     if part.kind != "graph" and part.value != 0:  # right only to 1 s.f.: all but the A1
         one = _exact(float(round_number(part.value, 1)))
         if not _overlaps(*one, taken):
-            rows.append((kept(losses["too-few-sf"]), *one, "1 s.f.: the A1 needs 2 or more significant figures."))
+            rows.append((kept(losses["too-few-sf"]), *one, marking.too_few_sf_feedback(1)))
     return rows
 
 

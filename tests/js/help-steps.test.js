@@ -39,8 +39,51 @@ test("a part's steps are its revisit hint, then its mark lines but the answer's 
 });
 
 test("a line that holds the part's answer is left out, so no step gives it away", () => {
-  // "so F = 200 N" is the answer before its A1: not a step; (a)'s 4.0 in (b)'s line is no give-away
-  assert.deepEqual(steps(bounce, bounce.parts[1]), [{ html: "F = Δp / Δt = 4.0 / 0.020" }]);
+  // "so F = 200 N" is the answer before its A1: not a step; (a)'s 4.0 in (b)'s line is (a)'s
+  assert.deepEqual(steps(bounce, bounce.parts[1]), [{ html: "F = Δp / Δt = your answer to (a) / 0.020" }]);
+});
+
+// A momentum-time graph, as the bank writes it: two readings, then the force from them.
+const graph = {
+  id: "graph",
+  parts: [
+    { id: "a", kind: "graph", value: 2.4, unit: "N s", revisit: "" },
+    { id: "b", kind: "graph", value: -1.6, unit: "N s", revisit: "" },
+    { id: "c", kind: "numeric", value: 133.3, unit: "N", revisit: "F = Δp / Δt", alternatives: [] },
+  ],
+  marks: [
+    line("a", "B1", ["answer"], "2.4 N s"),
+    line("b", "B1", ["answer"], "−1.6 N s (negative: away from the wall)"),
+    line("c", "C1", ["method"], "F = Δp / Δt = (−1.6 − 2.4) / 0.030"),
+    line("c", "A1", ["answer"], "= 130 N"),
+  ],
+  givens: [{ value: 0.03, unit: "s" }],
+};
+
+test("a later part's steps never print an earlier part's answer: they say 'your answer to (a)'", () => {
+  assert.deepEqual(steps(graph, graph.parts[2]), [
+    { text: "F = Δp / Δt" },
+    { html: "F = Δp / Δt = (your answer to (b) − your answer to (a)) / 0.030" },
+  ]);
+  // of two answers of one size, the one whose sign is written; a reading of 1 s.f. too
+  const same = JSON.parse(JSON.stringify(graph));
+  same.parts[0].value = 0.5;
+  same.parts[1].value = -0.5;
+  same.marks[2].html = "F = Δp / Δt = (−0.5 − 0.5) / 0.030";
+  assert.equal(steps(same, same.parts[2])[1].html, "F = Δp / Δt = (your answer to (b) − your answer to (a)) / 0.030");
+  // a number with another unit of its own is not the earlier answer
+  const energy = JSON.parse(JSON.stringify(graph));
+  energy.marks[2].html = "after = ½ × 0.50 × 2.4<sup>2</sup> = 2.4 J";
+  assert.equal(steps(energy, energy.parts[2])[1].html, "after = ½ × 0.50 × your answer to (a)<sup>2</sup> = 2.4 J");
+});
+
+test("a number that is an earlier answer and a given of another unit is in doubt: no step", () => {
+  const doubt = JSON.parse(JSON.stringify(graph));
+  doubt.givens.push({ value: 2.4, unit: "kg" }); // a 2.4 kg mass: which is the 2.4 in the line?
+  assert.deepEqual(steps(doubt, doubt.parts[2]), [{ text: "F = Δp / Δt" }]);
+  const moon = JSON.parse(JSON.stringify(graph));
+  moon.givens.push({ value: 2.4, unit: "N s" }); // a given of (a)'s own unit is (a)'s answer
+  assert.equal(steps(moon, moon.parts[2])[1].html, "F = Δp / Δt = (your answer to (b) − your answer to (a)) / 0.030");
 });
 
 test("a choice, an explanation, or a part with nothing to show has no steps", () => {

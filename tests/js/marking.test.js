@@ -278,18 +278,34 @@ test("default rule: 2 or more significant figures; fewer is wrong", () => {
 });
 
 test("a value right only to 1 s.f. is the key at 1 s.f.: too few figures, not wrong physics", () => {
-  // 700 and 7e2 are 686.7 to 1 s.f.; 7.0 × 10² (2 s.f.) is not 686.7, it is g = 10's answer.
-  for (const typed of ["700", "7e2"]) assert.equal(code(drag, typed, "N"), "too-few-sf", typed);
+  // 700, 7e2 and 7.0 × 10² are 686.7 to 1 s.f. (the last written with a zero after it); where
+  // 700 is a named mistake's answer too (g = 10), the mistake is named (dragG below).
+  for (const typed of ["700", "7e2", "7.0 × 10²"]) assert.equal(code(drag, typed, "N"), "too-few-sf", typed);
   for (const typed of ["60", "6e1"])
     assert.equal(code(Object.assign({}, drag, { value: 56.0 }), typed, "N"), "too-few-sf", typed);
   assert.equal(code(Object.assign({}, drag, { value: 225 }), "200", "N"), "too-few-sf");
   assert.equal(code(Object.assign({}, drag, { value: 0.275 }), "0.3", "N"), "too-few-sf");
-  assert.equal(code(drag, "7.0 × 10²", "N"), "wrong");
   assert.equal(code(drag, "8e2", "N"), "wrong"); // not the key at any precision
   assert.equal(code(acceleration, "1e1", "m s^-2", "upwards"), "too-few-sf");
   assert.equal(code(dragG, "700", "N"), "mistake"); // 700 may be 3 s.f.: g = 10's answer, named
   assert.equal(mark(dragG, { value: "7.0 × 10²", unit: "N" }).mistake, "used g = 10 m s⁻²");
   assert.equal(code(dragG, "7e2", "N"), "too-few-sf"); // 1 s.f. is never read as a named mistake
+});
+
+test("the key to 1 s.f. written with a zero after it is the same 1 s.f. slip, with advice that leads on", () => {
+  const force = Object.assign({}, drag, { value: 64.2 });
+  for (const typed of ["60", "60.", "6.0e1", "6.0 × 10¹", "60.0"]) {
+    const result = mark(force, { value: typed, unit: "N" });
+    assert.equal(result.code, "too-few-sf", typed);
+    assert.match(result.message, /^1 s\.f\.: the A1 needs 2 or more\. /, typed);
+    assert.match(result.message, /Work to 3 s\.f\.; give 2 or more\.$/, typed);
+    assert.doesNotMatch(result.message, /× 10|not 700/, typed); // no advice to add a zero
+  }
+  assert.match(mark(force, { value: "60.", unit: "N" }).message, /zeros written after it do not add figures/);
+  assert.doesNotMatch(mark(force, { value: "6e1", unit: "N" }).message, /zeros/);
+  assert.equal(code(force, "64", "N"), "correct");
+  assert.equal(code(force, "70.", "N"), "wrong"); // not the key at any precision
+  assert.equal(code(Object.assign({}, force, { value: 60.4 }), "60.", "N"), "correct"); // the key to 2 s.f.
 });
 
 test("a question can ask for more significant figures", () => {

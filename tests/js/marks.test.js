@@ -156,3 +156,34 @@ test("feedback links the section the data names: a mistake's own, else its part'
   assert.equal(sectionFor({}, { code: "wrong" }), null);
   assert.equal(sectionFor(part, { code: "too-few-sf" }), "rule:too-few-sf");
 });
+
+test("what a part lost glosses each code by what its mark is for, and names two of a code once", () => {
+  const { lostText } = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "marking.js"));
+  const data = {
+    parts: [{ id: "b", kind: "numeric" }],
+    marks: [
+      { part: "b", code: "C1", roles: ["method"] },
+      { part: "b", code: "C1", roles: ["method"] },
+      { part: "b", code: "A1", roles: ["answer"] },
+      { part: "b", code: "B1", roles: ["direction"] },
+    ],
+  };
+  const lost = (lines) => lostText(data, { lines: lines }, "b");
+  assert.equal(
+    lost([true, true, false, true]),
+    "3/4 marks: the accuracy mark (A1) is lost; both method marks (C1) and the direction mark (B1) stand.",
+  );
+  assert.equal(
+    lost([false, false, false, true]),
+    "1/4 marks: both method marks (C1) and the accuracy mark (A1) are lost; the direction mark (B1) stands.",
+  );
+  assert.equal(
+    lost([true, false, true, true]),
+    "3/4 marks: one method mark (C1) is lost; the other method mark (C1), the accuracy mark (A1) and the " +
+      "direction mark (B1) stand.",
+  );
+  assert.equal(lost([true, true, true, true]), ""); // nothing lost: nothing to say
+  for (const text of [lost([true, true, false, true]), lost([true, false, true, true])]) {
+    assert.doesNotMatch(text, /C1 and C1|the [ABCM]1\b/); // every code glossed, none twice in a row
+  }
+});

@@ -114,8 +114,9 @@ def _field_label(label: str, name: str) -> str:
 def _numeric_html(base: str, part: dict, label: str = "", hint: bool = False) -> str:
     feedback, html = f"{base}-feedback", []
     if part["direction"] == "signed":
+        # the span is what question-relabel.js rewrites with another variant's words
         html.append(f'<p class="q-note" id="{base}-note">Give a signed value: positive is '
-                    f"{escape(join_units(part['positive']))}.</p>")
+                    f'<span class="q-positive">{escape(join_units(part["positive"]))}</span>.</p>')
         feedback += f" {base}-note"
     html.append('<div class="q-fields">')
     html.append(_input("q-value", f"{base}-value", escape(_field_label(label, "Value")), feedback))
@@ -171,7 +172,7 @@ def _explain_html(base: str, part: dict, data: dict) -> str:
 def rules_script() -> str:
     """The rule table the marking engine reads (physics_figures/marking_rules.json), once a page."""
     table = json.dumps({"outcomes": marking.outcome_losses(), "sigFigs": marking.sig_figs(),
-                        "slips": marking.outcome_slips()})
+                        "slips": marking.outcome_slips(), "names": marking.mark_names()})
     return f'<script type="application/json" class="q-rules">{table}</script>'
 
 

@@ -1,7 +1,8 @@
 /* Help before the answer: a numeric part's working, one step at a time, before the whole
  * worked answer. The steps come from what the question already stores: the part's revisit
  * hint, then its own mark lines, less the line that gives its final answer and any line
- * that gives its direction or holds its value, so that no step gives the answer away.
+ * that gives its direction or holds its value, so that no step gives the answer away; an
+ * earlier part's answer in a line reads "your answer to (a)".
  * The selection (steps) is pure and runs under Node for the tests; attach() is the page's:
  * a "Show a step" button and the list of the steps shown so far, under each part
  * (form.py writes them), the number shown kept per question and numbers. */
@@ -49,6 +50,62 @@
     return false;
   }
 
+  // A number in a mark line's HTML, with the minus sign before it: not a power (<sup>), nor
+  // the digits of a character reference (&#39;).
+  var HTML_NUMBER =
+    /(<sup>[\u2212-]?|&#x?)?([\u2212-])?(\d{1,3}(?:[ \u202f]\d{3})+(?:\.\d+)?|\d+(?:\.\d+)?|\.\d+)(\s*×\s*10(?:[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+|<sup>[\u2212-]?\d+<\/sup>))?/g;
+
+  /* A later part's line with each earlier part's answer in it put as "your answer to (a)":
+   * help on (c) must not give away (a) and (b) (the mark scheme's line for (c) works from
+   * their keys). earlier: the parts before this one that have a value. A given of the
+   * earlier part's unit with its value is that answer (the mass in (a), the same on the
+   * Moon); a given of another unit with its value (a 3.0 kg mass where (a) is 3.0 m s⁻¹)
+   * leaves the number in doubt, so the line is no step (null): it would either give (a)
+   * away or call the mass "your answer to (a)". */
+  function withoutEarlier(html, earlier, givens) {
+    var doubt = false;
+    var out = html.replace(HTML_NUMBER, function (all, skip, minus, digits, power, at) {
+      if (skip) return all;
+      var number = Reading.parseNumber(
+        digits.replace(/[ \u202f]/g, "") + (power || "").replace(/<sup>(.*?)<\/sup>/, "^($1)"),
+      );
+      if (!number.ok) return all;
+      var unit = (html.slice(at + all.length).match(UNIT_AFTER) || [])[1];
+      var matching = earlier.filter(function (p) {
+        // a number with a unit of its own (0.90 J) is not an answer in another unit
+        if (unit && String(p.unit).split(" ")[0] !== unit) return false;
+        // an earlier answer of 1 s.f. (a reading of −0.5 N s) is given away by itself too
+        return answersOf(p).some(function (value) {
+          return typeof value === "number" && value !== 0 && (gives(number, value) || same(number, value));
+        });
+      });
+      // of two answers of one size (0.6 and −0.6 N s), the one with the sign written
+      var part =
+        matching.filter(function (p) {
+          return !minus === p.value > 0;
+        })[0] || matching[0];
+      if (!part) return all;
+      doubt =
+        doubt ||
+        givens.some(function (given) {
+          return (
+            given.unit !== part.unit && given.value !== 0 && (gives(number, given.value) || same(number, given.value))
+          );
+        });
+      // a minus sign that is the answer's own sign goes with it; a subtraction's stays
+      var sign = minus && part.value > 0 ? minus : "";
+      return sign + "your answer to (" + part.id + ")";
+    });
+    return doubt ? null : out;
+  }
+
+  // The unit written after a number in a mark line ("0.90 J", "2.4 N s"): its first symbol.
+  var UNIT_AFTER = /^\s*(kg|g|m|s|N|J|W|kW|Pa|cm|mm|km|ms|rad|°)(?![A-Za-z])/;
+
+  function same(number, value) {
+    return Math.abs(Math.abs(number.value) - Math.abs(value)) <= 1e-9 * Math.abs(value);
+  }
+
   // The values that answer a part: its key and the values its scheme also accepts.
   function answersOf(part) {
     return [part.value].concat(
@@ -80,6 +137,12 @@
       });
     }
     var answers = answersOf(part);
+    var before = data.parts.map(function (p) {
+      return p.id;
+    });
+    var earlier = data.parts.slice(0, before.indexOf(part.id)).filter(function (p) {
+      return KINDS.indexOf(p.kind || "numeric") >= 0 && typeof p.value === "number" && p.value !== 0;
+    });
     var out = part.revisit ? [{ text: part.revisit }] : [];
     lines.forEach(function (m, i) {
       if (i === final || m.roles.indexOf("direction") >= 0) return;
@@ -88,7 +151,8 @@
           return typeof value === "number" && value !== 0 && gives(number, value);
         });
       });
-      if (!holds) out.push({ html: m.html });
+      var html = holds ? null : withoutEarlier(m.html, earlier, data.givens || []);
+      if (html !== null) out.push({ html: html });
     });
     return out;
   }

@@ -26,7 +26,7 @@
           slips[code] = name;
         });
       });
-      rulesCache = { outcomes: losses, sigFigs: table.sig_figs, slips: slips };
+      rulesCache = { outcomes: losses, sigFigs: table.sig_figs, slips: slips, names: table.mark_names };
     }
     return rulesCache;
   }
@@ -50,7 +50,8 @@
   // An outcome as the markers give it (code, message and what else they say).
   var outcome = KINDS.numeric.outcome;
 
-  /* Mark one answer to one part: its kind's marker gives the outcome (code, message). */
+  /* Mark one answer to one part: its kind's marker gives the outcome (code, message). The
+   * marker gets the rule table's figures too: its feedback on too few figures is the table's. */
   function mark(part, answer) {
     var kind = KINDS[part.kind || "numeric"];
     if (!kind) throw new Error("no marker for the part kind " + JSON.stringify(part.kind));
@@ -58,7 +59,7 @@
     if (part.minSf === undefined || part.checkSf === undefined) {
       part = Object.assign({ minSf: figures.min, checkSf: figures.check }, part);
     }
-    return kind.mark(part, answer || {});
+    return kind.mark(part, answer || {}, figures);
   }
 
   // ------------------------------------------------------------ marks, as an exam awards them
@@ -110,27 +111,73 @@
     return list.indexOf(index) >= 0 && (needs === undefined || needs === null || list.indexOf(needs) >= 0);
   }
 
-  /* What a part lost, in words: "2/3 marks: the A1 is lost; the C1 and B1 stand." */
+  /* What a part lost, in words, each code glossed by what the line is for: "2/3 marks: the
+   * accuracy mark (A1) is lost; the method mark (C1) and the direction mark (B1) stand." Lines
+   * of one kind go together: "both method marks (C1) stand". */
   function lostText(data, awarded, partId) {
     var lost = [],
       kept = [];
     data.marks.forEach(function (line, i) {
-      if (line.part === partId) (awarded.lines[i] ? kept : lost).push(line.code);
+      if (line.part === partId) (awarded.lines[i] ? kept : lost).push(line);
     });
     if (!lost.length || !kept.length) return "";
-    function list(codes) {
-      return codes.length === 1 ? codes[0] : codes.slice(0, -1).join(", ") + " and " + codes[codes.length - 1];
+    function names(lines) {
+      return lines.map(markName);
+    }
+    // a kind on both sides: "one method mark (C1) is lost; the other method mark (C1) stands"
+    function list(lines, others, first) {
+      var order = [],
+        codes = {};
+      lines.forEach(function (line) {
+        var name = markName(line);
+        if (!codes[name]) {
+          codes[name] = [];
+          order.push(name);
+        }
+        codes[name].push(line.code);
+      });
+      var phrases = order.map(function (name) {
+        return glossed(name, codes[name], others.indexOf(name) >= 0, first);
+      });
+      return phrases.length === 1
+        ? phrases[0]
+        : phrases.slice(0, -1).join(", ") + " and " + phrases[phrases.length - 1];
     }
     return (
       marksText(kept.length, kept.length + lost.length) +
-      ": the " +
-      list(lost) +
+      ": " +
+      list(lost, names(kept), true) +
       (lost.length === 1 ? " is" : " are") +
-      " lost; the " +
-      list(kept) +
+      " lost; " +
+      list(kept, names(lost), false) +
       (kept.length === 1 ? " stands." : " stand.")
     );
   }
+
+  /* What a mark line is for, in a student's words (marking_rules.json "mark_names"): by its
+   * code, but a line that only gives a direction is the direction mark. */
+  function markName(line) {
+    var names = rules().names || {};
+    if (line.roles.length === 1 && line.roles[0] === "direction") return names.direction;
+    return names[line.code] || "mark";
+  }
+
+  /* "the method mark (C1)", "both method marks (C1)", "the three method marks (C1, M1, C1)";
+   * of a kind the other side has too (shared; first: the lost side): "one method mark (C1)",
+   * "the other two method marks (C1)". */
+  function glossed(name, codes, shared, first) {
+    var same = codes.every(function (code) {
+      return code === codes[0];
+    });
+    var n = codes.length,
+      word = NUMBER_WORDS[n] || String(n);
+    var shown = " (" + (same ? codes[0] : codes.join(", ")) + ")";
+    if (shared && first) return word + " " + name + (n === 1 ? "" : "s") + shown;
+    if (shared) return "the other " + (n === 1 ? name : word + " " + name + "s") + shown;
+    if (n === 1) return "the " + name + shown;
+    return (n === 2 ? "both " : "the " + word + " ") + name + "s" + shown;
+  }
+  var NUMBER_WORDS = { 1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six" };
 
   function marksText(earned, available) {
     return earned + "/" + available + " mark" + (available === 1 ? "" : "s");

@@ -219,7 +219,13 @@
         f.feedback.className = "q-feedback " + (right ? "q-right" : "q-wrong");
         f.feedback.setAttribute("data-code", result.code);
       });
-      if (score) score.textContent = marksText(marked.marks.earned, marked.marks.available);
+      // marks earned with help say so ("4/4 marks, with 3 steps of help"), as the record does
+      var steps = help.used();
+      if (score) {
+        score.textContent =
+          marksText(marked.marks.earned, marked.marks.available) +
+          (steps ? ", with " + steps + (steps === 1 ? " step" : " steps") + " of help" : "");
+      }
       if (worked) worked.hidden = false;
       // Others listen for an attempt (a worked example's solution opens on it, below).
       section.dispatchEvent(

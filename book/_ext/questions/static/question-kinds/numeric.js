@@ -64,14 +64,30 @@
     } // zero has no significant figures
     var checkPlace = Math.floor(Math.log10(Math.abs(target)) + 1e-12) - checkSf + 1;
     for (var sf = number.sfMax; sf >= number.sfMin; sf--) {
-      if (sf >= minSf) {
-        if (stepsApart(number.value, target, Math.max(number.lead - sf + 1, checkPlace)) === 0) result.match = true;
-      } else if (roundsTo(number.value, target, sf)) {
-        result.matchFewSf = true;
+      if (sf >= minSf && stepsApart(number.value, target, Math.max(number.lead - sf + 1, checkPlace)) === 0) {
+        result.match = true;
       }
     }
-    if (result.match) result.matchFewSf = false;
+    // The key rounded to fewer figures than the A1 needs, however many zeros follow it (60,
+    // 60. and 6.0e1 for 64 are each 64 to 1 s.f.): too few figures, not wrong physics.
+    // fewSf: the most figures it is the key to.
+    for (var few = 1; few < minSf && !result.match; few++) {
+      if (roundsTo(number.value, target, few)) {
+        result.matchFewSf = true;
+        result.fewSf = few;
+      }
+    }
     return result;
+  }
+
+  /* What a key given to too few figures reads (the rule table's texts, marking_rules.json
+   * "sig_figs"; physics_figures.marking.too_few_sf_feedback fills them the same way): padded,
+   * when it is written with more figures than it has (60. for 64 to 1 s.f.). */
+  function fewSfMessage(figures, few, minSf, checkSf, padded) {
+    return figures[padded ? "feedback_padded" : "feedback"]
+      .replace(/\{few\}/g, String(few))
+      .replace(/\{min\}/g, String(minSf))
+      .replace(/\{work\}/g, String(Math.max(checkSf, minSf + 1)));
   }
 
   function outcome(code, message, extra) {
@@ -88,7 +104,7 @@
    *        minSf, checkSf, direction: "none" | "signed" | "choice", positive,
    *        choices, answerDirection, mistakes: [{value, unit, direction, feedback}], revisit}
    * answer: {value: text, unit: text, direction: text} */
-  function mark(part, answer) {
+  function mark(part, answer, figures) {
     var valueText = answer.value || "",
       unitText = answer.unit || "",
       direction = answer.direction || "";
@@ -112,7 +128,7 @@
     var recased = !fits && !answer.recased && recasedUnit(unitText, expected.dims, expected.scale);
     if (recased) {
       if (recased.replace(/\s+/g, "") === normalise(part.unit).replace(/\s+/g, "")) recased = normalise(part.unit);
-      var asMeant = mark(part, { value: valueText, unit: recased, direction: direction, recased: true });
+      var asMeant = mark(part, { value: valueText, unit: recased, direction: direction, recased: true }, figures);
       var caseNote =
         "Units are case-sensitive: " +
         superscript(normalise(unitText)) +
@@ -325,19 +341,13 @@
         "The size is right but the direction is wrong." + (part.directionHint ? " " + part.directionHint : ""),
       );
     }
-    if (result.matchFewSf) {
-      var few = Math.min(number.sfMax, minSf - 1);
-      return out(
-        "too-few-sf",
-        few +
-          " s.f.: the A1 needs " +
-          minSf +
-          " or more" +
-          (number.sfMin < number.sfMax
-            ? " (zeros at the end of a whole number may not count: write 7.0 × 10², not 700)."
-            : "."),
-      );
+    // The key to too few figures, as it may be read (60 for 64); written with zeros after it
+    // (60. or 6.0e1), only where no slip below is what it is.
+    function tooFewSf() {
+      var few = Math.min(number.sfMax, result.fewSf || minSf - 1);
+      return out("too-few-sf", fewSfMessage(figures, few, minSf, checkSf, number.sfMax > few));
     }
+    if (result.matchFewSf && number.sfMin < minSf) return tooFewSf();
     // Slips computed from the working (physics_figures.questions): nothing else is called rounding.
     if (number.sfMax >= 2 && typeof part.gNineEight === "number" && against(part.gNineEight, reading.scale).match) {
       return out(
@@ -357,6 +367,7 @@
         );
       }
     }
+    if (result.matchFewSf) return tooFewSf();
     return out("wrong", "Not right. " + (part.revisit || "Check your method and your arithmetic."));
   }
 

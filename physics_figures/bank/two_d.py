@@ -51,6 +51,8 @@ def pucks_glancing(mass: float = 0.40, speed_before: float = 2.5, speed_after: f
                   Step("component across the line", b.across, "N s"))
     m, u, v, theta = n(mass, 2), n(speed_before, 2), n(speed_after, 2), n(angle, 2)
     along, across = "p<sub>along</sub>", "p<sub>across</sub>"
+    # (b) by the student's own route from (a): sin θ = across / p_B or cos θ = along / p_B (issue 37)
+    sym_a, sym_along, sym_across = sympy.symbols("a p_along p_across")
     return Question(
         key="practice-pucks",
         text=(f"On a frictionless air table, puck A of mass {m} kg moving at {u} {PER_S} hits puck B, "
@@ -81,6 +83,8 @@ def pucks_glancing(mass: float = 0.40, speed_before: float = 2.5, speed_after: f
             Part("angle between B's motion and A's original line", b.angle_deg, "°", "angle",
                  units="° (degrees)", shown_sig_figs=3, working=components,
                  answer_from=lambda along_, across_: math.degrees(math.atan2(across_, along_)),
+                 ecf=Ecf(sympy.asin(sym_across / sym_a) * 180 / sympy.pi, {"p_across": b.across}),
+                 ecf_also=(Ecf(sympy.acos(sym_along / sym_a) * 180 / sympy.pi, {"p_along": b.along}),),
                  revisit="tan θ = across component / along component, on the other side of the line.",
                  mistakes=(
                      Mistake("same angle as A", angle,

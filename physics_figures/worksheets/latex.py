@@ -266,8 +266,11 @@ def ecf_note(question: Question, index: int) -> str:
     text = re.sub(r"\*\*(\d+)", lambda m: m[1].translate(_POWERS), text)
     text = text.replace("*", " × ").replace("/", " / ").replace("-", "−")
     uses = ", ".join(f"({u})" for u in part.ecf.uses)
+    # a named mistake of this part that follows from the same mistake earlier is such an answer
+    carried = "".join(f" {name} in {', '.join(f'({u})' for u in shown)} carried forward earns these marks too."
+                      for name, shown in question.carried_mistakes(index).items())
     return (f"ecf: a wrong answer to {uses} carried forward earns these marks: "
-            f"({question.part_ids[index]}) = {text}, worked with the student's own {uses}.")
+            f"({question.part_ids[index]}) = {text}, worked with the student's own {uses}.{carried}")
 
 
 def wrong_answers(part) -> list[tuple[str, str, str]]:

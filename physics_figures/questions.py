@@ -38,7 +38,10 @@ from .parts import (  # the part kinds, one module each (physics_figures/parts/)
     KINDS,
     OPTION_LETTERS,
     Alternative,
+    Arrow,
+    Body,
     ChoicePart,
+    Diagram,
     Ecf,
     ExplainPart,
     Graph,
@@ -68,8 +71,8 @@ from .parts.common import (
 )
 
 __all__ = ["ASKS", "DEFAULT_CHECK_SIG_FIGS", "DEFAULT_MIN_SIG_FIGS", "DIRECTION_MODES", "G_NINE_EIGHT", "G_TEN",
-           "KINDS", "MARK_CODES", "OPTION_LETTERS", "PART_IDS", "PART_WAY_SIG_FIGS", "Alternative", "ChoicePart",
-           "Ecf", "ExplainPart", "Given", "Graph", "GraphPart", "Mark", "Mistake", "Option", "Part", "Question",
+           "KINDS", "MARK_CODES", "OPTION_LETTERS", "PART_IDS", "PART_WAY_SIG_FIGS", "Alternative", "Arrow", "Body",
+           "ChoicePart", "Diagram", "Ecf", "ExplainPart", "Given", "Graph", "GraphPart", "Mark", "Mistake", "Option", "Part", "Question",
            "Reading", "Sketch", "Step", "choices_in_order", "number", "reading_places", "unit_text"]
 
 
@@ -130,6 +133,8 @@ class Question:
     text: str = ""
     #: The graph the question prints, when a part reads from it (GraphPart).
     graph: Graph | None = None
+    #: The situation drawn beside the text (bodies before and after), from the variant's givens.
+    diagram: Diagram | None = None
 
     def __post_init__(self):
         readings = [p for p in self.parts if p.kind == "graph"]

@@ -114,11 +114,16 @@ def _graph_file(index: int) -> str:
 
 
 def graphs(version: Version) -> dict[str, bytes]:
-    """The vector PDFs of this version's graphs, by file name (drawn from its numbers)."""
-    from ..figures.question_graph import question_graph  # matplotlib only when a sheet has a graph
+    """The vector PDFs of this version's graphs and diagrams (a question prints one or the
+    other), by file name (drawn from its numbers)."""
+    # matplotlib only when a sheet has a figure
+    from ..figures.question_diagram import question_diagram
+    from ..figures.question_graph import question_graph
 
-    return {_graph_file(number): question_graph(item.question.graph).pdf()
-            for number, item in enumerate(version.items, start=1) if item.question.graph is not None}
+    return {_graph_file(number): (question_graph(item.question.graph) if item.question.graph is not None
+                                  else question_diagram(item.question.diagram)).pdf()
+            for number, item in enumerate(version.items, start=1)
+            if item.question.graph is not None or item.question.diagram is not None}
 
 
 # ----------------------------------------------------------------- the question sheet
@@ -235,7 +240,7 @@ def question_sheet(sheet: Sheet, version: Version) -> str:
     for number, item in enumerate(version.items, start=1):
         question = item.question
         body.append(f"\\question{{{number}}}{rich(question.text)}")
-        if question.graph is not None:
+        if question.graph is not None or question.diagram is not None:
             body.append("\\par\\begin{center}\\includegraphics[width=0.78\\linewidth]{"
                         + _graph_file(number) + "}\\end{center}")
         for index, marks in enumerate(part_marks(question)):

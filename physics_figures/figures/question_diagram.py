@@ -101,14 +101,27 @@ def plot_question_diagram(diagram: Diagram) -> Figure:
     return figure
 
 
+def _arrow_words(arrow, diagram: Diagram) -> str:
+    """"moving right at 2.5 m/s", "moving at 1.5 m/s at 40° above the x-direction"."""
+    if arrow.angle_from is None:
+        return f"moving {_direction_words(arrow.direction, diagram.compass)} at {arrow.label}"
+    angle = math.radians(arrow.direction)
+    if diagram.wall:
+        side = "towards the wall" if math.cos(angle) > 0 else "away from the wall"
+        return f"moving {side} at {arrow.label}, at {arrow.angle_label} to the wall"
+    up = arrow.direction % 360 < 180
+    if diagram.compass:
+        return f"moving at {arrow.label}, {arrow.angle_label} {'north' if up else 'south'} of east"
+    return f"moving at {arrow.label}, {arrow.angle_label} {'above' if up else 'below'} the x-direction"
+
+
 def diagram_alt(diagram: Diagram) -> str:
     """The diagram in words, with every number it prints."""
     def said(body: Body) -> str:
         mass = f" of mass {body.mass}" if body.mass else ""
-        moves = "; ".join(f"moving {_direction_words(a.direction, diagram.compass)} at {a.label}"
-                          + (f", {a.angle_label} from {_direction_words(a.angle_from, diagram.compass)}"
-                             if a.angle_from is not None else "") for a in body.arrows)
-        return f"{body.name or 'a body'}{mass}, " + (moves or body.note)
+        moves = "; ".join(_arrow_words(a, diagram) for a in body.arrows)
+        name = f"piece {body.name}" if body.name.isdigit() else body.name or "a body"
+        return f"{name}{mass}, " + (moves or body.note)
 
     parts = [f"{title}: " + "; ".join(said(b) for b in bodies) + "."
              for title, bodies in (("Before", diagram.before), ("After", diagram.after)) if bodies]

@@ -80,3 +80,19 @@ def test_each_page_shows_the_diagram_and_new_numbers_brings_each_variant_s_own(s
         labels = html.unescape(" ".join(re.findall(r"<text[^>]*>([^<]*)</text>", svg)))
         for number in numbers:
             assert number in data["diagram"]["alt"] and number in labels, (key, index, number)
+
+
+def test_the_sheet_builder_s_sheets_carry_each_diagram():
+    """The teacher's sheet builder prints a reserve variant with its diagram, as with its graph."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "book" / "_ext"))
+    from questions.sheet_builder import builder_data
+
+    pictures = []
+    data = builder_data(bank.TOPIC, lambda name, picture: pictures.append((name, picture)) or f"<svg>{name}</svg>")
+    names = {name.rsplit("-", 1)[0] for name, picture in pictures if picture.__class__.__name__ == "Diagram"}
+    assert set(DIAGRAMMED) <= names
+    index = bank.TEMPLATES["puck-components"].reserve_variants[0]
+    assert f"<svg>puck-components-{index}</svg>" in data["variants"]["puck-components"][str(index)]["sheet"]

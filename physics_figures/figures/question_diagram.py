@@ -11,6 +11,7 @@ import math
 from matplotlib.figure import Figure
 from matplotlib.patches import Arc, Circle, Rectangle
 
+from ..notation import format_number
 from ..questions import Body, Diagram
 from ._text import plain
 from .book_figure import BookFigure
@@ -31,7 +32,7 @@ def _direction_words(degrees: float, compass: bool) -> str:
     quarter = round((degrees % 360) / 90) % 4
     if math.isclose((degrees % 360) % 90, 0, abs_tol=1e-9):
         return names[quarter]
-    return f"at {degrees % 360:.0f} degrees anticlockwise from {names[0]}"
+    return f"at {format_number(degrees % 360, decimals=0)} degrees anticlockwise from {names[0]}"
 
 
 def _body(ax, x: float, body: Body, colour: str, *, plane: bool) -> None:

@@ -38,7 +38,10 @@ from .parts import (  # the part kinds, one module each (physics_figures/parts/)
     KINDS,
     OPTION_LETTERS,
     Alternative,
+    Arrow,
+    Body,
     ChoicePart,
+    Diagram,
     Ecf,
     ExplainPart,
     Graph,
@@ -68,8 +71,8 @@ from .parts.common import (
 )
 
 __all__ = ["ASKS", "DEFAULT_CHECK_SIG_FIGS", "DEFAULT_MIN_SIG_FIGS", "DIRECTION_MODES", "G_NINE_EIGHT", "G_TEN",
-           "KINDS", "MARK_CODES", "OPTION_LETTERS", "PART_IDS", "PART_WAY_SIG_FIGS", "Alternative", "ChoicePart",
-           "Ecf", "ExplainPart", "Given", "Graph", "GraphPart", "Mark", "Mistake", "Option", "Part", "Question",
+           "KINDS", "MARK_CODES", "OPTION_LETTERS", "PART_IDS", "PART_WAY_SIG_FIGS", "Alternative", "Arrow", "Body",
+           "ChoicePart", "Diagram", "Ecf", "ExplainPart", "Given", "Graph", "GraphPart", "Mark", "Mistake", "Option", "Part", "Question",
            "Reading", "Sketch", "Step", "choices_in_order", "number", "reading_places", "unit_text"]
 
 
@@ -130,6 +133,8 @@ class Question:
     text: str = ""
     #: The graph the question prints, when a part reads from it (GraphPart).
     graph: Graph | None = None
+    #: The situation drawn beside the text (bodies before and after), from the variant's givens.
+    diagram: Diagram | None = None
 
     def __post_init__(self):
         readings = [p for p in self.parts if p.kind == "graph"]
@@ -245,6 +250,32 @@ class Question:
             found[typed] = Alternative(value, "the value the scheme's working gives from the "
                                               "earlier answers as printed")
         return tuple(found.values())
+
+    def carried_mistakes(self, index: int) -> dict[str, tuple[str, ...]]:
+        """{name: the earlier parts it follows from} for each named mistake of a later part that
+        one of its ecf methods gives from the same-named mistake in the earlier parts it uses
+        (the rest right): sin and cos swapped in (a) and (b) gives (d)'s "sin and cos swapped".
+        After those earlier answers it earns ecf like any wrong answer carried forward
+        (CLARIFICATIONS, "ecf after a named mistake"): the browser's engine carries the earlier
+        answer with all the figures of the value it matched (marking.js, earlierValues)."""
+        part = self.parts[index]
+        keys = dict(zip(self.part_ids, (p.value for p in self.parts), strict=True))
+        found: dict[str, tuple[str, ...]] = {}
+        for mistake in getattr(part, "mistakes", ()):
+            if mistake.unit is not None or mistake.direction is not None:
+                continue
+            for method in part.ecf_methods:
+                earlier = {u: {m.name: m.value for m in self.parts[self.part_ids.index(u)].mistakes}
+                           for u in method.uses}
+                showing = tuple(u for u in method.uses if mistake.name in earlier[u])
+                if not showing:
+                    continue
+                worked = method.evaluate({**keys, **{u: earlier[u][mistake.name] for u in showing}})
+                worked = worked if part.direction == "signed" else abs(worked)
+                if math.isclose(worked, mistake.value, rel_tol=1e-9, abs_tol=1e-12):
+                    found[mistake.name] = showing
+                    break
+        return found
 
     def _check_mark_codes(self) -> None:
         """9702's codes: M1 only where a part asks to show, explain or state; every A1

@@ -81,3 +81,30 @@ def test_a_part_worked_from_wrong_earlier_answers_earns_its_marks_as_ecf(site, k
         assert box.locator(".q-feedback").get_attribute("data-code") == "ecf", box.locator(".q-feedback").inner_text()
         earned, available = re.match(r"(\d+)/(\d+) marks? \(ecf\)", box.locator(".q-part-marks").inner_text()).groups()
         assert earned == available != "0"
+
+
+@pytest.mark.parametrize("key", ["puck-components", "explosion-two-pieces"])
+def test_sin_and_cos_swapped_in_a_and_b_earns_ecf_in_c_and_d_on_the_page(site, key):
+    """The examiner's case (issue 37): sin and cos swapped in (a) and (b), typed to 2 s.f.;
+    (c) and (d) worked from those values with all their figures, typed to 3 s.f.: each earns
+    all its marks as ecf (it scored 0/3 and 1/3)."""
+    browser, base_url, pages = site
+    question = bank.TEMPLATES[key].variant(0)
+    parts = dict(zip(question.part_ids, question.parts, strict=True))
+    swapped = {pid: next(m.value for m in parts[pid].mistakes if m.name == "sin and cos swapped") for pid in "ab"}
+    with page_without_errors(browser, base_url + pages[key]) as page:
+        form = page.locator(f'form.q-form[data-question="{key}"]')
+        for pid, sig_figs in (("a", 2), ("b", 2), ("c", 3), ("d", 3)):
+            value = swapped[pid] if pid in "ab" else parts[pid].ecf.evaluate(swapped)
+            box = form.locator(f'[data-part="{pid}"]')
+            box.locator("input.q-value").fill(plain_number(format_number(
+                value if parts[pid].direction == "signed" else abs(value), sig_figs)))
+            box.locator("input.q-unit").fill(parts[pid].unit)
+            if parts[pid].direction == "choice":
+                box.locator("select.q-direction").select_option(parts[pid].answer_direction)
+        form.locator("button.q-check").click()
+        for pid in "cd":
+            box = form.locator(f'[data-part="{pid}"]')
+            assert box.locator(".q-feedback").get_attribute("data-code") == "ecf", box.locator(".q-feedback").inner_text()
+            earned, available = re.match(r"(\d+)/(\d+) marks? \(ecf\)", box.locator(".q-part-marks").inner_text()).groups()
+            assert earned == available != "0"

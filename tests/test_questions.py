@@ -291,10 +291,11 @@ def test_the_key_prints_the_notes_values_in_the_mark_scheme():
 
 
 #: The parts that use an earlier part's answer, and so carry an error forward. Quick check
-#: 4 solves both velocities from the same two equations, quick check 5(b) uses the stated
-#: mass (not (a)), and the pucks' angle comes from the components (not from (a)'s size):
-#: none of those uses an earlier answer.
-ECF_PARTS = {("quick-check-1", "b"), ("quick-check-3", "b"), ("practice-wall-bounce", "b"),
+#: 4 solves both velocities from the same two equations: neither uses the other. Quick check
+#: 5(b) and the pucks' angle can be done without (a), but an examiner follows the student's
+#: own working (issue 37): the weight from their own mass, the angle by sin or cos from (a).
+ECF_PARTS = {("quick-check-1", "b"), ("quick-check-3", "b"), ("quick-check-5", "b"), ("practice-pucks", "b"),
+             ("practice-wall-bounce", "b"),
              ("practice-mars-rock", "b"), ("practice-towing", "b"), ("practice-trolleys-stick", "b"),
              ("elastic-both-moving", "b"), ("elastic-both-moving", "c"),
              ("sticking-energy-lost", "b"), ("sticking-energy-lost", "c"),

@@ -49,6 +49,8 @@ def backpack_on_the_moon(mass: float = 12.0) -> Question:
                              f"Mass doesn't depend on g at all: the backpack's mass is still {m} kg."),
                  ), see="first-law"),
             Part("weight on the Moon", moon_weight, "N", "weight", shown_sig_figs=3,
+                 # the weight from the student's own mass in (a), wrong or not (issue 37)
+                 ecf=Ecf(a_answer * sympy.Symbol("g_moon"), {"g_moon": G_MOON}),
                  revisit="Weight = mass × gravitational field strength, W = mg, with the Moon's g.",
                  mistakes=(
                      Mistake("used the Earth's g", weight(mass),

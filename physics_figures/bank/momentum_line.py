@@ -35,6 +35,7 @@ from ..questions import (
     choices_in_order,
 )
 from ..variants import Draw, Template
+from . import diagrams
 from ._common import M_S, N_S, PER_S, enough_figures, reading, reading_rule, w
 
 a_answer, m1_symbol, u1_symbol, m2_symbol, speed2_symbol = sympy.symbols("a m1 u1 m2 speed2")
@@ -47,6 +48,8 @@ def rifle_recoil(rifle: float = 4.0, bullet: float = 0.010, bullet_speed: float 
     r, b, s = n(rifle, 2), n(bullet, 2), n(bullet_speed, 3)
     return Question(
         key="quick-check-2",
+        diagram=diagrams.line(((f"{r} kg", 0.0), (f"{b} kg", 0.0)), ((f"{r} kg", None), (f"{b} kg", bullet_speed)),
+                              names=("rifle", "bullet"), speed_figures=3),
         text=(f"A {r} kg rifle, initially at rest, fires a {b} kg bullet at {s} {PER_S}. "
               "Calculate the recoil speed of the rifle."),
         givens=(Given("rifle mass", rifle, "kg", 2), Given("bullet mass", bullet, "kg", 2),
@@ -99,6 +102,7 @@ def trolleys_stick(m1: float = 2.0, u1: float = 3.0, m2: float = 1.0, speed2: fl
     ke_before = m1_symbol * u1_symbol**2 / 2 + m2_symbol * speed2_symbol**2 / 2
     return Question(
         key="practice-trolleys-stick",
+        diagram=diagrams.line(((f"{first} kg", u1), (f"{second} kg", u2)), (("", None),), names=("", "")),
         text=(f"A {first} kg trolley moving at {n(u1, 2)} {PER_S} collides head-on with a {second} kg "
               f"trolley moving towards it at {n(speed2, 2)} {PER_S}. They stick together.\n\n"
               f"(a) Taking the direction of the {first} kg trolley as positive, calculate their velocity "
@@ -243,6 +247,7 @@ def stick_choice(m1: float = 3.0, u1: float = 4.0, m2: float = 2.0, speed2: floa
     }, sig_figs=2, unit=PER_S, seed=1)
     return Question(
         key="stick-choice",
+        diagram=diagrams.line(((f"{n(m1, 2)} kg", u1), (f"{n(m2, 2)} kg", -speed2)), (("", None),), names=("", "")),
         text=(f"A trolley of mass {n(m1, 2)} kg moving at {n(u1, 2)} {PER_S} collides head-on with a "
               f"trolley of mass {n(m2, 2)} kg moving towards it at {n(speed2, 2)} {PER_S}. "
               "The trolleys stick together."),
@@ -271,6 +276,7 @@ def trolleys_spring_apart(mass_a: float = 1.5, mass_b: float = 0.50, speed_b: fl
     directions = ("the same way as B", "the opposite way to B")
     return Question(
         key="practice-spring-apart",
+        diagram=diagrams.line(((f"{a_} kg", 0.0), (f"{b_} kg", 0.0)), (("", None), ("", speed_b))),
         text=(f"Trolley A, of mass {a_} kg, and trolley B, of mass {b_} kg, are at rest on a level track "
               "with a compressed spring between them. The spring is released and the trolleys fly apart; "
               f"B moves off at {u} {PER_S}.\n\n"
@@ -403,6 +409,7 @@ def collision_third_law(mass_a: float = 0.60, speed_a: float = 2.5, mass_b: floa
                     "it was moving before.", see="momentum"))
     return Question(
         key="collision-third-law",
+        diagram=diagrams.line(((f"{ma} kg", speed_a), (f"{mb} kg", u_b)), (("", after_a), ("", None))),
         text=(f"Trolley A, of mass {ma} kg, moves at {ua} {PER_S} to the right along a straight, level track "
               f"towards trolley B, of mass {mb} kg, which is {b_before}. The trolleys collide and are in contact "
               f"for {t} s. After the collision A {a_after}.\n\n"

@@ -35,6 +35,7 @@ from ..questions import (
     choices_in_order,
 )
 from ..variants import Draw, Template
+from . import diagrams
 from ._common import M_S, N_S, PER_S, enough_figures, w
 
 
@@ -51,8 +52,11 @@ def pucks_glancing(mass: float = 0.40, speed_before: float = 2.5, speed_after: f
                   Step("component across the line", b.across, "N s"))
     m, u, v, theta = n(mass, 2), n(speed_before, 2), n(speed_after, 2), n(angle, 2)
     along, across = "p<sub>along</sub>", "p<sub>across</sub>"
+    # (b) by the student's own route from (a): sin θ = across / p_B or cos θ = along / p_B (issue 37)
+    sym_a, sym_along, sym_across = sympy.symbols("a p_along p_across")
     return Question(
         key="practice-pucks",
+        diagram=diagrams.glancing(mass, speed_before, speed_after, angle),
         text=(f"On a frictionless air table, puck A of mass {m} kg moving at {u} {PER_S} hits puck B, "
               f"which is at rest. Afterwards A moves at {v} {PER_S} at {theta}° to its original direction. "
               "Calculate (a) the size of the momentum of B after the collision, and (b) the angle between "
@@ -81,6 +85,8 @@ def pucks_glancing(mass: float = 0.40, speed_before: float = 2.5, speed_after: f
             Part("angle between B's motion and A's original line", b.angle_deg, "°", "angle",
                  units="° (degrees)", shown_sig_figs=3, working=components,
                  answer_from=lambda along_, across_: math.degrees(math.atan2(across_, along_)),
+                 ecf=Ecf(sympy.asin(sym_across / sym_a) * 180 / sympy.pi, {"p_across": b.across}),
+                 ecf_also=(Ecf(sympy.acos(sym_along / sym_a) * 180 / sympy.pi, {"p_along": b.along}),),
                  revisit="tan θ = across component / along component, on the other side of the line.",
                  mistakes=(
                      Mistake("same angle as A", angle,
@@ -141,6 +147,7 @@ def glancing_speed_choice(m1: float = 0.20, speed_before: float = 3.0, m2: float
     ma, mb, u, v, theta = n(m1, 2), n(m2, 2), n(speed_before, 2), n(speed_after, 2), n(angle, 2)
     return Question(
         key="glancing-speed-choice",
+        diagram=diagrams.glancing(m1, speed_before, speed_after, angle, m2),
         text=(f"On a frictionless air table, puck A of mass {ma} kg moving at {u} {PER_S} hits puck B of "
               f"mass {mb} kg, which is at rest. After the collision A moves at {v} {PER_S} at {theta}° to "
               "its original direction."),
@@ -185,6 +192,8 @@ def explosion_three_pieces(m1: float = 0.20, v1: float = 30.0, m2: float = 0.30,
     sym_a, sym_m3 = sympy.symbols("a m_c")
     return Question(
         key="explosion-three-pieces",
+        diagram=diagrams.explosion_from_rest(((m1, v1, 0.0 if first_way == "east" else 180.0),
+                                              (m2, v2, 90.0 if second_way == "north" else 270.0), (m3, None, None))),
         text=(f"A firework shell at rest explodes into three pieces. A piece of mass {ma} kg flies due "
               f"{first_way} at {ua} {PER_S}, and a piece of mass {mb} kg flies due {second_way} at {ub} "
               f"{PER_S}. The third piece has mass {mc} kg. Calculate, for the third piece, (a) the size of "
@@ -260,6 +269,7 @@ def skaters_stick_right_angles(m1: float = 70.0, u1: float = 4.0, m2: float = 50
     sym_a, sym_m1, sym_m2, sym_u1, sym_u2 = sympy.symbols("a m_a m_b u_a u_b")
     return Question(
         key="skaters-stick-right-angles",
+        diagram=diagrams.at_right_angles(m1, u1, m2, u2),
         text=(f"On smooth ice, skater A of mass {ma} kg moves due east at {ua} {PER_S}, and skater B of mass "
               f"{mb} kg moves due north at {ub} {PER_S}. They collide and hold on to each other. Calculate "
               "(a) their speed just after the collision, (b) the angle between their direction and due east "
@@ -332,6 +342,7 @@ def oblique_wall_bounce(mass: float = 0.060, speed: float = 20.0, angle: float =
     sym_a, sym_b, sym_t = sympy.symbols("a b contact")
     return Question(
         key="oblique-wall-bounce",
+        diagram=diagrams.wall_bounce(mass, speed, angle),
         text=(f"A ball of mass {m} kg hits a smooth vertical wall at {u} {PER_S}, moving at {theta}° to the "
               f"wall. It bounces off at the same speed and at the same angle to the wall, and is in contact "
               f"with it for {t_ms} ms. Calculate (a) the component of the ball's momentum at right angles to "
@@ -431,6 +442,7 @@ def puck_components(m1: float = 0.40, speed_before: float = 2.5, m2: float = 0.6
                                   n(b.angle_deg, 3))
     return Question(
         key="puck-components",
+        diagram=diagrams.glancing(m1, speed_before, speed_after, angle, m2),
         text=(f"On a frictionless air table, puck A of mass {ma} kg moves in the x-direction at {u} {PER_S} "
               f"and hits puck B of mass {mb} kg, which is at rest. After the collision A moves at {v} {PER_S} "
               f"at {theta}° to the x-direction. Calculate (a) the x-component and (b) the size of the "
@@ -556,6 +568,7 @@ def explosion_two_pieces(mass: float = 2.0, speed: float = 5.0, piece: float = 0
                                         n(angle_other, 3))
     return Question(
         key="explosion-two-pieces",
+        diagram=diagrams.explosion_moving(mass, speed, piece, piece_speed, angle, north),
         text=(f"A firework shell of mass {mm} kg is moving horizontally due east at {uu} {PER_S} when it explodes "
               f"into two pieces. Just after the explosion, a piece of mass {m1} kg moves horizontally at {v1} "
               f"{PER_S} at {theta}° {first} of east. For the other piece, calculate (a) its momentum due east "

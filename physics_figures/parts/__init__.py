@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 from .choice import OPTION_LETTERS, ChoicePart, Option, Sketch, choices_in_order
+from .diagram import Arrow, Body, Diagram
 from .explain import ExplainPart
 from .graph import Graph, GraphPart, reading_places
 from .numeric import Alternative, Ecf, Mistake, Part, Reading, Step
@@ -12,5 +13,5 @@ from .numeric import Alternative, Ecf, Mistake, Part, Reading, Step
 #: engine looks its marker up by.
 KINDS = {kind.kind: kind for kind in (Part, GraphPart, ChoicePart, ExplainPart)}
 
-__all__ = ["KINDS", "OPTION_LETTERS", "Alternative", "ChoicePart", "Ecf", "ExplainPart", "Graph", "GraphPart",
+__all__ = ["KINDS", "OPTION_LETTERS", "Alternative", "Arrow", "Body", "ChoicePart", "Diagram", "Ecf", "ExplainPart", "Graph", "GraphPart",
            "Mistake", "Option", "Part", "Reading", "Sketch", "Step", "choices_in_order", "reading_places"]

@@ -119,11 +119,16 @@ def _graph_file(index: int) -> str:
 
 
 def graphs(version: Version) -> dict[str, bytes]:
-    """The vector PDFs of this version's graphs, by file name (drawn from its numbers)."""
-    from ..figures.question_graph import question_graph  # matplotlib only when a sheet has a graph
+    """The vector PDFs of this version's graphs and diagrams (a question prints one or the
+    other), by file name (drawn from its numbers)."""
+    # matplotlib only when a sheet has a figure
+    from ..figures.question_diagram import question_diagram
+    from ..figures.question_graph import question_graph
 
-    return {_graph_file(number): question_graph(item.question.graph).pdf()
-            for number, item in enumerate(version.items, start=1) if item.question.graph is not None}
+    return {_graph_file(number): (question_graph(item.question.graph) if item.question.graph is not None
+                                  else question_diagram(item.question.diagram)).pdf()
+            for number, item in enumerate(version.items, start=1)
+            if item.question.graph is not None or item.question.diagram is not None}
 
 
 # ----------------------------------------------------------------- the question sheet
@@ -249,7 +254,7 @@ def question_sheet(sheet: Sheet, version: Version) -> str:
         # a choice question: its text, graph and first part (the options) on one page
         keep = question.parts[0].kind == "mcq"
         start = [f"\\question{{{number}}}{rich(question.text)}"]
-        if question.graph is not None:
+        if question.graph is not None or question.diagram is not None:
             start.append("\\par\\begin{center}\\includegraphics[width=0.78\\linewidth]{"
                          + _graph_file(number) + "}\\end{center}")
         parts = [_part(question, index, marks) for index, marks in enumerate(part_marks(question))]
@@ -284,8 +289,11 @@ def ecf_note(question: Question, index: int) -> str:
     text = re.sub(r"\*\*(\d+)", lambda m: m[1].translate(_POWERS), text)
     text = text.replace("*", " × ").replace("/", " / ").replace("-", "−")
     uses = ", ".join(f"({u})" for u in part.ecf.uses)
+    # a named mistake of this part that follows from the same mistake earlier is such an answer
+    carried = "".join(f" {name} in {', '.join(f'({u})' for u in shown)} carried forward earns these marks too."
+                      for name, shown in question.carried_mistakes(index).items())
     return (f"ecf: a wrong answer to {uses} carried forward earns these marks: "
-            f"({question.part_ids[index]}) = {text}, worked with the student's own {uses}.")
+            f"({question.part_ids[index]}) = {text}, worked with the student's own {uses}.{carried}")
 
 
 class WrongAnswer(NamedTuple):

@@ -55,6 +55,26 @@ test("a later part worked from a wrong earlier answer earns its marks as ecf", (
   assert.deepEqual(r.marks.byPart, { a: [0, 2], b: [3, 3] });
 });
 
+test("a named mistake carried forward earns ecf, worked from its typed or its full value", () => {
+  // (a)'s named mistake is 15.55 N s, typed to 2 s.f. as 16; (b) = (a) / 2 from 15.55 is 7.775
+  const named = JSON.parse(JSON.stringify(data));
+  named.parts[0].mistakes = [{ name: "slip", value: 15.55, feedback: "f", loses: ["method", "answer"] }];
+  const mark = (a, b) =>
+    markQuestion(named, { a: { value: a, unit: "N s" }, b: { value: b, unit: "m/s", direction: "forwards" } });
+  [
+    ["16", "7.78"],
+    ["16", "8.0"],
+    ["15.6", "7.78"],
+    ["15.6", "7.8"],
+  ].forEach(([a, b]) => {
+    const r = mark(a, b);
+    assert.equal(r.results.a.mistake, "slip");
+    assert.equal(r.results.b.code, "ecf", a + " then " + b);
+    assert.deepEqual(r.marks.byPart.b, [3, 3]);
+  });
+  assert.equal(mark("16", "7.70").results.b.code, "wrong"); // from neither 16 nor 15.55
+});
+
 test("ecf in the wrong direction loses only the direction's B1", () => {
   const r = ask("22", "11", "backwards");
   assert.equal(r.results.b.code, "direction");

@@ -74,6 +74,9 @@ class QuestionDirective(SphinxDirective):
         node += nodes.container("", *text_nodes(data.text), classes=["q-text"])
         if data.graph is not None:
             node += self._graph(template.key, data.graph)
+        if data.diagram is not None:
+            uses_modules(self.env, store.DIAGRAM_MODULE)
+            node += self._diagram(template.key, data.diagram)
         lines = nodes.container(classes=["q-answer-lines"])
         marks = data.part_marks()  # the one count the browser, sheets and Moodle use
         for index, part in enumerate(data.parts):
@@ -108,6 +111,14 @@ class QuestionDirective(SphinxDirective):
         return graph_view("", nodes.image(uri=uri, alt=drawn.alt, classes=["q-graph"]),
                           square=square_text(folder / f"{key}-0.svg", graph),
                           cursor=cursor_text(folder / f"{key}-0.svg", graph))
+
+    def _diagram(self, key: str, diagram) -> nodes.image:
+        """The printed variant's diagram, as SVG (the site) and PDF (the book), like its graph."""
+        folder = Path(self.env.doctreedir).parent / GRAPHS_DIR
+        drawn = write_diagram(folder, diagram_name(key, 0), diagram, formats=("svg", "pdf"))
+        here = Path(self.env.srcdir) / Path(self.env.docname).parent
+        uri = Path(os.path.relpath(folder / diagram_name(key, 0), here)).as_posix() + ".*"
+        return nodes.image(uri=uri, alt=drawn.alt, classes=["q-diagram"])
 
     def _record(self, node: question, data, title: str, worked: worked_answer) -> None:
         for docname, asked in store.questions(self.env).items():
@@ -237,3 +248,24 @@ def write_graph(folder: Path, name: str, graph, *, formats: tuple[str, ...]):
     drawn.figure.clear()  # matplotlib keeps figures alive until cleared
     return drawn
 
+
+
+def diagram_name(key: str, index: int) -> str:
+    """A variant's diagram's file name, without its extension."""
+    return f"{key}-diagram-{index}"
+
+
+def write_diagram(folder: Path, name: str, diagram, *, formats: tuple[str, ...]):
+    """Draw a question's diagram into folder/name.<format> (physics_figures.figures.question_diagram),
+    rewriting a file only when its bytes change. Returns the BookFigure."""
+    from physics_figures.figures.question_diagram import question_diagram
+
+    drawn = question_diagram(diagram)
+    folder.mkdir(parents=True, exist_ok=True)
+    for extension in formats:
+        content = drawn.svg().encode() if extension == "svg" else drawn.pdf()
+        path = folder / f"{name}.{extension}"
+        if not path.exists() or path.read_bytes() != content:
+            path.write_bytes(content)
+    drawn.figure.clear()
+    return drawn

@@ -44,7 +44,7 @@ README = "teachers/README.txt"
 #: What the data file is made from besides the topics: the sheets' HTML and its helpers, the
 #: draws (physics_figures.worksheets), the graphs and the sketches.
 SOURCES = ("physics_figures.worksheets", "physics_figures.worksheets.html", store.GRAPH_MODULE,
-           "physics_figures.figures.sketches")
+           store.DIAGRAM_MODULE, "physics_figures.figures.sketches")
 NEEDS_BROWSER = ("The sheet builder runs in your web browser: open this page in the web version of the book, "
                  "with JavaScript on, to use it.")
 DEFAULTS = {"marks": 30, "versions": 3, "seed": 2027}
@@ -176,9 +176,11 @@ def _graph(folder: Path, name: str, graph, last: dict, drawn: dict) -> str:
     path = folder / f"{name}.svg"
     before = last.get(name, {})
     if not (before.get("numbers") == numbers and path.is_file() and _sha256(path.read_bytes()) == before.get("svg")):
+        from physics_figures.figures.question_diagram import question_diagram
         from physics_figures.figures.question_graph import question_graph
+        from physics_figures.questions import Diagram
 
-        figure = question_graph(graph)
+        figure = question_diagram(graph) if isinstance(graph, Diagram) else question_graph(graph)
         text = inline_svg(figure.svg(), prefix=f"{name}-", alt=figure.alt)
         figure.figure.clear()  # matplotlib keeps figures alive until cleared
         before = {"numbers": numbers, "svg": _write(path, text.encode())}
@@ -215,7 +217,8 @@ def builder_data(topic, graph_svg) -> dict:
         pages = data["variants"][template.key] = {}
         for index in template.reserve_variants:
             question = template.variant(index)
-            svg = "" if question.graph is None else graph_svg(f"{template.key}-{index}", question.graph)
+            picture = question.graph or question.diagram  # a graph to read, or the situation drawn
+            svg = "" if picture is None else graph_svg(f"{template.key}-{index}", picture)
             pages[str(index)] = {
                 "parts": [{"label": question.label(i), "prompt": part.prompt, "marks": marks}
                           for i, (part, marks) in enumerate(zip(question.parts, question.part_marks(), strict=True))],
@@ -239,7 +242,7 @@ def write_data(app, exception):
         _write(outdir / README, readme.read_bytes())
     if last.get("inputs") == inputs and _unchanged(outdir, last.get("files", {})):
         return
-    graph_code = _code(app, [store.GRAPH_MODULE], (Path(__file__),))
+    graph_code = _code(app, [store.GRAPH_MODULE, store.DIAGRAM_MODULE], (Path(__file__),))
     last_graphs = last.get("graphs", {}) if last.get("graph_code") == graph_code else {}
     folder = graphs_folder(outdir)
     folder.mkdir(parents=True, exist_ok=True)

@@ -16,6 +16,7 @@ from docutils import nodes
 #: try similar, map).
 SHARED_MODULES = ("physics_figures.textformat", "physics_figures.variants", "physics_figures.topics")
 GRAPH_MODULE = "physics_figures.figures.question_graph"
+DIAGRAM_MODULE = "physics_figures.figures.question_diagram"
 
 #: The pages holding each directive that gathers from every page, filled once all are read.
 GATHERING = ("answer-key", "practice-progress", "try-similar", "book-map", "mock-test")

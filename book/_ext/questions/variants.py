@@ -25,7 +25,15 @@ from docutils import nodes
 from fresh_figures import modules_digest  # book/_ext: the files a module runs, by content
 
 from . import form, store
-from .directive import _template_data, cursor_text, form_node, square_text, write_graph
+from .directive import (
+    _template_data,
+    cursor_text,
+    diagram_name,
+    form_node,
+    square_text,
+    write_diagram,
+    write_graph,
+)
 
 VARIANTS_DIR = "questions"  # under the site's _static/: one file of variants per template
 
@@ -54,7 +62,7 @@ def _code(app, modules: list[str], writers=WRITERS) -> str:
 
 
 def _inputs(app, keys: list[str]) -> str:
-    modules = [*store.bank_modules(app.config), store.GRAPH_MODULE]
+    modules = [*store.bank_modules(app.config), store.GRAPH_MODULE, store.DIAGRAM_MODULE]
     return _sha256(json.dumps([keys, _code(app, modules)]).encode())
 
 
@@ -85,7 +93,7 @@ def write_variants(app, exception):
     if last.get("inputs") == inputs and _unchanged(folder, last.get("files", {})):
         return
     folder.mkdir(parents=True, exist_ok=True)
-    graph_code = _code(app, [store.GRAPH_MODULE], [GRAPH_WRITER])
+    graph_code = _code(app, [store.GRAPH_MODULE, store.DIAGRAM_MODULE], [GRAPH_WRITER])
     graphs = last.get("graphs", {}) if last.get("graph_code") == graph_code else {}
     files, drawn_graphs = {}, {}
     for key in keys:
@@ -102,6 +110,10 @@ def write_variants(app, exception):
                 drawn = _graph(folder, name, variant.graph, graphs, drawn_graphs)
                 data["graph"] = {"src": name, "alt": drawn["alt"], "square": drawn["square"],
                                  "cursor": json.loads(drawn["cursor"])}
+                files[name] = drawn_graphs[name]["svg"]
+            if variant.diagram is not None:  # its own diagram, labelled with its numbers
+                name = diagram_name(key, index) + ".svg"
+                data["diagram"] = {"src": name, "alt": _diagram(folder, name, variant.diagram, graphs, drawn_graphs)}
                 files[name] = drawn_graphs[name]["svg"]
             variants.append(data)
         payload = json.dumps(variants, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
@@ -130,6 +142,19 @@ def _graph(folder: Path, name: str, graph, last: dict, drawn: dict) -> dict:
         drawn[name] = {"numbers": numbers, "alt": figure.alt, "svg": _sha256(path.read_bytes()),
                        "square": square_text(path, graph), "cursor": cursor_text(path, graph)}
     return drawn[name]
+
+
+def _diagram(folder: Path, name: str, diagram, last: dict, drawn: dict) -> str:
+    """Draw one variant's diagram unless the same numbers drew the file that is there; its alt text."""
+    numbers = _sha256(repr(diagram).encode())
+    before = last.get(name, {})
+    path = folder / name
+    if before.get("numbers") == numbers and path.is_file() and _sha256(path.read_bytes()) == before["svg"]:
+        drawn[name] = before
+    else:
+        figure = write_diagram(folder, name.removesuffix(".svg"), diagram, formats=("svg",))
+        drawn[name] = {"numbers": numbers, "alt": figure.alt, "svg": _sha256(path.read_bytes())}
+    return drawn[name]["alt"]
 
 
 def form_html(template) -> str:

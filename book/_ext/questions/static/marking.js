@@ -214,14 +214,44 @@
     return partial;
   }
 
-  function carriedBy(part, ecf, answer, earlier, data) {
-    var uses = ecf.uses,
-      known = {};
+  /* The earlier answers a later part may be worked from: each as typed, or (where it matched a
+   * value: the key, a named mistake, a slip) that value with all its figures, as a student's
+   * working carries it (CLARIFICATIONS, "ecf after a named mistake"). Every combination, the
+   * typed one first: [{id: SI value}], or null when an earlier answer has no value in SI. */
+  function earlierValues(uses, earlier) {
+    var sets = [{}];
     for (var i = 0; i < uses.length; i++) {
       var before = earlier[uses[i]];
       if (!before || before.si === null || before.si === undefined) return null;
-      known[uses[i]] = before.si;
+      var forms = [before.si];
+      if (typeof before.exact === "number" && before.exact !== before.si) forms.push(before.exact);
+      var grown = [];
+      sets.forEach(function (set) {
+        forms.forEach(function (value) {
+          var next = Object.assign({}, set);
+          next[uses[i]] = value;
+          grown.push(next);
+        });
+      });
+      sets = grown;
     }
+    return sets;
+  }
+
+  function carriedBy(part, ecf, answer, earlier, data) {
+    var sets = earlierValues(ecf.uses, earlier);
+    if (!sets) return null;
+    var partial = null;
+    for (var s = 0; s < sets.length; s++) {
+      var found = carriedFrom(part, ecf, answer, earlier, data, sets[s]);
+      if (found && (found.code === "correct" || found.code === "ecf")) return found;
+      partial = partial || found;
+    }
+    return partial;
+  }
+
+  function carriedFrom(part, ecf, answer, earlier, data, known) {
+    var uses = ecf.uses;
     // A reading of a graph may be right yet not exact (half a small square either way): a
     // later part is then worked from the student's own reading, and is simply right.
     var fromReadings = uses.some(function (id) {
@@ -238,6 +268,8 @@
     });
     var value = formula(ecf).apply(null, args);
     if (!isFinite(value)) return null;
+    // a difference that cancels (kinetic energy kept, none lost) is zero, not rounding's 1e-17
+    if (Math.abs(value) < 1e-12 * Math.max.apply(null, args.map(Math.abs))) value = 0;
     var own = {};
     Object.keys(part).forEach(function (k) {
       own[k] = part[k];
@@ -252,6 +284,7 @@
     if (result.code === "correct" && allRight) {
       return outcome("correct", "Correct: it follows from your readings of the graph.", {
         si: result.si,
+        exact: result.exact,
         valueRight: true,
       });
     }
@@ -262,7 +295,7 @@
         "Follows correctly from your answer to (" +
           uses.join("), (") +
           "): error carried forward (ecf), so this part earns its marks.",
-        { si: result.si, valueRight: false },
+        { si: result.si, exact: result.exact, valueRight: false },
       );
     }
     // follows from the earlier answer, but with a slip of its own (direction, unit, s.f.)

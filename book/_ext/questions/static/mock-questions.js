@@ -78,6 +78,13 @@
       section.insertBefore(opener, section.querySelector("form"));
       if (variant.graph.cursor && root.GraphCursor) root.GraphCursor.add(opener);
     }
+    if (variant.diagram) {
+      var diagram = document.createElement("img");
+      diagram.className = "q-diagram";
+      diagram.src = contentRoot() + "_static/questions/" + variant.diagram.src;
+      diagram.alt = variant.diagram.alt;
+      section.insertBefore(diagram, section.querySelector("form"));
+    }
     var form = section.querySelector("form.q-form");
     // marked at the end only: no Check, New numbers, Clear or score line during the test; and,
     // as in the exam, no help (Show a step)

@@ -322,6 +322,12 @@
         if (opener && variant.graph.square) opener.setAttribute("data-square", variant.graph.square);
         if (opener && variant.graph.cursor) opener.setAttribute("data-cursor", JSON.stringify(variant.graph.cursor));
       }
+      var diagram = section.querySelector("img.q-diagram");
+      if (diagram && variant.diagram) {
+        // its own diagram, labelled with its numbers
+        diagram.src = contentRoot() + "_static/questions/" + variant.diagram.src;
+        diagram.alt = variant.diagram.alt;
+      }
       var scheme = worked && worked.querySelector(".q-scheme");
       if (scheme) scheme.outerHTML = variant.scheme.replace("<ul>", '<ul class="' + scheme.className + '">');
       form.setAttribute("data-variant", String(index));

@@ -200,9 +200,14 @@
       readings[0];
     // Every outcome carries the answer in SI (for error carried forward) when its unit fits.
     var si = sameDims(reading.dims, expected.dims) ? size * reading.scale : null;
-    function out(code, message, extra) {
+    /* The value the typed answer stands for, unrounded (SI), where it matched one: the key, an
+     * alternative, a named mistake, the g = 9.8 slip, rounding part-way. A later part worked from
+     * the student's earlier answer may be worked from all its figures, not the 2 or 3 typed
+     * (markQuestion's error carried forward tries both). */
+    function out(code, message, extra, exact) {
       var result = outcome(code, message, extra);
       result.si = si;
+      if (si !== null && typeof exact === "number") result.exact = exact;
       result.valueRight =
         !!alternative || !!fromReadings || against(target, reading.scale).match || against(target, 1).match;
       return result;
@@ -217,7 +222,13 @@
         if (mistake.direction && mistake.direction !== direction) continue;
         var value = mode === "signed" ? mistake.value : Math.abs(mistake.value);
         if ((number.sfMax >= 2 || value === 0) && against(value, scale).match) {
-          return out("mistake", mistake.feedback, { mistake: mistake.name, loses: mistake.loses, see: mistake.see });
+          var meant = mistake.unit ? undefined : value;
+          return out(
+            "mistake",
+            mistake.feedback,
+            { mistake: mistake.name, loses: mistake.loses, see: mistake.see },
+            meant,
+          );
         }
       }
       return null;
@@ -268,18 +279,31 @@
       if (byBand.match || byBand.matchFewSf) result = byBand;
     }
     var directionRight = mode !== "choice" || direction === part.answerDirection;
+    // what a value matched at the key's size stands for: the key, or the alternative it matched
+    var keySize = alternative ? (mode === "signed" ? alternative.value : Math.abs(alternative.value)) : target;
+    if (fromReadings) keySize = undefined; // a reading of its own, not the drawn line's exact value
 
     if (result.match && !sign && directionRight) {
       if (unit.empty && !dimensionless)
-        return out("missing-unit", "The number is right. Now give the unit: " + units + ".");
-      if (alternative) return out("alternative", "Accepted: " + alternative.why + ".");
+        return out("missing-unit", "The number is right. Now give the unit: " + units + ".", null, keySize);
+      if (alternative) return out("alternative", "Accepted: " + alternative.why + ".", null, keySize);
       if (fromReadings) return out("correct", "Correct: readings of the graph within half a small square give this.");
       if (signIgnored)
-        return out("ignore-sign", "Correct: the minus sign is ignored, as the direction is given separately.");
-      return out("correct", signed ? "Correct: the minus sign says " + part.signMeans + "." : "Correct.");
+        return out(
+          "ignore-sign",
+          "Correct: the minus sign is ignored, as the direction is given separately.",
+          null,
+          keySize,
+        );
+      return out(
+        "correct",
+        signed ? "Correct: the minus sign says " + part.signMeans + "." : "Correct.",
+        null,
+        keySize,
+      );
     }
     if (result.match && !sign && mode === "choice" && !direction) {
-      return out("missing-direction", "The size is right. Now give the direction.");
+      return out("missing-direction", "The size is right. Now give the direction.", null, keySize);
     }
 
     var named = namedMistake(reading.dims, reading.scale);
@@ -333,12 +357,16 @@
           (target < 0
             ? ", and this points the other way, so it is negative."
             : ", and this points that way, so it is positive."),
+        null,
+        -target,
       );
     }
     if (result.match && !directionRight) {
       return out(
         "direction",
         "The size is right but the direction is wrong." + (part.directionHint ? " " + part.directionHint : ""),
+        null,
+        keySize,
       );
     }
     // The key to too few figures, as it may be read (60 for 64); written with zeros after it
@@ -354,6 +382,8 @@
         "g-9.8",
         "That is the answer with g = 9.8 m s⁻². The data give g = 9.81 m s⁻²: use it, " +
           "and keep every figure until the end.",
+        null,
+        part.gNineEight,
       );
     }
     var partWay = part.roundedPartWay || [];
@@ -364,6 +394,8 @@
           "Close, but that is what rounding " +
             partWay[i].rounded +
             " part-way through gives. Keep the full calculator value until the end, then round only the answer.",
+          null,
+          partWay[i].value,
         );
       }
     }

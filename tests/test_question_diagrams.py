@@ -1,0 +1,98 @@
+"""The two-dimensional and collision templates print a diagram (issue 37): the bodies before and
+after, labelled with the variant's own numbers (every mass, speed and angle the text gives),
+with alt text that says them; on the page, relabelled by New numbers (each site variant's own
+SVG), and in the printed sheets."""
+
+from __future__ import annotations
+
+import html
+import re
+
+import pytest
+from browser import question_pages, shipped_variants
+from conftest import variant_param
+
+from physics_figures import bank
+from physics_figures.figures.question_diagram import question_diagram
+from physics_figures.notation import DIGIT_GROUP_SEPARATOR
+from physics_figures.worksheets import latex
+
+#: Every template of the two-dimensional type, and the collisions and explosions along a line
+#: that have no graph to read (a graph template prints its graph).
+DIAGRAMMED = sorted(key for key, template in bank.TEMPLATES.items()
+                    if template.build.__module__.endswith((".two_d", ".momentum_line"))
+                    and template.variant(0).graph is None)
+
+
+def _numbers(question) -> list[str]:
+    """The numbers the diagram must carry: each mass, speed and angle the text gives (not a time)."""
+    return [given.text.replace(DIGIT_GROUP_SEPARATOR, "") for given in question.givens
+            if given.unit not in ("s", "ms")]
+
+
+def test_the_two_dimensional_and_collision_templates_are_the_ones_expected():
+    assert {"practice-pucks", "glancing-speed-choice", "explosion-three-pieces", "skaters-stick-right-angles",
+            "oblique-wall-bounce", "puck-components", "explosion-two-pieces", "quick-check-2",
+            "practice-trolleys-stick", "practice-spring-apart", "stick-choice", "collision-third-law"} == set(DIAGRAMMED)
+
+
+@pytest.mark.parametrize(("key", "index"), [variant_param(bank.TEMPLATES[key], index, key, index)
+                                            for key in DIAGRAMMED for index in range(len(bank.TEMPLATES[key].values))])
+def test_every_variant_has_a_diagram_whose_labels_and_alt_text_carry_its_numbers(key, index):
+    question = bank.TEMPLATES[key].variant(index)
+    assert question.diagram is not None, f"{key} variant {index} has no diagram"
+    drawn = question_diagram(question.diagram)
+    labels = " ".join(html.unescape(t) for t in re.findall(r"<text[^>]*>([^<]*)</text>", drawn.svg()))
+    for number in _numbers(question):
+        assert number in labels, f"{key} variant {index}: {number} is not on the diagram ({labels})"
+        assert number in drawn.alt, f"{key} variant {index}: {number} is not in the alt text ({drawn.alt})"
+    drawn.figure.clear()
+
+
+def test_the_printed_sheet_includes_each_question_s_diagram():
+    from physics_figures.worksheets import Item, Version
+
+    version = Version("A", (Item(bank.TEMPLATES["puck-components"], 1),))
+    files = latex.graphs(version)
+    assert list(files) == ["graph-1.pdf"] and files["graph-1.pdf"].startswith(b"%PDF")
+    assert "\\includegraphics[width=0.78\\linewidth]{graph-1.pdf}" in latex.question_sheet(
+        latex.Sheet("s", "S", 1, (version,)), version)
+
+
+@pytest.mark.site
+@pytest.mark.parametrize("key", DIAGRAMMED)
+def test_each_page_shows_the_diagram_and_new_numbers_brings_each_variant_s_own(site_dir, key):
+    pages = question_pages(site_dir)
+    page = (site_dir / pages[key].lstrip("/")).read_text(encoding="utf-8")
+    section = page[page.index(f'id="question-{key}"'):]
+    section = section[:section.index('<form class="q-form"')]
+    image = re.search(r'<img[^>]*class="q-diagram"[^>]*>', section)
+    assert image, f"{key}: no diagram on its page"
+    alt = html.unescape(re.search(r'alt="([^"]*)"', image[0])[1])
+    for number in _numbers(bank.TEMPLATES[key].variant(0)):
+        assert number in alt, f"{key}: {number} not in the page's alt text {alt!r}"
+    template = bank.TEMPLATES[key]
+    shipped = shipped_variants(site_dir / "_static" / "questions" / f"{key}.js")
+    assert len(shipped) == len(template.site_variants) >= 2
+    for index, data in zip(template.site_variants, shipped, strict=True):
+        numbers = _numbers(template.variant(index))
+        svg = (site_dir / "_static" / "questions" / data["diagram"]["src"]).read_text(encoding="utf-8")
+        labels = html.unescape(" ".join(re.findall(r"<text[^>]*>([^<]*)</text>", svg)))
+        for number in numbers:
+            assert number in data["diagram"]["alt"] and number in labels, (key, index, number)
+
+
+def test_the_sheet_builder_s_sheets_carry_each_diagram():
+    """The teacher's sheet builder prints a reserve variant with its diagram, as with its graph."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "book" / "_ext"))
+    from questions.sheet_builder import builder_data
+
+    pictures = []
+    data = builder_data(bank.TOPIC, lambda name, picture: pictures.append((name, picture)) or f"<svg>{name}</svg>")
+    names = {name.rsplit("-", 1)[0] for name, picture in pictures if picture.__class__.__name__ == "Diagram"}
+    assert set(DIAGRAMMED) <= names
+    index = bank.TEMPLATES["puck-components"].reserve_variants[0]
+    assert f"<svg>puck-components-{index}</svg>" in data["variants"]["puck-components"][str(index)]["sheet"]

@@ -398,6 +398,22 @@ def test_moodle_gives_full_marks_to_a_right_value_in_another_prefix(small_export
     assert typed >= 10
 
 
+def test_moodle_takes_either_rounding_of_a_key_on_a_tie_at_3_sf():
+    """A key of 29.75 N s is right at 3 s.f. as 29.7 or 29.8 in the book (it compares at the
+    student's last figure, a tie either way). Moodle took only 29.8, and so refused the right value
+    in another prefix whenever the product rounded down (2.97e-5 MN s)."""
+    template = bank.TEMPLATES["mass-from-momentum-change"]
+    index = next(i for i in template.reserve_variants if template.variant(i).parts[0].value == 29.75)
+    tree, _ = moodle_export.export([template])
+    root = ET.fromstring(ET.tostring(tree.getroot(), encoding="unicode"))
+    question = _question(root, f"mass-from-momentum-change-v{index}-a")
+    for right in ("29.7 N s", "29.8 N s", "29.75 N s", "2.97e-5 MN s", "29700 g m/s"):
+        assert moodle_grade(question, right) == 1.0, right
+    for wrong in ("29.6 N s", "29.9 N s"):
+        assert moodle_grade(question, wrong) < 1.0, wrong
+    assert not check_file(root)[0]
+
+
 def test_moodle_question_text_never_gives_the_method_away(small_export):
     """"How this part is marked: ecf … (b) = (a) x 400 + 80" is for the teacher and for after the
     attempt: in the general feedback (and an essay's grader information), not the question text."""

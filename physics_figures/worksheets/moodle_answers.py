@@ -68,6 +68,10 @@ def right_forms(question: Question, index: int) -> list[tuple[float, float]]:
     if step and math.isclose(abs(part.value) / step % 1, 0.5, abs_tol=1e-7):
         other = math.copysign(abs(two[0]) - step, part.value)
         forms.append(_exact(float(round_number(other, RIGHT_SIG_FIGS[0]))))
+    # and on a tie at 3 s.f. (29.75) the band of each rounding (29.7 and 29.8), as the book takes it
+    step = 10 ** (math.floor(math.log10(abs(part.value))) - 2) if part.value else 0
+    if step and math.isclose(abs(part.value) / step % 1, 0.5, abs_tol=1e-7):
+        forms.append(_band(math.copysign(abs(three[0]) - step, part.value), RIGHT_SIG_FIGS[1]))
     size = (lambda v: v) if part.direction == "signed" else abs
     forms += [_band(size(a.value), RIGHT_SIG_FIGS[1]) for a in (*part.alternatives, *question.scheme_alternatives(index))]
     if part.readings:  # worked from readings of the graph: what readings within half a small square
@@ -86,8 +90,9 @@ def uncovered(forms: list[tuple[float, float]]) -> list[tuple[float, float]]:
         for v, w in out:
             low, high = interval(v, w)
             pieces = [cut for a, b in pieces for cut in ((a, min(b, low)), (max(a, high), b)) if cut[1] > cut[0]]
-        if pieces == [(value - width, value + width)]:
-            out.append((value, width))  # not overlapped: whole, its centre the value written
+        if len(pieces) == 1 and all(math.isclose(x, y, rel_tol=1e-9, abs_tol=1e-300)
+                                    for x, y in zip(pieces[0], (value - width, value + width), strict=True)):
+            out.append((value, width))  # not overlapped (or at an end only): whole, its value as written
             continue
         # a piece narrower than a millionth of the value adds nothing Moodle could tell apart
         out += [((a + b) / 2, (b - a) / 2) for a, b in pieces if b - a > 1e-6 * max(abs(a), abs(b))]

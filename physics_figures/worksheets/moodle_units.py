@@ -159,7 +159,7 @@ def _words(factors: list[tuple[str, int]]) -> list[str]:
 
 
 @functools.cache
-def forms(unit: str, also: str = "") -> tuple[tuple[str, str, float]]:
+def forms(unit: str, also: str = "") -> tuple[tuple[str, str, float], ...]:
     """(typed, stored, multiplier) of each form the book accepts of the part's unit: typed as a
     student types it, stored without spaces as Moodle matches it, and the value in that form = the
     value in the part's unit x multiplier. The unit itself first, in its slash form when it has a

@@ -2,7 +2,8 @@
 
 For every question of the Moodle export (every template, variant and part), the table's inputs:
 the right answer at 2, 3 and 4 s.f., every named mistake, g = 9.8, each part-way rounding, a
-unit slip (no unit), the right value in another prefix, a wrong unit, and every option of a
+unit slip (no unit), the right value in each prefix and spelling of its unit that the book's unit
+reader takes (physics_figures.worksheets.moodle_units), a wrong unit, and every option of a
 multiple-choice item. The book's fraction comes from the browser's own engine (marking.js under
 Node, on the data the site ships); Moodle's from Moodle's question engine, through
 scripts/moodle_verdicts.php on a Moodle where the file has been imported
@@ -28,7 +29,7 @@ from physics_figures import bank
 from physics_figures.notation import format_number, plain_number
 from physics_figures.questions import OPTION_LETTERS, unit_text
 from physics_figures.textformat import to_plain
-from physics_figures.worksheets.moodle import UNIT_FORMS, variant_indices
+from physics_figures.worksheets.moodle import unit_forms, variant_indices
 
 ROOT = Path(__file__).resolve().parents[1]
 ENGINE = ROOT / "book" / "_ext" / "questions" / "static" / "marking.js"
@@ -39,8 +40,6 @@ CANNOT = {
     "cloze-unit": "a unit inside a Cloze number box (it takes no unit, so no unit is marked there)",
     "trailing-zeros": "trailing zeros (Moodle reads the number, not the figures)",
 }
-#: Another size of each unit the book reads, to type the right value in (a prefix).
-PREFIXED = {unit: forms[0] for unit, forms in UNIT_FORMS.items()}
 
 
 def typed(value: float, sig_figs: int) -> str:
@@ -86,8 +85,12 @@ def _inputs(question, index: int) -> list[dict]:
     unit_cannot = "cloze-unit" if cloze else ""
     rows.append(row("unit slip (no unit)", typed(part.value, 3), "", cannot=unit_cannot))
     rows.append(row("wrong unit", typed(part.value, 3), "J" if part.unit != "J" else "N", cannot=unit_cannot))
-    if part.unit in PREFIXED:
-        form, multiplier = PREFIXED[part.unit]
+    # the right value in each prefix and spelling the book's unit reader takes (as Moodle's units
+    # declare them: moodle_units), typed as a student types it; a Cloze number box takes no unit,
+    # so there one stands for all
+    own = part.unit.replace(" ", "")
+    others = [(t, m) for t, stored, m in (unit_forms(part.unit, part.units) if part.unit else ()) if stored != own]
+    for form, multiplier in others[:1] if cloze else others:
         rows.append(row(f"in {form}", typed(part.value * multiplier, 3), form, cannot=unit_cannot))
     shared = any(len(question.parts_of(m)) > 1 and question.owner(m) == part_id for m in question.mark_scheme if m.code)
     for r in rows:

@@ -1,4 +1,4 @@
-# ruff: noqa: RUF002  (the docstring quotes typeset text: times and divide signs)
+# ruff: noqa: RUF001, RUF002  (typeset text and Moodle's own pattern: times and divide signs)
 """A structural check of a Moodle XML question file against Moodle's documented format
 (docs.moodle.org/en/Moodle_XML_format, and what qformat_xml reads), plus the marking rules
 the book gives the export. Returns a list of problems (empty: the file is sound).
@@ -39,6 +39,8 @@ QUESTION_TYPES = {"category", "numerical", "multichoice", "essay", "cloze", "sho
 ALLOWED_TAGS = {"p", "sup", "sub", "em", "strong", "ul", "li", "img"}
 VOID_TAGS = {"img"}
 RAW_TEX = re.compile(r"\$|\\frac|\\times|\^\{|_\{")
+#: How a part is marked by error carried forward: never in what the student reads first.
+METHOD = re.compile(r"How this part is marked|carried forward|\becf\b", re.IGNORECASE)
 
 
 class _Html(HTMLParser):
@@ -98,6 +100,59 @@ def _first_match(ranges, response: float):
     return None
 
 
+def moodle_interval(value: float, tolerance: float) -> tuple[float, float]:
+    """The responses a numerical answer takes. A numerical question's answers have Moodle's
+    "nominal" tolerance (qtype_numerical_answer::$tolerancetype = 2; relative and geometric are the
+    calculated types'), widened by PHP's precision: value ± (tolerance + 1e-14 max(|tolerance|,
+    |value|, 1e-14)) (get_tolerance_interval)."""
+    tolerance = abs(tolerance)
+    slack = tolerance + 1e-14 * max(tolerance, abs(value), 1e-14)
+    return value - slack, value + slack
+
+
+def answers_inside_earlier(answers: list[tuple[float, float]]) -> list[str]:
+    """Each answer (value, tolerance) whose value lies inside the range of one listed before it:
+    Moodle never reaches it, and its import warns (what ../shared/moodle's harness reports)."""
+    found = []
+    for i, (value, _) in enumerate(answers):
+        for earlier, tolerance in answers[:i]:
+            low, high = moodle_interval(earlier, tolerance)
+            if low <= value <= high:
+                found.append(f"answer {value:.10g} lies inside the range of answer {earlier:.10g} listed before it")
+    return found
+
+
+_MOODLE_NUMBER = re.compile(r"^[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:e[-+]?\d+)?")
+
+
+def moodle_grade(question: ET.Element, response: str) -> float:
+    """The fraction Moodle gives a response to an imported numerical question, as its question
+    engine computes it (qtype_numerical_answer_processor::apply_units, then
+    qtype_numerical_question::grade_response): spaces deleted, the unit the text after the
+    number, looked up exactly; the first answer whose range holds the value in the question's
+    unit (or the number as typed) wins; a unit that is missing, unknown or gives another value
+    loses the unit penalty."""
+    text = re.sub(r"(?:e|E|(?:x|\*|×)10(?:\^|\*\*))([+-]?\d+)", r"e\1", response.replace(" ", ""))
+    number = _MOODLE_NUMBER.match(text)
+    if not number:
+        return 0.0
+    value, unit = float(number[0]), text[len(number[0]):]
+    units = {}
+    for element in question.findall("units/unit"):  # Moodle keeps the first of a name
+        units.setdefault(element.findtext("unit_name"), float(element.findtext("multiplier")))
+    multiplier = 1 / units[unit] if unit in units else None
+    scaled = value * multiplier if multiplier is not None else value
+    for answer in question.findall("answer"):
+        low, high = moodle_interval(float(answer.findtext("text")), float(answer.findtext("tolerance")))
+        if low <= scaled <= high or low <= value <= high:
+            fraction = float(answer.get("fraction")) / 100
+            unit_right = multiplier is not None and low <= multiplier * value <= high
+            if not unit_right and question.findtext("unitgradingtype") == "1":
+                fraction -= float(question.findtext("unitpenalty")) * fraction
+            return max(fraction, 0.0)
+    return 0.0
+
+
 def _round(value: float, sig_figs: int) -> float:
     return float(format(value, f".{sig_figs}g"))
 
@@ -121,6 +176,9 @@ def check_question(question: ET.Element, where: str) -> list[str]:
         say(f"{where}: no positive defaultgrade")
     html_problems, images = check_html(text)
     problems += [f"{where}: question text: {p}" for p in html_problems]
+    if METHOD.search(text):
+        say(f"{where}: the question text gives the method away (how the part is marked belongs in "
+            "the general feedback and the grader's information)")
     problems += _check_images(images, text_element, f"{where}: question text")
     general = _text(question, "generalfeedback")
     if general:
@@ -193,6 +251,8 @@ def _check_numerical(question, where) -> list[str]:
     for slip in (value * 10, value / 10, -value):  # a signed part names its sign slip
         if slip != value and (_first_match(ranges, slip) or (0, ""))[0] == 100:
             problems.append(f"{where}: the slip {slip:g} is marked right")
+    problems += [f"{where}: {p}" for p in answers_inside_earlier(
+        [(float(a.findtext("text")), float(a.findtext("tolerance") or 0)) for a in question.findall("answer")])]
     for fraction, low, high, other in ranges[len(right):]:
         if _first_match(ranges, float(other)) != (fraction, other):
             problems.append(f"{where}: the answer {other} ({fraction} %) is never reached")
@@ -213,6 +273,10 @@ def _check_cloze(question, where) -> list[str]:
     for weight, kind, body in CLOZE.findall(_text(question, "questiontext") or ""):
         weights += int(weight)
         answers = re.split(r"(?<!\\)~", body)
+        if kind == "NUMERICAL":
+            numbers = [re.match(r"(?:=|%[-\d.]+%)?(-?[\d.]+):([\d.]+)", a) for a in answers]
+            problems += [f"{where}: NUMERICAL box: {p}"
+                         for p in answers_inside_earlier([(float(n[1]), float(n[2])) for n in numbers if n])]
         for answer in answers:
             found = re.fullmatch(r"(=|%(-?[\d.]+)%)?((?:\\.|[^#])*)#((?:\\.|[^#])*)", answer)
             if not found:

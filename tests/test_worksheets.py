@@ -3,6 +3,7 @@ Moodle export. Fast tests here; tests/test_worksheets_pdf.py reads the typeset P
 
 from __future__ import annotations
 
+import json
 import math
 import re
 import subprocess
@@ -11,10 +12,10 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
-from moodle_format import check_file
+from moodle_format import answers_inside_earlier, check_file, moodle_grade
 
 from physics_figures import bank, worksheets
-from physics_figures.notation import format_number
+from physics_figures.notation import format_number, plain_number
 from physics_figures.worksheets import (
     bank_templates,
     choose_templates,
@@ -322,12 +323,132 @@ def test_moodle_grades_each_mistake_by_the_lines_it_keeps(small_export):
     assert "~=-" + size + f":{half(value)}#Right: the minus sign is ignored" in text
 
 
-def test_moodle_units_have_their_forms_and_other_sizes(small_export):
+def _book_unit_tables() -> dict:
+    """The book's unit reader's tables (answer-reading.js), read under Node."""
+    reader = ROOT / "book" / "_ext" / "questions" / "static" / "answer-reading.js"
+    script = f"process.stdout.write(JSON.stringify(require({json.dumps(str(reader))}).tables))"
+    return json.loads(subprocess.run(["node", "-e", script], capture_output=True, text=True, check=True).stdout)
+
+
+def _numerical_parts(root):
+    """(question element, the bank's part) of each numerical question with a unit."""
+    for question in root.iter("question"):
+        if question.get("type") != "numerical" or question.find("units") is None:
+            continue
+        key, index, part_id = re.fullmatch(r"(.+)-v(\d+)-([a-z]+)", question.findtext("idnumber")).groups()
+        variant = bank.TEMPLATES[key].variant(int(index))
+        yield question, variant.parts[variant.part_ids.index(part_id)]
+
+
+def test_moodle_units_are_every_prefix_and_spelling_the_book_reads(small_export):
+    """Each numerical question declares its unit in each prefix the book's unit reader takes
+    (its own table) on the first symbol, powers written ^-2, -2 or ⁻², with and without a slash,
+    and in words; without spaces (Moodle deletes them from a response); with the multiplier the
+    reader's scales give. Before issue 37 only kN, g and kN s were there: 79.4 cm s^-2 scored 0."""
     root, _ = small_export
+    tables = _book_unit_tables()
+    sizes = {**{k: v[0] for k, v in tables["base"].items()}, **{k: v[0] for k, v in tables["unprefixed"].items()}}
+    seen = set()
+    for question, part in _numerical_parts(root):
+        units = {u.findtext("unit_name"): float(u.findtext("multiplier")) for u in question.findall("units/unit")}
+        assert not [name for name in units if " " in name], question.findtext("idnumber")
+        factors = [(m[1], int(m[2] or 1)) for m in re.finditer(r"([^\s^]+)(?:\^(-?\d+))?", part.unit)]
+        first, power = factors[0]
+        seen.add(part.unit)
+        if first in tables["unprefixed"]:  # ° takes no prefix
+            assert {"°", "degrees", "deg"} <= set(units), sorted(units)
+            continue
+        base = first if first in tables["base"] else first[1:]
+        own = sizes[base] * (tables["prefixes"].get(first[:1], 1) if base != first else 1)
+        for prefix, size in [("", 1), *tables["prefixes"].items()]:
+            symbol = prefix + base
+            caret = symbol + "".join(s + (f"^{p}" if p != 1 else "") for s, p in factors[1:])
+            superscript = caret.replace("^-1", "⁻¹").replace("^-2", "⁻²").replace("^2", "²")
+            wanted = {caret, caret.replace("^", ""), superscript}
+            if any(p < 0 for _, p in factors):
+                bottom = "".join(s + (f"^{-p}" if p != -1 else "") for s, p in factors if p < 0)
+                top = symbol + "".join(s + (f"^{p}" if p != 1 else "") for s, p in factors[1:] if p > 0)
+                wanted |= {f"{top}/{bottom}", f"{top}/{bottom}".replace("^", "")}
+            for name in wanted:
+                assert name in units, (question.findtext("idnumber"), name, sorted(units))
+                assert units[name] == pytest.approx(own / (sizes[base] * size) ** power, rel=1e-9), name
+    assert {"N s", "m s^-1", "N", "kg m^-1"} <= seen
     pucks = _question(root, f"practice-pucks-v{_first_reserve('practice-pucks')}-a")
     units = {u.findtext("unit_name"): float(u.findtext("multiplier")) for u in pucks.findall("units/unit")}
-    assert units == {"Ns": 1.0, "kgm/s": 1.0, "kgms^-1": 1.0, "kgms⁻¹": 1.0, "kNs": 0.001}
+    wanted = {"Ns": 1.0, "kgm/s": 1.0, "kgms^-1": 1.0, "kgms⁻¹": 1.0, "kNs": 0.001, "gm/s": 1000.0, "newtonseconds": 1.0}
+    assert {name: units.get(name) for name in wanted} == wanted
     assert float(pucks.findtext("unitpenalty")) == 0.5  # the A1 of 2
+
+
+def test_moodle_gives_full_marks_to_a_right_value_in_another_prefix(small_export):
+    """Through Moodle's own unit matching (spaces deleted, the unit looked up exactly), the right
+    value typed in another prefix or spelling scores what the book gives it, full marks; no unit
+    or a wrong unit loses the A1."""
+    root, _ = small_export
+    typed = 0
+    for question, part in _numerical_parts(root):
+        value = float(question.find("answer").findtext("text"))
+        penalty = float(question.findtext("unitpenalty"))
+        rest = part.unit.split(" ", 1)[1] if " " in part.unit else ""
+        if part.unit.startswith("m "):  # 79.4 cm s^-2 for 0.794 m s^-2
+            for prefix, times in (("c", 100), ("k", 1e-3), ("m", 1e3), ("µ", 1e6)):
+                response = f"{plain_number(format_number(value * times, 3))} {prefix}m {rest}"
+                assert moodle_grade(question, response) == 1.0, (question.findtext("idnumber"), response)
+                typed += 1
+        if part.unit == "N s":
+            assert moodle_grade(question, f"{value * 1000:.6g} g m/s") == 1.0
+            assert moodle_grade(question, f"{value} newton seconds") == 1.0
+            typed += 1
+        assert moodle_grade(question, f"{value}") == pytest.approx(1 - penalty)
+        assert moodle_grade(question, f"{value} J") == pytest.approx(1 - penalty)
+    assert typed >= 10
+
+
+def test_moodle_takes_either_rounding_of_a_key_on_a_tie_at_3_sf():
+    """A key of 29.75 N s is right at 3 s.f. as 29.7 or 29.8 in the book (it compares at the
+    student's last figure, a tie either way). Moodle took only 29.8, and so refused the right value
+    in another prefix whenever the product rounded down (2.97e-5 MN s)."""
+    template = bank.TEMPLATES["mass-from-momentum-change"]
+    index = next(i for i in template.reserve_variants if template.variant(i).parts[0].value == 29.75)
+    tree, _ = moodle_export.export([template])
+    root = ET.fromstring(ET.tostring(tree.getroot(), encoding="unicode"))
+    question = _question(root, f"mass-from-momentum-change-v{index}-a")
+    for right in ("29.7 N s", "29.8 N s", "29.75 N s", "2.97e-5 MN s", "29700 g m/s"):
+        assert moodle_grade(question, right) == 1.0, right
+    for wrong in ("29.6 N s", "29.9 N s"):
+        assert moodle_grade(question, wrong) < 1.0, wrong
+    assert not check_file(root)[0]
+
+
+def test_moodle_question_text_never_gives_the_method_away(small_export):
+    """"How this part is marked: ecf … (b) = (a) x 400 + 80" is for the teacher and for after the
+    attempt: in the general feedback (and an essay's grader information), not the question text."""
+    root, _ = small_export
+    problems = [p for p in check_file(root)[0] if "gives the method away" in p]
+    assert not problems, problems[:3]
+    for idnumber in (f"graph-skydiver-terminal-v{_first_reserve('graph-skydiver-terminal')}-c",
+                     f"quick-check-3-v{_first_reserve('quick-check-3')}-b"):
+        question = _question(root, idnumber)
+        assert "How this part is marked" not in question.findtext("questiontext/text")
+        assert "How this part is marked: ecf" in question.findtext("generalfeedback/text")
+
+
+def test_no_moodle_answer_lies_inside_an_earlier_answers_range(small_export):
+    """Moodle takes the first answer whose range (nominal tolerance, plus PHP's slack) holds a
+    response, and its import warns of an answer inside an earlier one's range: a graph's band of
+    readings after its key was one (62 warnings). Each answer of every numerical question and
+    Cloze number box lies outside the ranges before it."""
+    root, _ = small_export
+    problems = [p for p in check_file(root)[0] if "inside the range" in p]
+    assert not problems, problems[:5]
+    graph = _question(root, f"graph-skydiver-terminal-v{_first_reserve('graph-skydiver-terminal')}-c")
+    answers = [(float(a.findtext("text")), float(a.findtext("tolerance"))) for a in graph.findall("answer")]
+    assert not answers_inside_earlier(answers)
+    # the band of readings is still taken, around the key: pieces either side
+    question = bank.TEMPLATES["graph-skydiver-terminal"].variant(_first_reserve("graph-skydiver-terminal"))
+    low, high = question.parts[2].band
+    for response in (low, high, (low + high) / 2, question.parts[2].value):
+        assert moodle_grade(graph, f"{response} kg m^-1") == 1.0, response
 
 
 def test_moodle_html_is_in_cdata():

@@ -14,8 +14,9 @@ Moodle grades as the book grades wherever its core question types can: the same 
   it as the key does; a reading from a graph is right within half a small square. Then, each
   with the grade of the lines it keeps: the named mistakes, the g = 9.8 slip, the part-way
   roundings, the sign slip and the key to 1 s.f. A missing or wrong unit costs what it costs
-  in the book (Moodle's unit grading), and a unit may be typed in its usual forms and other
-  sizes (N or kN, kg or g, m/s or km/h), each with its multiplier.
+  in the book (Moodle's unit grading), and a unit may be typed in each prefix and spelling the
+  book's unit reader accepts (cm s^-2, m/s², kN, g, newtons), each with its multiplier and
+  without spaces (moodle_units). No answer lies inside the range of one before it (moodle_answers).
 * A part that asks for a direction is one **Cloze** (multianswer) question: a NUMERICAL box
   for the size and a MULTICHOICE box for the direction, weighted as the part's lines split
   (the direction's own B1, or the A1 that carries the direction). A minus sign on the size
@@ -26,9 +27,10 @@ Moodle grades as the book grades wherever its core question types can: the same 
   image whose alt text is the shape in words.
 * A describe-and-explain part is an **essay** question, with the model answer and the
   marking points (with their codes) as information for the grader.
-* A multi-part question becomes one question per part, each with the question's text; a part
-  marked by error carried forward says how in its text, as Moodle cannot carry an answer
-  from one question to another.
+* A multi-part question becomes one question per part, each with the question's text. How a
+  part is marked by error carried forward (Moodle cannot carry an answer from one question to
+  another) is for the teacher: it is in the general feedback (and an essay's grader
+  information), never in the question text, where it would give the method away.
 
 Graphs are drawn for each variant and embedded as PNG images (``@@PLUGINFILE@@``). Text is the
 bank's text format as HTML, in CDATA (Moodle drops the space before each tag of escaped HTML).
@@ -40,7 +42,6 @@ import argparse
 import base64
 import html
 import io
-import math
 import multiprocessing
 import os
 import re
@@ -52,12 +53,17 @@ from pathlib import Path
 import numpy
 
 from .. import marking, textformat, topics
-from ..notation import format_number, plain_number, round_number
+from ..notation import format_number, plain_number
 from ..questions import OPTION_LETTERS, Question, unit_text
 from ..topics import Topic
 from ..variants import Template
 from . import DEFAULT_TOPIC, bank_templates, part_marks, topic_of
-from .latex import MISTAKE_SIG_FIGS, ecf_note
+from .latex import ecf_note
+from .moodle_answers import EXACT, MOODLE_GRADES, RIGHT_SIG_FIGS, grade, graded_answers, right_forms
+from .moodle_units import forms as unit_forms
+
+__all__ = ["EXACT", "MOODLE_GRADES", "MOODLE_MIN_VARIANTS", "RIGHT_SIG_FIGS", "export", "grade", "graded_answers",
+           "right_forms", "root_category", "to_xml", "unit_forms", "variant_indices", "write"]
 
 #: Moodle's question bank is filled with this many variants of a template at least.
 MOODLE_MIN_VARIANTS = 10
@@ -67,127 +73,13 @@ def root_category(topic: Topic | None = None) -> str:
     """The topic's category in Moodle's question bank: "$course$/top/Dynamics (9702)"."""
     return f"$course$/top/{topic_of(topic).name} (9702)"
 
-#: The written forms of a right answer Moodle is given: the key at 2 and at 3 s.f. (an answer
-#: at 4 s.f. or more falls in the 3 s.f. band, as the book takes it).
-RIGHT_SIG_FIGS = (2, 3)
-#: Moodle's allowed grades (question/engine/bank.php), in per cent.
-MOODLE_GRADES = (100.0, 90.0, 83.33333, 80.0, 75.0, 70.0, 66.66667, 60.0, 50.0, 40.0, 33.33333, 30.0,
-                 25.0, 20.0, 16.66667, 14.28571, 12.5, 11.11111, 10.0, 5.0, 0.0)
-#: Other forms of a unit, with Moodle's multiplier (the value in that unit = the SI value x it).
-UNIT_FORMS = {"N": (("kN", 0.001),), "kg": (("g", 1000.0),), "N s": (("kNs", 0.001),)}
-#: The width of an answer that takes one written value only (Moodle adds a tiny slack of its own).
-EXACT = 1e-9
 #: The resolution of the graphs' images (a 5.6 in wide graph is 728 pixels).
 GRAPH_DPI = 130
 
 
-def grade(kept: int, marks: int) -> float:
-    """kept of marks as a Moodle grade (per cent): the nearest allowed grade not above it
-    (strict rather than lenient)."""
-    if marks <= 0:
-        raise ValueError(f"marks must be positive (got marks={marks!r})")
-    exact = 100 * kept / marks
-    return max(g for g in MOODLE_GRADES if g <= exact + 1e-4)
-
-
-def _band(value: float, sig_figs: int) -> tuple[float, float]:
-    """(centre, width): the value at sig_figs s.f. and half a unit in its last figure."""
-    centre = float(round_number(value, sig_figs))
-    if centre == 0:
-        return 0.0, 0.0
-    return centre, 0.5 * 10 ** (math.floor(math.log10(abs(centre))) - sig_figs + 1)
-
-
-def _exact(value: float) -> tuple[float, float]:
-    return value, EXACT * max(abs(value), 1e-12)
-
-
-def right_forms(question: Question, index: int) -> list[tuple[float, float]]:
-    """(value, width) of each 100 % answer of a numeric part, the key as it prints first: the key
-    at 2 s.f. (that value only) and at 3 s.f. (half a unit in its 3rd figure), then each value
-    the scheme also accepts at 3 s.f., and what readings within half a small square give; a reading
-    from a graph within its tolerance."""
-    part = question.parts[index]
-    if part.kind == "graph":
-        return [(part.value, part.tolerance)]
-    two = _exact(float(round_number(part.value, RIGHT_SIG_FIGS[0])))
-    three = _band(part.value, RIGHT_SIG_FIGS[1])
-    forms = [three, two] if part.shown_sig_figs >= RIGHT_SIG_FIGS[1] else [two, three]
-    if abs(two[0] - three[0]) <= three[1]:  # the 3 s.f. band holds the 2 s.f. value: one answer
-        forms = [three]
-    # a key on a tie at 2 s.f. (225) is right rounded either way, as the book takes it
-    step = 10 ** (math.floor(math.log10(abs(part.value))) - 1) if part.value else 0
-    if step and math.isclose(abs(part.value) / step % 1, 0.5, abs_tol=1e-7):
-        other = math.copysign(abs(two[0]) - step, part.value)
-        forms.append(_exact(float(round_number(other, RIGHT_SIG_FIGS[0]))))
-    size = (lambda v: v) if part.direction == "signed" else abs
-    forms += [_band(size(a.value), RIGHT_SIG_FIGS[1]) for a in (*part.alternatives, *question.scheme_alternatives(index))]
-    unique: list[tuple[float, float]] = []
-    for value, width in forms:
-        if any(abs(value - v) + width <= w * (1 + 1e-9) for v, w in unique):
-            continue  # inside an earlier range: never reached
-        holds = [i for i, (v, w) in enumerate(unique) if abs(value - v) + w <= width * (1 + 1e-9)]
-        if holds:  # it holds an earlier range: it takes that one's place (the key still first)
-            unique[holds[0]] = (value, width)
-            unique = [form for i, form in enumerate(unique) if i not in holds[1:]]
-        else:
-            unique.append((value, width))
-    if part.readings:  # worked from readings of the graph: what readings within half a small square
-        low, high = part.band  # give, after the key (whose value Moodle shows); not widened by the
-        unique.append(((low + high) / 2, (high - low) / 2))  # student's rounding: strict
-    return unique
-
-
-def _overlaps(value: float, width: float, taken: list[tuple[float, float]]) -> bool:
-    """Ranges that share more than an end (Moodle takes the first that holds a response)."""
-    return any(abs(value - v) < (width + w) * (1 - 1e-9) or value == v for v, w in taken)
-
-
-def graded_answers(question: Question, index: int, *, direction_box: int = 0) -> list[tuple[float, float, float, str]]:
-    """(grade, value, width, feedback as plain text) of a numeric part's answers, in the order
-    Moodle tries them: the right forms, then each slip and named mistake with the grade of the
-    lines it keeps, and a 1 s.f. answer. One Moodle could not reach (its band holds a right
-    form or an earlier answer) is left out. direction_box: the marks a separate direction box
-    gives (a Cloze question); the number's box then earns the rest of what the part keeps with
-    the direction right."""
-    part = question.parts[index]
-    lines, losses = question.part_lines(question.part_ids[index]), marking.outcome_losses()
-    rows = [(100.0, value, width, f"Right: {part.answer_text}.") for value, width in right_forms(question, index)]
-
-    def kept(lost) -> float:
-        earned = marking.lines_kept(lines, lost) - direction_box
-        return grade(max(0, earned), len(lines) - direction_box)
-
-    size = (lambda v: v) if part.direction == "signed" else abs
-    wrong = [(size(m.value), kept(m.loses), f"{m.name[:1].upper()}{m.name[1:]}. {m.feedback}")
-             for m in part.mistakes if m.unit is None and m.direction is None]
-    if part.g_nine_eight is not None:
-        wrong.append((part.g_nine_eight, kept(losses["g-9.8"]),
-                      "Used g = 9.8 m s⁻². The data give g = 9.81 m s⁻²: the A1 is lost."))
-    wrong += [(value, kept(losses["rounded-part-way"]),
-               f"Rounded {what} part-way through: keep every figure until the end. The A1 is lost.")
-              for value, what in part.rounded_part_way]
-    if part.direction == "signed" and part.value != 0:
-        wrong.append((-part.value, kept(losses["sign"]),
-                      f"The size is right but the sign is wrong: positive is {part.positive}."))
-    taken = [(v, w) for _, v, w, _ in rows]
-    for value, points, feedback in wrong:
-        centre, width = _band(value, MISTAKE_SIG_FIGS)
-        if width == 0:  # a mistake of zero: as near zero as the key's 4th figure
-            width = _band(part.value, MISTAKE_SIG_FIGS + 1)[1]
-        if not _overlaps(centre, width, taken):
-            rows.append((points, centre, width, feedback))
-            taken.append((centre, width))
-    if part.kind != "graph" and part.value != 0:  # right only to 1 s.f.: all but the A1
-        one = _exact(float(round_number(part.value, 1)))
-        if not _overlaps(*one, taken):
-            rows.append((kept(losses["too-few-sf"]), *one, marking.too_few_sf_feedback(1)))
-    return rows
-
-
 def _number(value: float) -> str:
-    """A value for Moodle: plain digits, 10 significant figures, no grouping."""
-    return format(value, ".10g")
+    """A value for Moodle: plain digits, 15 significant figures (a band's ends exactly), no grouping."""
+    return format(value, ".15g")
 
 
 def _text(parent: ET.Element, tag: str, html: str, *, fmt: str = "html") -> ET.Element:
@@ -200,28 +92,6 @@ def _plain(parent: ET.Element, tag: str, text: str) -> ET.Element:
     element = ET.SubElement(parent, tag)
     element.text = text
     return element
-
-
-def _units(unit: str, forms: str) -> list[tuple[str, float]]:
-    """Every usual form of the unit, without spaces (Moodle deletes the spaces of a response),
-    with its multiplier: "m s^-1", "m s^-1 (m/s)" -> [("m/s", 1), ("ms^-1", 1), ("ms⁻¹", 1),
-    ("km/h", 3.6), ...]. Moodle shows the first after the key: the unit itself, or for a unit
-    with a negative power its slash form."""
-    candidates = [unit]
-    for chunk in forms.replace("(", " or ").replace(")", "").split(" or "):
-        if chunk.strip():
-            candidates.append(chunk.strip())
-    # "kg m s^-1" is typed "kg m/s" too
-    candidates += [re.sub(r" s\^-(\d)$", lambda m: "/s" + ("" if m[1] == "1" else f"^{m[1]}"), c) for c in candidates]
-    out: list[str] = []
-    for candidate in candidates:
-        for form in (candidate, unit_text(candidate)):
-            form = form.replace(" ", "")
-            if form and form not in out:
-                out.append(form)
-    plain = unit.replace(" ", "")
-    out.sort(key=lambda form: 0 if form == plain and "^-" not in unit else 1 if "/" in form else 2)
-    return [(form, 1.0) for form in out] + list(UNIT_FORMS.get(unit, ()))
 
 
 class _Export:
@@ -268,9 +138,10 @@ class _Export:
             _plain(element, "unitsleft", "0")
             return
         units = ET.SubElement(element, "units")
-        for form, multiplier in _units(part.unit, part.units):
+        # every prefix and spelling the book's unit reader accepts, without spaces (moodle_units)
+        for _typed, form, multiplier in unit_forms(part.unit, part.units):
             unit = ET.SubElement(units, "unit")
-            _plain(unit, "multiplier", _number(multiplier))
+            _plain(unit, "multiplier", format(multiplier, ".12g"))
             _plain(unit, "unit_name", form)
         # a missing or wrong unit loses what the rule table says (the A1; on a one-mark part, all)
         kept = marking.lines_kept(lines, marking.outcome_losses()["missing-unit"])
@@ -450,8 +321,11 @@ def _part(out: _Export, template: Template, index: int, question: Question, part
     idnumber = f"{template.key}-v{index}-{question.part_ids[part_index]}"
     stem = question.text_html() + image
     ask = f"<p><strong>{_escape(label)}</strong>{_escape(part.prompt[:1].upper() + part.prompt[1:])}"
+    # how the part is marked by error carried forward: for the teacher and, after the attempt,
+    # the student (the general feedback; an essay's grader information), never in the question
     note = ecf_note(question, part_index)
-    general = _scheme_html(question) + (f"<p><em>{_escape(note)}</em></p>" if note else "")
+    how_marked = f"<p><em>How this part is marked: {_escape(note)}</em></p>" if note else ""
+    general = _scheme_html(question) + how_marked
     if part.kind == "mcq":
         shown, option_files = _option_texts(part, idnumber)
         options = [(text, letter == part.answer,
@@ -462,20 +336,19 @@ def _part(out: _Export, template: Template, index: int, question: Question, part
                         option_files=option_files)
     elif part.kind == "explain":
         grader = (f"<p><strong>Model answer</strong></p>{textformat.to_html(part.model_answer)}"
-                  + _scheme_html(question))
+                  + _scheme_html(question) + how_marked)
         out.essay(name, idnumber, stem + ask + f" [{marks}]</p>", marks, general, files, grader)
     else:
         how = " (read from the graph)" if part.kind == "graph" else ""
         sign = f" Give a signed value: positive is {_escape(part.positive)}." if part.direction == "signed" else ""
-        ecf = f"<p><em>How this part is marked: {_escape(note)}</em></p>" if note else ""
         if part.direction == "choice":
             out.cloze(name, idnumber, stem + ask + f"{how}. Type the size as a number in "
-                      f"{_escape(unit_text(part.unit))} and choose the direction.</p>" + ecf,
+                      f"{_escape(unit_text(part.unit))} and choose the direction.</p>",
                       marks, general, files, question, part_index)
         else:
             typing = (f"Type the number and its unit ({_escape(unit_text(part.unit))})" if part.unit
                       else "Type the number as a decimal (it has no unit)")
-            out.numerical(name, idnumber, stem + ask + f"{how}.{sign} {typing}.</p>" + ecf, marks, general, files,
+            out.numerical(name, idnumber, stem + ask + f"{how}.{sign} {typing}.</p>", marks, general, files,
                           question, part_index)
 
 

@@ -427,6 +427,8 @@
     recasedUnit: recasedUnit,
     splitValueAndUnit: splitValueAndUnit,
     superscript: superscript,
+    // the reader's own tables: the Moodle export declares each unit's forms from them
+    tables: { base: BASE_UNITS, unprefixed: UNPREFIXED, words: UNIT_WORDS, prefixes: PREFIXES },
   };
   if (typeof module === "object" && module.exports) module.exports = reading;
   else root.AnswerReading = reading;

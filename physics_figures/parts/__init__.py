@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from .choice import OPTION_LETTERS, ChoicePart, Option, Sketch, choices_in_order
 from .explain import ExplainPart
-from .graph import Graph, GraphPart, reading_places
+from .graph import Graph, GraphPart, format_reading, reading_places
 from .numeric import Alternative, Ecf, Mistake, Part, Reading, Step
 
 #: Every part kind by its name: the data-kind of a question's part and the kind the browser's
@@ -13,4 +13,5 @@ from .numeric import Alternative, Ecf, Mistake, Part, Reading, Step
 KINDS = {kind.kind: kind for kind in (Part, GraphPart, ChoicePart, ExplainPart)}
 
 __all__ = ["KINDS", "OPTION_LETTERS", "Alternative", "ChoicePart", "Ecf", "ExplainPart", "Graph", "GraphPart",
-           "Mistake", "Option", "Part", "Reading", "Sketch", "Step", "choices_in_order", "reading_places"]
+           "Mistake", "Option", "Part", "Reading", "Sketch", "Step", "choices_in_order", "format_reading",
+           "reading_places"]

@@ -81,6 +81,7 @@ def test_every_label_is_a_plain_number_and_no_two_labels_touch(key, index, graph
     FigureCanvasAgg(figure)
     figure.canvas.draw()
     renderer = figure.canvas.get_renderer()
+    every = []
     for axis, along in ((drawn.axes.xaxis, "x"), (drawn.axes.yaxis, "y")):
         labels = [label for label in axis.get_ticklabels() if label.get_visible() and label.get_text()]
         texts = [label.get_text() for label in labels]
@@ -91,6 +92,10 @@ def test_every_label_is_a_plain_number_and_no_two_labels_touch(key, index, graph
         boxes = [label.get_window_extent(renderer) for label in labels]
         touching = [(texts[a], texts[b]) for a, b in _overlaps(boxes, along)]
         assert not touching, f"{key} variant {index}: labels touch or overlap on the {along} axis: {touching}"
+        every.append(list(zip(texts, boxes, strict=True)))
+    # and where the axes meet: no time label on a value label
+    corner = [(a, b) for a, one in every[0] for b, other in every[1] if one.overlaps(other)]
+    assert not corner, f"{key} variant {index}: labels of the two axes overlap: {corner}"
     _, value = axis_scales(graph)
     label = drawn.axes.get_ylabel()
     if max(abs(graph.value_min), graph.value_max) >= 1e5:

@@ -9,7 +9,8 @@
   from its <text> element (x, y, size, anchor) and the width matplotlib lays that text out at.
 * PDF: every PDF of the kit (make worksheets writes them into teachers/) and the book's
   (make pdf, copied to pdf/), read with pdftotext -bbox-layout: no two numbers' boxes on a
-  page overlap, no number runs into the next ("7.510.012.5"), and no ×10ⁿ of more than 3 figures.
+  page set in one size overlap (each the word's width by its figures' height: pdftotext's box
+  is the font's), no number runs into the next ("7.510.012.5"), and no ×10ⁿ of more than 3 figures.
 """
 
 from __future__ import annotations
@@ -159,6 +160,17 @@ def words(pdf: Path) -> list[list[tuple[str, float, float, float, float]]]:
 
 
 NUMBER = re.compile(r"−?-?\d+(?:\.\d+)?")
+#: pdftotext's word box is as tall as its font's ascent and descent (DejaVu Sans, the graphs'
+#: font: 0.928 and 0.236 of an em); a number's figures stand 0.73 em above the baseline.
+ASCENT, DESCENT, FIGURE_HEIGHT = 0.928, 0.236, 0.73
+
+
+def ink(word) -> tuple[float, float, float, float]:
+    """A number's box as its figures are drawn: the word's width, and its figures' height."""
+    text, left, top, right, bottom = word
+    em = (bottom - top) / (ASCENT + DESCENT)
+    baseline = bottom - DESCENT * em
+    return left, baseline - FIGURE_HEIGHT * em, right, baseline
 RUN_TOGETHER = re.compile(r"\d\.\d+\.\d")  # 7.510.0: two labels with no gap between them
 
 
@@ -169,11 +181,13 @@ def check_pdf(name: str, pages) -> list[str]:
         problems += [f"{name} p{number}: {found}" for found in too_many_figures(text)]
         problems += [f"{name} p{number}: {word[0]!r} runs numbers together" for word in page
                      if RUN_TOGETHER.search(word[0])]
-        numbers = [word for word in page if NUMBER.fullmatch(word[0])]
-        for i, a in enumerate(numbers):
-            for b in numbers[i + 1:]:
-                if min(a[3], b[3]) - max(a[1], b[1]) > 0.2 and min(a[4], b[4]) - max(a[2], b[2]) > 0.2:
-                    problems.append(f"{name} p{number}: {a[0]!r} and {b[0]!r} overlap")
+        numbers = [(word[0], ink(word)) for word in page if NUMBER.fullmatch(word[0])]
+        for i, (a, box) in enumerate(numbers):
+            for b, other in numbers[i + 1:]:
+                # a graph's labels share one size; a power's raised figures (4.5², 10⁻³) are smaller
+                same_size = abs((box[3] - box[1]) - (other[3] - other[1])) < 0.05
+                if same_size and min(box[2], other[2]) > max(box[0], other[0]) and min(box[3], other[3]) > max(box[1], other[1]):
+                    problems.append(f"{name} p{number}: {a!r} and {b!r} overlap")
     return problems
 
 

@@ -35,6 +35,9 @@ _MOST_LABELS = 8
 _LABEL_EVERY = (1, 2, 5, 10)
 #: Points of clear paper between two neighbouring labels, at the least (half a label's size).
 _LABEL_GAP = 6.0
+#: Points between the time axis and its labels: a little more than the book's 3.5, so where the
+#: axes meet the first time label stays clear of the lowest value label.
+_TIME_LABEL_PAD = 5.0
 
 
 #: Inches: about 310 pt of SVG, so 12 pt ticks are >= 11 CSS px in a 320 px wide box.
@@ -112,17 +115,18 @@ def axis_scales(graph: Graph) -> tuple[AxisScale, AxisScale]:
     with book_style():
         rc = mpl.rcParams
         pad = 72 * rc["figure.constrained_layout.w_pad"]
-        tick = rc["xtick.major.size"] + rc["xtick.major.pad"]
+        below = rc["xtick.major.size"] + _TIME_LABEL_PAD  # the time axis's ticks and their labels' pad
+        beside = rc["ytick.major.size"] + rc["ytick.major.pad"]
         label = 1.2 * rc["axes.labelsize"] + rc["axes.labelpad"]
     width, height = (72 * side for side in QUESTION_GRAPH_SIZE)
     line = _text_size("0")[1]
     # below: the time labels and the axis's label; above: half the top value label
     value = _choose(graph.value_min, graph.value_max, graph.value_division,
-                    lambda _: height - 2 * pad - line - tick - label - line / 2, across=False)
+                    lambda _: height - 2 * pad - line - below - label - line / 2, across=False)
     widest = max(_text_size(text)[0] for text in _labels(graph.value_min, graph.value_max, value))
     # left: the value labels and the axis's label; right: half the last time label
     time = _choose(0.0, graph.time_max, graph.time_division,
-                   lambda scale: (width - 2 * pad - widest - tick - label
+                   lambda scale: (width - 2 * pad - widest - beside - label
                                   - _text_size(scale.text(graph.time_max))[0] / 2), across=True)
     return time, value
 
@@ -182,6 +186,7 @@ def plot_question_graph(graph: Graph, *, ax: Axes | None = None) -> QuestionGrap
     time_scale, value_scale = axis_scales(graph)
     across = _axis(ax.xaxis, 0.0, graph.time_max, graph.time_division, time_scale)
     up = _axis(ax.yaxis, graph.value_min, graph.value_max, graph.value_division, value_scale)
+    ax.tick_params(axis="x", which="major", pad=_TIME_LABEL_PAD)
     _small_squares(ax, across, up)
     ax.grid(which="major", color=colour("figure.grid-major"), linewidth=0.8)
     ax.set_axisbelow(True)

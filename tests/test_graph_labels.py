@@ -1,4 +1,4 @@
-# ruff: noqa: RUF001, RUF002  (typeset text: the times sign, superscripts, the true minus)
+# ruff: noqa: RUF001, RUF002, RUF003  (typeset text: the times sign, superscripts, the true minus)
 """A question graph's numbers as Cambridge's own graphs print them (issue 37, "Graph labels";
 CLARIFICATIONS, "Graph ticks"): each label a plain number, the power of ten in the axis's
 label ("momentum / 10⁵ N s": 0, 0.5, 1.0 …), never "× 10ⁿ" on a label, and no two labels
@@ -12,6 +12,7 @@ sheet builder's and the PDFs are read by tests/test_graph_labels_site.py.
 
 from __future__ import annotations
 
+import itertools
 import json
 import re
 
@@ -70,7 +71,7 @@ def test_the_graphs_include_an_axis_of_a_hundred_thousand_or_more():
 def _overlaps(boxes, along: str) -> list[tuple[int, int]]:
     """Neighbouring boxes (in order along the axis) that touch or overlap."""
     ordered = sorted(range(len(boxes)), key=lambda i: getattr(boxes[i], f"{along}0"))
-    return [(a, b) for a, b in zip(ordered, ordered[1:], strict=False)
+    return [(a, b) for a, b in itertools.pairwise(ordered)
             if getattr(boxes[b], f"{along}0") <= getattr(boxes[a], f"{along}1")]
 
 

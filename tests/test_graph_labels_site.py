@@ -16,6 +16,7 @@
 from __future__ import annotations
 
 import html
+import itertools
 import json
 import re
 import subprocess
@@ -73,7 +74,7 @@ LEAST_GAP = 3.0
 
 def touching(labels) -> list[tuple[str, str]]:
     ordered = sorted(labels, key=lambda label: label[1][0])
-    return [(a[0], b[0]) for a, b in zip(ordered, ordered[1:], strict=False) if b[1][0] - a[1][1] < LEAST_GAP]
+    return [(a[0], b[0]) for a, b in itertools.pairwise(ordered) if b[1][0] - a[1][1] < LEAST_GAP]
 
 
 def check_svg(name: str, svg: str) -> list[str]:
@@ -167,11 +168,13 @@ ASCENT, DESCENT, FIGURE_HEIGHT = 0.928, 0.236, 0.73
 
 def ink(word) -> tuple[float, float, float, float]:
     """A number's box as its figures are drawn: the word's width, and its figures' height."""
-    text, left, top, right, bottom = word
+    _, left, top, right, bottom = word
     em = (bottom - top) / (ASCENT + DESCENT)
     baseline = bottom - DESCENT * em
     return left, baseline - FIGURE_HEIGHT * em, right, baseline
-RUN_TOGETHER = re.compile(r"\d\.\d+\.\d")  # 7.510.0: two labels with no gap between them
+#: 7.510.0 or 2.53.0: two labels with no gap between them (a label's places, then the next
+#: label's whole part), not a version number (4.3.0)
+RUN_TOGETHER = re.compile(r"\d\.\d{2,}\.\d")
 
 
 def check_pdf(name: str, pages) -> list[str]:

@@ -1,3 +1,4 @@
+# ruff: noqa: RUF002, RUF003  (typeset text: the times sign in readings written in powers of ten)
 
 """The graph part kind: a value read from the question's graph, right within half a small
 square, and the graph itself. Its browser twin is the numeric marker
@@ -10,7 +11,15 @@ import math
 from dataclasses import dataclass, field
 from typing import ClassVar
 
-from ..notation import LARGEST_PLAIN, SMALLEST_PLAIN, axis_power, format_number, power_text, round_number, unit_text
+from ..notation import (
+    LARGEST_PLAIN,
+    SMALLEST_PLAIN,
+    axis_power,
+    format_number,
+    power_text,
+    round_number,
+    unit_text,
+)
 from .common import _require
 from .numeric import Part
 

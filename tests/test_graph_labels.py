@@ -165,3 +165,15 @@ def test_a_reading_off_an_axis_in_powers_of_ten_scores_as_the_student_types_it()
     for (key, part_id, typed, right), marked in zip(expected, mark_questions(cases), strict=True):
         got, out_of = marked["marks"]["byPart"][part_id]
         assert (got == out_of) is right, f"{key} ({part_id}) typed {typed!r}: {got}/{out_of} {marked['results'][part_id]}"
+
+
+def test_axis_power_puts_the_power_on_the_axis_only_where_a_label_would_need_it():
+    from physics_figures.notation import axis_power, power_text
+
+    assert axis_power(150_000, 25_000) == 5 and power_text(5) == "10⁵"
+    assert axis_power(2_250_000, 500_000) == 6
+    assert axis_power(80_000, 20_000) == 0  # 80 000 prints as it is
+    assert axis_power(0.004, 0.0005) == -3 and power_text(-3) == "10⁻³"
+    assert axis_power(3.0, 0.5) == 0
+    with pytest.raises(ValueError, match="step must be a positive finite number"):
+        axis_power(1.0, 0.0)

@@ -8,6 +8,7 @@ numbers are the question's; nothing is computed here.
 from __future__ import annotations
 
 import functools
+import html
 import itertools
 import math
 import re
@@ -27,7 +28,7 @@ from ..questions import Graph
 from ..style import colour
 from ._text import plain
 from .book_figure import BookFigure
-from .style import GUIDE, MAIN, SHADE, book_style, new_axes, styled, unit_label
+from .style import GUIDE, MAIN, SHADE, SMALL_TEXT, book_style, new_axes, styled, unit_label
 
 #: A labelled grid line every 1, 2, 5 or 10 small squares: the first that gives at most
 #: this many labels along an axis, with room between neighbouring labels.
@@ -297,13 +298,34 @@ def _axis_data(label: str, unit: str, low: float, high: float, division: float, 
             "power": scale.power, "places": [_decimals(division / power), _decimals(division / 2 / power)]}
 
 
+_TICK_TEXT = re.compile(r'<text style="([^"]*)" x="([-\d.]+)" y="([-\d.]+)"[^>]*>([^<]*)</text>')
+
+
+def _numbers_edges(svg: str) -> list[float]:
+    """Where the axes' numbers end, as fractions of the image: the left edge of the value
+    axis's (over its width) and the foot of the time axis's (over its height). The enlarged
+    view keeps both in sight as it opens (graph-view.js)."""
+    *_, width, height = _plot_area(svg)
+    left, foot = width, 0.0
+    for style, x, y, text in _TICK_TEXT.findall(svg):
+        if f"font-size: {SMALL_TEXT:g}px" not in style:  # a tick label, not an axis's label
+            continue
+        size, line = _text_size(html.unescape(text))
+        if "text-anchor: end" in style:
+            left = min(left, float(x) - size)
+        elif "text-anchor: middle" in style:
+            foot = max(foot, float(y) + 0.25 * line)
+    return [float(round_number(left / width, decimals=5)), float(round_number(foot / height, decimals=5))]
+
+
 def cursor_data(svg: str, graph: Graph) -> dict:
     """What the graph cursor (book/_ext/questions/static/graph-cursor.js) reads: both axes as
     drawn here (label, unit, ends, small and large square, the power of ten of their labels),
     the line's readings at each half small square of time (Graph.readings: the question's own
     numbers, to half a small square, in SI), and the plot area as fractions of the image's
     width and height (left, top, right, bottom), where a tap on the enlarged graph is turned
-    into a time."""
+    into a time, and where the axes' numbers end (left of the value axis's, foot of the time
+    axis's), which the enlarged view keeps in sight as it opens."""
     left, top, right, bottom, width, height = _plot_area(svg)
     time_scale, value_scale = axis_scales(graph)
     return {
@@ -312,6 +334,7 @@ def cursor_data(svg: str, graph: Graph) -> dict:
                             value_scale),
         "readings": list(graph.readings()),
         "area": [float(round_number(side, decimals=5)) for side in (left / width, top / height, right / width, bottom / height)],
+        "numbers": _numbers_edges(svg),
     }
 
 

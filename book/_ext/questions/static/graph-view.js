@@ -100,27 +100,35 @@
     return graph.naturalWidth > 0 ? graph.naturalHeight / graph.naturalWidth : 0;
   }
 
-  /* The plot area (left, top, right, bottom as fractions of the image), as the graph cursor's
-   * data gives it; else where a question's graph puts it, near enough. */
-  function plotArea(button) {
+  /* From the graph cursor's data (question_graph.py, cursor_data): the plot area (left, top,
+   * right, bottom) and where the axes' numbers end (left of the value axis's, foot of the time
+   * axis's), as fractions of the image; else where a question's graph puts them, near enough. */
+  function layoutOf(button) {
     try {
-      var area = JSON.parse(button.getAttribute("data-cursor") || "null").area;
-      if (area && area.length === 4) return area;
+      var data = JSON.parse(button.getAttribute("data-cursor") || "null");
+      if (data && data.area && data.numbers) return { area: data.area, numbers: data.numbers };
     } catch {
-      // no cursor's data: the usual place
+      // no cursor's data: the usual places
     }
-    return [0.2, 0.05, 0.95, 0.85];
+    return { area: [0.2, 0.05, 0.95, 0.85], numbers: [0.05, 0.92] };
   }
 
   /* Scroll as near the middle of the plot as keeps both axes' numbers in view: the value
-   * axis's at the image's left edge, the time axis's at its foot. A graph narrower than the
-   * pane stands in its middle (questions.css). */
+   * axis's at the left, the time axis's at the foot. A graph narrower than the pane stands in
+   * its middle (questions.css). */
   function place(button) {
-    var area = plotArea(button),
+    var layout = layoutOf(button),
+      area = layout.area,
       box = image.getBoundingClientRect(),
-      height = pane.clientHeight - parseFloat(getComputedStyle(pane).paddingBottom);
-    pane.scrollLeft = 0;
-    pane.scrollTop = Math.max(0, ((area[1] + area[3]) / 2) * box.height - height / 2, box.height - height);
+      style = getComputedStyle(pane),
+      width = pane.clientWidth - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight),
+      height = pane.clientHeight - parseFloat(style.paddingBottom),
+      margin = 4; // CSS px of paper beyond the numbers
+    var inset = parseFloat(style.paddingLeft); // the image's place in the pane's scrolled content
+    var left = inset + ((area[0] + area[2]) / 2) * box.width - width / 2;
+    var top = ((area[1] + area[3]) / 2) * box.height - height / 2;
+    pane.scrollLeft = Math.max(0, Math.min(left, inset + layout.numbers[0] * box.width - margin));
+    pane.scrollTop = Math.max(0, top, layout.numbers[1] * box.height + margin - height);
   }
 
   function open(button) {
@@ -131,6 +139,8 @@
     image.alt = graph.alt;
     aspect = aspectOf(graph);
     dialog.showModal();
+    // the graph cursor writes its line above the graph first (graph-cursor.js): then the pane's size is final
+    button.dispatchEvent(new CustomEvent("q-graph-opened", { bubbles: true, detail: { dialog: dialog } }));
     // the pane's width inside its padding, or less on a wide screen: the whole graph in its height
     var style = getComputedStyle(pane);
     fitWidth = pane.clientWidth - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight);
@@ -139,8 +149,6 @@
     zoom = 1;
     setZoom(readingZoom(button));
     place(button);
-    // the graph cursor draws its marker here (graph-cursor.js)
-    button.dispatchEvent(new CustomEvent("q-graph-opened", { bubbles: true, detail: { dialog: dialog } }));
   }
 
   document.addEventListener("click", function (event) {

@@ -152,10 +152,11 @@ def _reading_cases():
 
 def test_a_reading_off_an_axis_in_powers_of_ten_scores_as_the_student_types_it():
     """The student reads 1.15 on "momentum / 10⁵ N s" and types 1.15 × 10^5, 1.15e5, 1.15 x 10⁵
-    or 115000: each is right. The bare 1.15 is not (the axis's power is part of the value)."""
+    or 115000: each is right. The bare 1.15 is not (the axis's power is part of the value): it
+    is the named mistake that says to multiply by the axis's power of ten."""
     cases, expected = [], []
     for question, part_id, shown, power in _reading_cases():
-        scaled = f"{shown:.3f}".rstrip("0").rstrip(".")
+        scaled = f"{shown:#.3g}"  # as read to half a small square: 1.15, 0.400
         superscript = str(power).translate(str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹"))
         for typed in (f"{scaled} × 10^{power}", f"{scaled}e{power}", f"{scaled} x 10{superscript}",
                       str(round(shown * 10**power)), scaled):
@@ -164,7 +165,10 @@ def test_a_reading_off_an_axis_in_powers_of_ten_scores_as_the_student_types_it()
     assert len(expected) >= 10, "no part is read off an axis in powers of ten"
     for (key, part_id, typed, right), marked in zip(expected, mark_questions(cases), strict=True):
         got, out_of = marked["marks"]["byPart"][part_id]
-        assert (got == out_of) is right, f"{key} ({part_id}) typed {typed!r}: {got}/{out_of} {marked['results'][part_id]}"
+        result = marked["results"][part_id]
+        assert (got == out_of) is right, f"{key} ({part_id}) typed {typed!r}: {got}/{out_of} {result}"
+        if not right:
+            assert result["code"] == "mistake" and "Multiply your reading by 10" in result["message"], result
 
 
 def test_axis_power_puts_the_power_on_the_axis_only_where_a_label_would_need_it():

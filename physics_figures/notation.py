@@ -15,6 +15,8 @@ The rules (Cambridge mark schemes and the SI brochure):
 * the whole part of a number of five digits or more is grouped in threes with a
   narrow no-break space (U+202F): 1500, 30 000;
 * x 10^n when the rounded size is 10^5 or more, or below 10^-3: 1.5 × 10⁵, 2.0 × 10⁻⁴;
+  a graph's axis never puts it on a label: the axis's label carries the power instead
+  (``axis_power``: "p / 10⁵ N s", labels 0, 0.5, 1.0);
 * a number is joined to its unit, and a unit's symbols to each other, with a no-break
   space (U+00A0), so "50 m s⁻¹" never breaks across lines: ``format_quantity`` and
   ``unit_text`` write them so, and ``join_units`` mends prose that was typed by hand
@@ -92,6 +94,25 @@ def format_number(value: float, sig_figs: int | None = None, *, decimals: int | 
     if rounded < 0 and size != 0:
         return MINUS + body
     return ("+" if plus and size != 0 else "") + body
+
+
+def axis_power(largest: float, step: float) -> int:
+    """The power of ten an axis's numbers are written in, as Cambridge's own graphs write them:
+    0 when its labels (up to ``largest`` in size, ``step`` apart) print as plain numbers; else
+    the power of ``largest``'s first digit, so each label is a plain number and the axis's label
+    carries the power ("p / 10⁵ N s", labels 0, 0.5, 1.0 …), never "× 10ⁿ" on a label."""
+    for name, number in (("largest", largest), ("step", step)):
+        if not (math.isfinite(number) and number > 0):
+            raise ValueError(f"{name} must be a positive finite number (got {name}={number!r})")
+    biggest = Decimal(repr(float(largest)))
+    if biggest < LARGEST_PLAIN and Decimal(repr(float(step))) >= SMALLEST_PLAIN:
+        return 0
+    return biggest.adjusted()
+
+
+def power_text(power: int) -> str:
+    """10 to ``power`` as an axis's label writes it: 5 -> "10⁵", -3 -> "10⁻³"."""
+    return "10" + str(power).translate(_SUPERSCRIPTS)
 
 
 def tex_number(text: str) -> str:

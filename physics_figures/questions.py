@@ -53,6 +53,7 @@ from .parts import (  # the part kinds, one module each (physics_figures/parts/)
     Sketch,
     Step,
     choices_in_order,
+    format_reading,
     reading_places,
 )
 from .parts.common import (
@@ -72,8 +73,9 @@ from .parts.common import (
 
 __all__ = ["ASKS", "DEFAULT_CHECK_SIG_FIGS", "DEFAULT_MIN_SIG_FIGS", "DIRECTION_MODES", "G_NINE_EIGHT", "G_TEN",
            "KINDS", "MARK_CODES", "OPTION_LETTERS", "PART_IDS", "PART_WAY_SIG_FIGS", "Alternative", "Arrow", "Body",
-           "ChoicePart", "Diagram", "Ecf", "ExplainPart", "Given", "Graph", "GraphPart", "Mark", "Mistake", "Option", "Part", "Question",
-           "Reading", "Sketch", "Step", "choices_in_order", "number", "reading_places", "unit_text"]
+           "ChoicePart", "Diagram", "Ecf", "ExplainPart", "Given", "Graph", "GraphPart", "Mark", "Mistake", "Option",
+           "Part", "Question", "Reading", "Sketch", "Step", "choices_in_order", "format_reading", "number",
+           "reading_places", "unit_text"]
 
 
 @dataclass(frozen=True)

@@ -10,7 +10,9 @@ the answers and scores full marks. Every announcement lies on the half-small-squ
 the question's alt text states, and no alt text (the printed variant's and every site variant's)
 holds a reading a part asks for. After New numbers the cursor reads the new graph, and that
 question too scores full marks. In the enlarged view at 390 px a tap moves the cursor there,
-to the nearest half small square, and draws it where the SVG's own grid lines put that reading.
+to the nearest half small square, and draws it where the SVG's own grid lines put that reading;
+the view writes the reading only when asked ("Show the reading") or once every part read off
+the graph has a value typed (issue 37: a sighted student practises reading to half a square).
 """
 
 from __future__ import annotations
@@ -416,6 +418,12 @@ def test_a_tap_in_the_enlarged_view_moves_the_cursor_and_draws_it_at_390_px(brow
         t, value = parse(said)
         assert t == pytest.approx(round(squares * 2) / 2 * time_square), said
         assert on_grid(value, low, value_square / 2), said
+        # the reading is the student's to take: the view writes it when asked
+        show = page.locator("dialog.q-graph-view button.q-graph-show-reading")
+        if squares == 16.4:
+            assert not re.search(r"\d", page.locator(".q-graph-reading-large").inner_text()), "the view read the graph"
+            show.tap()
+        assert not show.is_visible()
         shown = page.locator(".q-graph-reading-large").inner_text().strip()
         assert parse(shown) == (t, value), shown
         # the marker stands where the SVG's grid puts that reading
@@ -432,4 +440,57 @@ def test_a_tap_in_the_enlarged_view_moves_the_cursor_and_draws_it_at_390_px(brow
     page.locator("dialog.q-graph-view button.q-graph-close").tap()
     page.wait_for_function("!document.querySelector('dialog.q-graph-view').open")
     assert page.evaluate(f"document.querySelector('{SAID}').parentNode === document.body")
+    context.close()
+
+
+READING = "dialog.q-graph-view .q-graph-reading-large"
+SHOW = "dialog.q-graph-view button.q-graph-show-reading"
+
+
+def _tap_the_middle(page) -> None:
+    box = page.locator("dialog.q-graph-view img.q-graph-large").bounding_box()
+    pane = page.locator("dialog.q-graph-view .q-graph-pane").bounding_box()
+    page.touchscreen.tap(pane["x"] + min(box["width"], pane["width"]) * 0.6, pane["y"] + min(box["height"], pane["height"]) * 0.5)
+    page.wait_for_function("!document.querySelector('.q-graph-marker-time').hidden")
+
+
+def test_the_view_writes_the_reading_only_when_asked_or_once_the_readings_are_typed(browser, base_url, templates):
+    """A tap places the cursor and draws it; the reading's numbers stay off the screen until
+    Show the reading, for each graph of its own (New numbers hides it again), or until every
+    part read off the graph has a value typed."""
+    key = "graph-lorry-speed-momentum-time"
+    context = browser.new_context(**PHONE)
+    page = context.new_page()
+    page.goto(f"{base_url}/{templates[key]}", wait_until="load")
+    section = page.locator(f'section.q[data-q="{key}"]')
+    opener = section.locator("button.q-graph-open")
+
+    def open_and_tap() -> str:
+        opener.tap()
+        page.wait_for_function("document.querySelector('dialog.q-graph-view').open")
+        _tap_the_middle(page)
+        return page.locator(READING).inner_text()
+
+    assert not re.search(r"\d", open_and_tap()), "a tap showed the reading"
+    assert page.locator(SHOW).is_visible()
+    page.locator(SHOW).tap()
+    assert parse(page.locator(READING).inner_text())[1] is not None
+    assert not page.locator(SHOW).is_visible()
+    page.locator("dialog.q-graph-view button.q-graph-close").tap()
+
+    # New numbers: a new graph, read by the student again
+    section.locator("button.q-new").tap()
+    page.wait_for_function(f"document.querySelector('form.q-form[data-question=\"{key}\"]').dataset.variant !== '0'")
+    assert not re.search(r"\d", open_and_tap()), "the new graph's reading showed at a tap"
+    page.locator("dialog.q-graph-view button.q-graph-close").tap()
+
+    # the readings typed, one part after the other: offered once both are
+    graph_parts = section.locator('fieldset.q-part[data-kind="graph"] input.q-value')
+    assert graph_parts.count() == 2
+    graph_parts.nth(0).fill("1")
+    assert not re.search(r"\d", open_and_tap()), "the reading showed with one of two readings typed"
+    page.locator("dialog.q-graph-view button.q-graph-close").tap()
+    graph_parts.nth(1).fill("2")
+    assert parse(open_and_tap())[1] is not None, "the reading did not show once the readings were typed"
+    assert not page.locator(SHOW).is_visible()
     context.close()

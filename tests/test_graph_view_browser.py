@@ -6,7 +6,8 @@ dialog.q-graph-view, half a small square there is at least 6 CSS px, Escape clos
 focus is back on the graph's button; focus and Enter open it again, and its Close button
 closes it, focus back again; − and + zoom it; after New numbers it shows the new variant's
 graph, as readable. It also works in dark mode (the theme's colours), prints as the plain
-graph, and axe-core finds nothing in it.
+graph, and axe-core finds nothing in it. It opens with both axes' numbers in view, at 390 px
+and at 1280 px (issue 37), as near the middle of the plot as that allows.
 
 How half a small square is measured: from the SVG the view shows, not from anything the view
 computes. The test fetches the file the dialog's image loaded (its currentSrc) and takes the
@@ -180,3 +181,64 @@ def test_in_print_the_graph_s_button_is_the_plain_graph(browser, base_url, quest
     assert not opener.locator(".q-graph-hint").is_visible()
     assert opener.locator("img.q-graph").is_visible()
     context.close()
+
+
+#: Every tick label of the enlarged graph where the screen shows it: the SVG the view loaded,
+#: laid over the image at its size (hidden), gives each label's box; then, whether that box lies
+#: inside the pane's visible part and the window. Tick labels are the tick-size texts (12 px in
+#: the SVG) centred on the time axis's line and ending on the value axis's column.
+LABELS_IN_VIEW = f"""async () => {{
+  const dialog = document.querySelector('{VIEW}'), image = dialog.querySelector('img.q-graph-large');
+  const pane = dialog.querySelector('.q-graph-pane').getBoundingClientRect(), box = image.getBoundingClientRect();
+  const copy = document.createElement('div');
+  copy.style.cssText = `position:fixed;left:${{box.left}}px;top:${{box.top}}px;width:${{box.width}}px;` +
+    `height:${{box.height}}px;visibility:hidden;pointer-events:none;overflow:visible`;
+  copy.innerHTML = (await (await fetch(image.currentSrc)).text()).replace(/^[\\s\\S]*?(?=<svg)/, '');
+  const svg = copy.querySelector('svg');
+  svg.setAttribute('width', box.width); svg.setAttribute('height', box.height);
+  dialog.appendChild(copy);
+  const view = {{left: Math.max(pane.left, 0), top: Math.max(pane.top, 0),
+                right: Math.min(pane.right, innerWidth), bottom: Math.min(pane.bottom, innerHeight)}};
+  const labels = [];
+  for (const text of svg.querySelectorAll('text')) {{
+    const style = text.getAttribute('style') || '';
+    if (!/font-size: 12px/.test(style)) continue;
+    const r = text.getBoundingClientRect();
+    labels.push({{text: text.textContent, axis: /text-anchor: middle/.test(style) ? 'time' : 'value',
+                  inside: r.left >= view.left - 0.5 && r.right <= view.right + 0.5 &&
+                          r.top >= view.top - 0.5 && r.bottom <= view.bottom + 0.5}});
+  }}
+  copy.remove();
+  return labels;
+}}"""
+
+
+@pytest.mark.parametrize("size", [PHONE, {"width": 1280, "height": 800}], ids=["390px", "1280px"])
+def test_the_view_opens_with_both_axes_numbers_in_view(browser, base_url, questions, size):
+    """Each graph question's enlarged graph, as it opens: at least two labels of each axis
+    wholly in view (a scale to read by), and every label of both where the whole graph fits in
+    the view. A graph zoomed to read half a small square can be larger than the screen (at 390
+    px all of them; at 1280 × 800 those of 50 or 60 squares up): it opens as near the plot's
+    middle as keeps numbers of both axes in view."""
+    context = browser.new_context(viewport=size)
+    page = context.new_page()
+    out = {}
+    for path, key in questions:
+        if page.url != f"{base_url}/{path}":
+            page.goto(f"{base_url}/{path}", wait_until="load")
+        opener = page.locator(f'section.q[data-q="{key}"] button.q-graph-open')
+        opener.scroll_into_view_if_needed()
+        opener.click()
+        _opened(page, opener)
+        labels = page.evaluate(LABELS_IN_VIEW)
+        time = [label for label in labels if label["axis"] == "time"]
+        value = [label for label in labels if label["axis"] == "value"]
+        assert len(time) >= 2 and len(value) >= 2, f"{key}: no axes' labels found: {labels}"
+        fits = page.evaluate(f"""() => {{ const p = document.querySelector('{VIEW} .q-graph-pane');
+          return p.scrollWidth <= p.clientWidth && p.scrollHeight <= p.clientHeight; }}""")
+        if any(sum(label["inside"] for label in axis) < (len(axis) if fits else 2) for axis in (time, value)):
+            out[key] = [label["text"] for label in labels if not label["inside"]]
+        page.keyboard.press("Escape")
+        page.wait_for_function(f"!({OPEN})")
+    context.close()
+    assert not out, f"labels out of view as the enlarged graph opens at {size['width']} px: {out}"

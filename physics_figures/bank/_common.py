@@ -8,7 +8,7 @@ import re
 from collections.abc import Callable, Sequence
 
 from ..notation import format_number, round_number
-from ..questions import reading_places
+from ..questions import format_reading
 
 #: Every usual form of a unit, for the marker's messages.
 N_S = "N s or kg m s^-1"
@@ -41,8 +41,9 @@ def reading_rule(tolerance: float, unit: str) -> str:
 
 
 def reading(value: float, tolerance: float) -> str:
-    """A value read from a graph, written to the places of its small squares (12.5, 240)."""
-    return format_number(value, decimals=reading_places(tolerance))
+    """A value read from a graph, written to the places of its small squares (12.5, 240), and
+    in powers of ten to at most 3 figures (1.12 × 10⁵)."""
+    return format_reading(value, tolerance)
 
 
 def _figures(value: float, sig_figs: int, in_full_up_to: int) -> tuple[str, float]:

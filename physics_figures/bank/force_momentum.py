@@ -23,6 +23,7 @@ from ..models import (
     velocity_from_momentum,
     weight,
 )
+from ..notation import axis_power, power_text
 from ..notation import format_number as n
 from ..parts.graph import value_axis
 from ..questions import (
@@ -725,6 +726,16 @@ def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 
     gain = velocity_from_momentum(after - before, mass)
     m, p1, p2 = n(mass, 2), reading(before, tolerance), reading(after, tolerance)
     t_end = n(begins + lasts, decimals=1)
+    # an axis of 10⁵ N s and more is labelled in its power of ten ("momentum / 10⁵ N s")
+    power = axis_power(top, division)
+
+    def unscaled(value: float) -> tuple[Mistake, ...]:
+        if not power:
+            return ()
+        return (Mistake("the axis's number without its power of ten", value / 10.0**power,
+                        f"The axis is labelled momentum / {power_text(power)} N s: each number on it stands for "
+                        f"that many {power_text(power)} N s. Multiply your reading by {power_text(power)}."),)
+
     return Question(
         key="graph-lorry-speed-momentum-time",
         text=(f"A lorry of mass {m} kg speeds up along a straight, level road. The graph shows how its "
@@ -733,10 +744,10 @@ def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 
         graph=graph,
         parts=(
             GraphPart("momentum of the lorry at time 0", before, "N s", "momentum", units=_N_S,
-                      tolerance=tolerance, see="momentum",
+                      tolerance=tolerance, see="momentum", mistakes=unscaled(before),
                       revisit="Read the flat part of the line at the start against the momentum axis."),
             GraphPart(f"momentum of the lorry after {t_end} s", after, "N s", "momentum", units=_N_S,
-                      tolerance=tolerance, see="momentum",
+                      tolerance=tolerance, see="momentum", mistakes=unscaled(after),
                       revisit="Read the flat part of the line at the end against the momentum axis."),
             Part(f"speed of the lorry after {t_end} s", speed, "m s^-1", "speed", units=_M_S,
                  shown_sig_figs=2, ecf=Ecf(b_answer / mass_given, {"mass_given": mass}),

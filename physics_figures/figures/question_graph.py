@@ -7,28 +7,38 @@ numbers are the question's; nothing is computed here.
 
 from __future__ import annotations
 
+import functools
+import html
 import itertools
 import math
 import re
+from collections.abc import Callable
 from typing import NamedTuple
 
 import matplotlib as mpl
 from matplotlib.axes import Axes
+from matplotlib.font_manager import FontProperties
 from matplotlib.lines import Line2D
 from matplotlib.markers import TICKDOWN, TICKLEFT
+from matplotlib.textpath import text_to_path
 from matplotlib.ticker import FixedLocator, FuncFormatter
 
-from ..notation import LARGEST_PLAIN, format_number, round_number
+from ..notation import LARGEST_PLAIN, axis_power, format_number, power_text, round_number
 from ..questions import Graph
 from ..style import colour
 from ._text import plain
 from .book_figure import BookFigure
-from .style import GUIDE, MAIN, SHADE, new_axes, styled, unit_label
+from .style import GUIDE, MAIN, SHADE, SMALL_TEXT, book_style, new_axes, styled, unit_label
 
 #: A labelled grid line every 1, 2, 5 or 10 small squares: the first that gives at most
-#: this many labels along an axis.
+#: this many labels along an axis, with room between neighbouring labels.
 _MOST_LABELS = 8
 _LABEL_EVERY = (1, 2, 5, 10)
+#: Points of clear paper between two neighbouring labels, at the least (half a label's size).
+_LABEL_GAP = 6.0
+#: Points between the time axis and its labels: a little more than the book's 3.5, so where the
+#: axes meet the first time label stays clear of the lowest value label.
+_TIME_LABEL_PAD = 5.0
 
 
 #: Inches: about 310 pt of SVG, so 12 pt ticks are >= 11 CSS px in a 320 px wide box.
@@ -44,6 +54,18 @@ class QuestionGraph(NamedTuple):
     line: Line2D
 
 
+class AxisScale(NamedTuple):
+    """How an axis is labelled: a label every ``step`` (SI), each written as value / 10^power
+    to ``places`` decimal places (power 0: the plain value)."""
+
+    step: float
+    power: int
+    places: int
+
+    def text(self, value: float) -> str:
+        return format_number(value / 10.0**self.power, decimals=self.places)
+
+
 def _decimals(step: float) -> int:
     """Decimal places that write every multiple of ``step`` exactly (0.25 -> 2)."""
     for places in range(6):
@@ -53,23 +75,76 @@ def _decimals(step: float) -> int:
     return 6
 
 
-def _label_step(span: float, division: float) -> float:
+def _scale(low: float, high: float, step: float) -> AxisScale:
+    power = axis_power(max(abs(low), abs(high)), step)
+    return AxisScale(step, power, _decimals(step / 10.0**power))
+
+
+@functools.cache
+def _text_size(text: str) -> tuple[float, float]:
+    """Width and height in points of a tick label, as matplotlib lays it out (the height of a
+    line of text, as Text measures it)."""
+    with book_style():
+        prop = FontProperties(size=mpl.rcParams["xtick.labelsize"])
+        width = text_to_path.get_text_width_height_descent(text, prop, ismath=False)[0]
+        height = text_to_path.get_text_width_height_descent("lp", prop, ismath=False)[1]
+    return width, height
+
+
+def _labels(low: float, high: float, scale: AxisScale) -> list[str]:
+    count = round((high - low) / scale.step)
+    return [scale.text(low + i * scale.step) for i in range(count + 1)]
+
+
+def _choose(low: float, high: float, division: float, room: Callable[[AxisScale], float],
+            across: bool) -> AxisScale:
+    """The first labelling, every 1, 2, 5 or 10 small squares, with at most _MOST_LABELS labels
+    whose neighbours leave _LABEL_GAP between them along an axis ``room(scale)`` points long."""
     for every in _LABEL_EVERY:
-        if span / (division * every) <= _MOST_LABELS:
-            return division * every
-    return division * _LABEL_EVERY[-1]
+        scale = _scale(low, high, division * every)
+        labels = _labels(low, high, scale)
+        size = max(_text_size(label)[0 if across else 1] for label in labels)
+        if len(labels) - 1 <= _MOST_LABELS and room(scale) * scale.step / (high - low) >= size + _LABEL_GAP:
+            return scale
+    return _scale(low, high, division * _LABEL_EVERY[-1])
 
 
-def _axis(axis, low: float, high: float, division: float) -> list[float]:
+def axis_scales(graph: Graph) -> tuple[AxisScale, AxisScale]:
+    """(time axis, value axis): where each is labelled and how its labels are written. The plot
+    area's size is worked out from the figure's as the layout leaves it (the labels and pads
+    around it), so the choice is the same wherever the graph is drawn and read."""
+    with book_style():
+        rc = mpl.rcParams
+        pad = 72 * rc["figure.constrained_layout.w_pad"]
+        below = rc["xtick.major.size"] + _TIME_LABEL_PAD  # the time axis's ticks and their labels' pad
+        beside = rc["ytick.major.size"] + rc["ytick.major.pad"]
+        label = 1.2 * rc["axes.labelsize"] + rc["axes.labelpad"]
+    width, height = (72 * side for side in QUESTION_GRAPH_SIZE)
+    line = _text_size("0")[1]
+    # below: the time labels and the axis's label; above: half the top value label
+    value = _choose(graph.value_min, graph.value_max, graph.value_division,
+                    lambda _: height - 2 * pad - line - below - label - line / 2, across=False)
+    widest = max(_text_size(text)[0] for text in _labels(graph.value_min, graph.value_max, value))
+    # left: the value labels and the axis's label; right: half the last time label
+    time = _choose(0.0, graph.time_max, graph.time_division,
+                   lambda scale: (width - 2 * pad - widest - beside - label
+                                  - _text_size(scale.text(graph.time_max))[0] / 2), across=True)
+    return time, value
+
+
+def _axis(axis, low: float, high: float, division: float, scale: AxisScale) -> list[float]:
     """Label every few small squares; return where the other small squares' lines go."""
-    step = _label_step(high - low, division)
-    places = _decimals(step)
-    count = round((high - low) / step)
-    axis.set_major_locator(FixedLocator([low + i * step for i in range(count + 1)]))
-    axis.set_major_formatter(FuncFormatter(lambda value, _: format_number(value, decimals=places)))
-    every = round(step / division)
+    count = round((high - low) / scale.step)
+    axis.set_major_locator(FixedLocator([low + i * scale.step for i in range(count + 1)]))
+    axis.set_major_formatter(FuncFormatter(lambda value, _: scale.text(value)))
+    every = round(scale.step / division)
     first, last = math.ceil(low / division - 1e-9), math.floor(high / division + 1e-9)
     return [k * division for k in range(first, last + 1) if (k - first) % every]
+
+
+def _unit(unit: str, power: int) -> str:
+    """An axis's unit with the power of ten its labels are written in: "10⁵ N s"."""
+    return f"{power_text(power)} {unit}" if power else unit
 
 
 def _small_squares(ax: Axes, across: list[float], up: list[float]) -> None:
@@ -109,8 +184,10 @@ def plot_question_graph(graph: Graph, *, ax: Axes | None = None) -> QuestionGrap
     values = [v for _, v in graph.points]
     ax.set_xlim(0, graph.time_max)
     ax.set_ylim(graph.value_min, graph.value_max)
-    across = _axis(ax.xaxis, 0.0, graph.time_max, graph.time_division)
-    up = _axis(ax.yaxis, graph.value_min, graph.value_max, graph.value_division)
+    time_scale, value_scale = axis_scales(graph)
+    across = _axis(ax.xaxis, 0.0, graph.time_max, graph.time_division, time_scale)
+    up = _axis(ax.yaxis, graph.value_min, graph.value_max, graph.value_division, value_scale)
+    ax.tick_params(axis="x", which="major", pad=_TIME_LABEL_PAD)
     _small_squares(ax, across, up)
     ax.grid(which="major", color=colour("figure.grid-major"), linewidth=0.8)
     ax.set_axisbelow(True)
@@ -120,8 +197,8 @@ def plot_question_graph(graph: Graph, *, ax: Axes | None = None) -> QuestionGrap
     if graph.shaded:
         ax.fill_between(times, values, 0, color=SHADE, alpha=0.35, linewidth=0)
     (line,) = ax.plot(times, values, color=MAIN, zorder=3)
-    ax.set_xlabel(unit_label("time", "s"))
-    ax.set_ylabel(unit_label(graph.quantity, graph.unit))
+    ax.set_xlabel(unit_label("time", _unit("s", time_scale.power)))
+    ax.set_ylabel(unit_label(graph.quantity, _unit(graph.unit, value_scale.power)))
     return QuestionGraph(ax, line)
 
 
@@ -212,25 +289,52 @@ def small_square(svg: str, graph: Graph) -> tuple[float, float]:
 SYMBOLS = {"time": "t", "velocity": "v", "momentum": "p", "force": "F"}
 
 
-def _axis_data(label: str, unit: str, low: float, high: float, division: float) -> dict:
+def _axis_data(label: str, unit: str, low: float, high: float, division: float, scale: AxisScale) -> dict:
+    power = 10.0**scale.power
     return {"symbol": SYMBOLS.get(label, label), "label": label, "unit": unit, "min": low, "max": high,
-            "square": division, "large": _label_step(high - low, division),
-            # places of a reading on a small square's line, and of one half-way between two
-            "places": [_decimals(division), _decimals(division / 2)]}
+            "square": division, "large": scale.step,
+            # the power of ten the axis's labels are written in ("p / 10⁵ N s"), and the places of
+            # a reading in those labels' terms, on a small square's line and half-way between two
+            "power": scale.power, "places": [_decimals(division / power), _decimals(division / 2 / power)]}
+
+
+_TICK_TEXT = re.compile(r'<text style="([^"]*)" x="([-\d.]+)" y="([-\d.]+)"[^>]*>([^<]*)</text>')
+
+
+def _numbers_edges(svg: str) -> list[float]:
+    """Where the axes' numbers end, as fractions of the image: the left edge of the value
+    axis's (over its width) and the foot of the time axis's (over its height). The enlarged
+    view keeps both in sight as it opens (graph-view.js)."""
+    *_, width, height = _plot_area(svg)
+    left, foot = width, 0.0
+    for style, x, y, text in _TICK_TEXT.findall(svg):
+        if f"font-size: {SMALL_TEXT:g}px" not in style:  # a tick label, not an axis's label
+            continue
+        size, line = _text_size(html.unescape(text))
+        if "text-anchor: end" in style:
+            left = min(left, float(x) - size)
+        elif "text-anchor: middle" in style:
+            foot = max(foot, float(y) + 0.25 * line)
+    return [float(round_number(left / width, decimals=5)), float(round_number(foot / height, decimals=5))]
 
 
 def cursor_data(svg: str, graph: Graph) -> dict:
     """What the graph cursor (book/_ext/questions/static/graph-cursor.js) reads: both axes as
-    drawn here (label, unit, ends, small and large square), the line's readings at each half
-    small square of time (Graph.readings: the question's own numbers, to half a small square),
-    and the plot area as fractions of the image's width and height (left, top, right, bottom),
-    where a tap on the enlarged graph is turned into a time."""
+    drawn here (label, unit, ends, small and large square, the power of ten of their labels),
+    the line's readings at each half small square of time (Graph.readings: the question's own
+    numbers, to half a small square, in SI), and the plot area as fractions of the image's
+    width and height (left, top, right, bottom), where a tap on the enlarged graph is turned
+    into a time, and where the axes' numbers end (left of the value axis's, foot of the time
+    axis's), which the enlarged view keeps in sight as it opens."""
     left, top, right, bottom, width, height = _plot_area(svg)
+    time_scale, value_scale = axis_scales(graph)
     return {
-        "time": _axis_data("time", "s", 0.0, graph.time_max, graph.time_division),
-        "value": _axis_data(graph.quantity, graph.unit, graph.value_min, graph.value_max, graph.value_division),
+        "time": _axis_data("time", "s", 0.0, graph.time_max, graph.time_division, time_scale),
+        "value": _axis_data(graph.quantity, graph.unit, graph.value_min, graph.value_max, graph.value_division,
+                            value_scale),
         "readings": list(graph.readings()),
         "area": [float(round_number(side, decimals=5)) for side in (left / width, top / height, right / width, bottom / height)],
+        "numbers": _numbers_edges(svg),
     }
 
 

@@ -1,3 +1,4 @@
+# ruff: noqa: RUF002, RUF003  (typeset text: the times sign in readings written in powers of ten)
 
 """The graph part kind: a value read from the question's graph, right within half a small
 square, and the graph itself. Its browser twin is the numeric marker
@@ -10,7 +11,15 @@ import math
 from dataclasses import dataclass, field
 from typing import ClassVar
 
-from ..notation import round_number
+from ..notation import (
+    LARGEST_PLAIN,
+    SMALLEST_PLAIN,
+    axis_power,
+    format_number,
+    power_text,
+    round_number,
+    unit_text,
+)
 from .common import _require
 from .numeric import Part
 
@@ -23,6 +32,34 @@ def reading_places(tolerance: float) -> int:
         if math.isclose(division * 10**places, round(division * 10**places), abs_tol=1e-9):
             return places
     return 7
+
+
+#: A reading written in powers of ten keeps at most this many figures, as the key's working does
+#: ("1.12 × 10⁵", not the "1.12000 × 10⁵" that the places of a small square of 10 000 would give).
+MOST_POWER_FIGURES = 3
+
+
+def reading_sig_figs(value: float, tolerance: float) -> int:
+    """Significant figures a reading of ``value`` is written to, right within ``tolerance``:
+    down to the places of a small square as a plain number (12.5 on squares of 0.5, 240 on
+    20s); in powers of ten, down to the place of the tolerance's first figure, at most
+    MOST_POWER_FIGURES (1.12 × 10⁵ on squares of 10 000)."""
+    _require(tolerance > 0, "tolerance", tolerance, "must be positive: half a small square")
+    if value == 0:
+        return 1
+    lead = math.floor(math.log10(abs(value)))
+    plain = max(1, lead + 1 + reading_places(tolerance))
+    if SMALLEST_PLAIN <= abs(round_number(value, plain)) < LARGEST_PLAIN:
+        return plain
+    return max(1, min(MOST_POWER_FIGURES, lead - math.floor(math.log10(tolerance)) + 1))
+
+
+def format_reading(value: float, tolerance: float) -> str:
+    """A value read from a graph as the key writes it: 12.5, 240, 0.50, 1.12 × 10⁵."""
+    places = reading_places(tolerance)
+    if value == 0 or SMALLEST_PLAIN <= abs(round_number(value, decimals=places)) < LARGEST_PLAIN:
+        return format_number(value, decimals=places)
+    return format_number(value, reading_sig_figs(value, tolerance))
 
 
 @dataclass(frozen=True)
@@ -38,15 +75,30 @@ class GraphPart(Part):
     def __post_init__(self):
         _require(self.tolerance > 0, "tolerance", self.tolerance,
                  "must be positive: half the smallest grid division of the axis read")
-        # the key prints to the places of a small square (12.5 on squares of 0.5, 240 on 20s)
-        whole_digits = math.floor(math.log10(abs(self.value))) + 1 if self.value else 1
-        object.__setattr__(self, "shown_sig_figs", max(1, whole_digits + reading_places(self.tolerance)))
+        # the key prints to the places of a small square (12.5 on squares of 0.5, 240 on 20s),
+        # and in powers of ten to at most 3 figures (1.12 × 10⁵)
+        object.__setattr__(self, "shown_sig_figs", reading_sig_figs(self.value, self.tolerance))
         super().__post_init__()
 
     @property
     def band(self) -> tuple[float, float]:
         """The readings the marker takes as right."""
         return (self.value - self.tolerance, self.value + self.tolerance)
+
+    def band_text(self) -> str:
+        """The band as the key states it: "81 500 to 86 500"; on an axis labelled in a power of
+        ten, in the axis's own numbers with the power ("1.305 to 1.355, in 10⁵ N s"), never a
+        number of more than 3 figures times a power of ten."""
+        low, high = self.band
+        power = axis_power(max(abs(low), abs(high)), 2 * self.tolerance)
+        if not power:
+            places = reading_places(self.tolerance)
+            return f"{format_number(low, decimals=places)} to {format_number(high, decimals=places)}"
+        scale = 10.0**power
+        places = next(p for p in range(12) if all(
+            math.isclose(end / scale, float(round_number(end / scale, decimals=p)), rel_tol=1e-9) for end in (low, high)))
+        return (f"{format_number(low / scale, decimals=places)} to {format_number(high / scale, decimals=places)}, "
+                f"in {power_text(power)} {unit_text(self.unit)}")
 
     def _accepted(self, value: float) -> bool:
         low, high = self.band

@@ -377,9 +377,7 @@ def accept_note(part) -> str:
     """What the key accepts beside a numeric or graph part's answer (plain text, the PDF key's
     and the sheet builder's): " (accept 2 or more significant figures)", or a reading's band."""
     if part.kind == "graph":
-        low, high = part.band
-        return (f" (read from the graph: accept {format_number(low, decimals=_places(part))} to "
-                f"{format_number(high, decimals=_places(part))})")
+        return f" (read from the graph: accept {part.band_text()})"
     if part.readings:  # worked from readings: what readings within half a small square give
         low, high = part.band
         return (f" (accept {part.min_sig_figs} or more significant figures; from readings of the "
@@ -437,12 +435,6 @@ def _mark_line(label: str, text: str, code: str) -> str:
     if code:
         line += " \\textbf{" + code + "}"
     return line
-
-
-def _places(part) -> int:
-    from ..questions import reading_places
-
-    return reading_places(part.tolerance)
 
 
 def answer_key(sheet: Sheet, version: Version) -> str:

@@ -6,7 +6,9 @@
  * the cursor, "t = 1.5 s, v = 12.5 m s⁻¹", through ONE polite live region: both values to the
  * nearest half small square, what a student with a ruler reads, and no more. In the enlarged
  * view (graph-view.js) a tap or click on the graph moves the cursor there and draws it: a line
- * up from the time axis, one across to the value axis, and the reading above the graph.
+ * up from the time axis, one across to the value axis, and above the graph the reading.
+ * The view writes that reading only on request (Show the reading) or once the question's
+ * parts read off the graph have values typed: a sighted student reads the graph first.
  * New numbers (questions.js) writes the new variant's data-cursor: the cursor starts again. */
 (function (root) {
   "use strict";
@@ -38,7 +40,8 @@
       } catch {
         data = null; // a graph without a cursor's data: the slider says so
       }
-      state = { text: text, data: data, index: null, slider: state ? state.slider : null };
+      // revealed: the student asked for the view's reading of this graph (Show the reading)
+      state = { text: text, data: data, index: null, slider: state ? state.slider : null, revealed: false };
       states.set(opener, state);
     }
     return state;
@@ -53,11 +56,17 @@
   }
 
   /* A value as a ruler gives it: the places of a small square on its lines, of half a square
-   * between them (12 or 12.5 on squares of 1; 1.20 or 1.225 on squares of 0.05). */
+   * between them (12 or 12.5 on squares of 1; 1.20 or 1.225 on squares of 0.05). On an axis
+   * labelled in a power of ten ("p / 10⁵ N s", axis.power 5, places counted in its labels'
+   * numbers) the same figures in the book's notation: 1.15 × 10⁵ N s, 50 000 N s. */
   function written(axis, x) {
     var squares = (x - axis.min) / axis.square;
     var onLine = Math.abs(squares - Math.round(squares)) < 1e-6;
-    return Notation.formatQuantity(x, null, axis.unit, { decimals: axis.places[onLine ? 0 : 1] });
+    var places = axis.places[onLine ? 0 : 1];
+    if (!axis.power) return Notation.formatQuantity(x, null, axis.unit, { decimals: places });
+    if (x === 0) return Notation.formatQuantity(0, 1, axis.unit);
+    var lead = Math.floor(Math.log10(Math.abs(x)) + 1e-9);
+    return Notation.formatQuantity(x, Math.max(1, lead - axis.power + places + 1), axis.unit);
   }
 
   function readingText(data, index) {
@@ -84,7 +93,7 @@
     var text = readingText(data, next);
     if (atEnd) text = (next === 0 ? "Start of the time axis: " : "End of the time axis: ") + text;
     if (state.slider) showOnSlider(state);
-    if (shown && shown.opener === opener) drawMarker(shown.dialog, state);
+    if (shown && shown.opener === opener) drawMarker(shown.dialog, opener);
     announce(text);
   }
 
@@ -149,7 +158,7 @@
     // New numbers writes a new data-cursor: the slider shows the new graph's axis at once
     new MutationObserver(function () {
       showOnSlider(stateOf(opener));
-      if (shown && shown.opener === opener) drawMarker(shown.dialog, stateOf(opener));
+      if (shown && shown.opener === opener) drawMarker(shown.dialog, opener);
     }).observe(opener, { attributes: true, attributeFilter: ["data-cursor"] });
   }
 
@@ -169,19 +178,45 @@
       time: frame.querySelector(".q-graph-marker-time"),
       value: frame.querySelector(".q-graph-marker-value"),
       reading: dialog.querySelector(".q-graph-reading-large"),
+      show: dialog.querySelector(".q-graph-show-reading"),
     };
+  }
+
+  /* The reading is the student's to take: the view writes it only when asked (Show the
+   * reading) or once every part of the question that is read off the graph has a value typed
+   * (a sighted student practises reading to half a square first). */
+  function readingOffered(opener, state) {
+    if (state.revealed) return true;
+    var question = opener.closest("section.q");
+    var typed = question ? question.querySelectorAll('fieldset.q-part[data-kind="graph"] input.q-value') : [];
+    return (
+      typed.length > 0 &&
+      Array.prototype.every.call(typed, function (box) {
+        return box.value.trim() !== "";
+      })
+    );
+  }
+
+  function readingLine(data, state, offered) {
+    if (!data) return "";
+    if (state.index === null) return offered ? "Tap the graph to read it." : "Tap the graph to place the cursor.";
+    if (!offered) return "Read the graph where the cursor crosses it.";
+    return readingText(data, state.index);
   }
 
   function percent(fraction) {
     return fraction * 100 + "%";
   }
 
-  function drawMarker(dialog, state) {
-    var parts = markerParts(dialog),
+  function drawMarker(dialog, opener) {
+    var state = stateOf(opener),
+      parts = markerParts(dialog),
       data = state.data;
     var hide = !data || state.index === null;
+    var offered = !!data && readingOffered(opener, state);
     parts.time.hidden = parts.value.hidden = hide;
-    parts.reading.textContent = hide ? (data ? "Tap the graph to read it." : "") : readingText(data, state.index);
+    parts.reading.textContent = readingLine(data, state, offered);
+    if (parts.show) parts.show.hidden = !data || offered;
     if (hide) return;
     var area = data.area,
       along = state.index / halfSquares(data);
@@ -210,12 +245,22 @@
     moveTo(shown.opener, Math.round(along * halfSquares(state.data)), false);
   }
 
+  /* Show the reading: the view writes the reading at the cursor from now on, for this graph. */
+  function reveal() {
+    if (!shown) return;
+    stateOf(shown.opener).revealed = true;
+    drawMarker(shown.dialog, shown.opener);
+    shown.dialog.querySelector(".q-graph-pane").focus(); // the button is gone: focus stays in the view
+  }
+
   function opened(event) {
     var dialog = event.detail.dialog;
     shown = { opener: event.target, dialog: dialog };
     if (!dialog.hasAttribute("data-cursor-ready")) {
       dialog.setAttribute("data-cursor-ready", "");
       dialog.querySelector(".q-graph-frame").addEventListener("click", tapped);
+      var show = dialog.querySelector(".q-graph-show-reading");
+      if (show) show.addEventListener("click", reveal);
       // the region speaks inside the modal view (the page behind it is inert), then returns
       dialog.addEventListener("close", function () {
         shown = null;
@@ -223,7 +268,7 @@
       });
     }
     dialog.appendChild(liveRegion());
-    drawMarker(dialog, stateOf(event.target));
+    drawMarker(dialog, event.target);
   }
 
   function start() {

@@ -95,9 +95,10 @@ def _checkable(question):
 @pytest.mark.parametrize(("index", "question"), _variants("stokes-terminal-speed"))
 def test_stokes_working_gives_the_printed_answers_from_its_printed_numbers(index, question):
     """Issue 37: (a)'s working printed V to 3 s.f., and ρgV from it gave another third figure than
-    the key in 9 of 20 variants. Each step, worked from its numbers as printed, gives its result."""
+    the key in 9 of 20 variants. Each step, worked from its numbers as printed, gives its result:
+    (a)'s upthrust from the radius (no rounded volume printed) and (b)'s speed."""
     wrong, checked = wrong_steps(_checkable(question))
-    assert checked >= 3 and not wrong, wrong
+    assert checked >= 2 and not wrong, wrong
 
 
 @pytest.mark.parametrize(("index", "question"), _variants("stokes-terminal-speed"))

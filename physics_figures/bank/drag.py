@@ -907,8 +907,10 @@ def stokes_terminal_speed(grams: float = 0.11, radius_mm: float = 1.5, density: 
     the terminal speed (mg = crv_T); 9702/21/M/J/16 Q3(b)(ii) gives a C1 for the working with
     its numbers, then the A1; the upthrust follows sphere-in-liquid (a). Stokes' law holds only in
     creeping flow: a variant whose Reynolds number is not below models.STOKES_REYNOLDS_LIMIT is
-    refused (issue 37: it reached 0.997). The working prints the volume and the upthrust with the
-    figures that give the printed answers (enough_figures), as an examiner checks them."""
+    refused (issue 37: it reached 0.997). The working gives the upthrust from the radius in one line
+    (a volume printed in ×10ⁿ to 3 s.f. moved the third figure, and to 5 s.f. it was a key value with
+    more figures than the book prints), and (b) the upthrust with the figures that give the printed
+    answer (enough_figures), as an examiner checks them."""
     radius, mass = radius_mm / 1000, grams / 1000
     volume = sphere_volume(radius)
     if not _BALL_DENSITY[0] <= mass / volume <= _BALL_DENSITY[1]:
@@ -920,7 +922,6 @@ def stokes_terminal_speed(grams: float = 0.11, radius_mm: float = 1.5, density: 
     stokes_reynolds_number(density, v_t, 2 * radius, viscosity)  # raises when the law does not hold
     w_ = weight(mass)
     gr, r, rho, eta = n(grams, 2), n(radius_mm, 2), n(density, 3), n(viscosity, 2)
-    (vol,) = enough_figures((volume,), lambda v: upthrust(density, v), n(u, 3))
     (u_b,) = enough_figures((u,), lambda u1: (w_ - u1) / k, n(v_t, 2))
     return Question(
         key="stokes-terminal-speed",
@@ -965,8 +966,8 @@ def stokes_terminal_speed(grams: float = 0.11, radius_mm: float = 1.5, density: 
                  ), see="skydiver"),
         ),
         mark_scheme=(
-            Mark(f"V = 4/3 π × ({r} × 10<sup>−3</sup>)<sup>3</sup> = {vol} m<sup>3</sup>; U = ρgV = "
-                 f"{rho} × {n(G_EARTH, 3)} × {vol}", "C1", "a"),
+            Mark(f"U = ρgV with V = 4/3 πr<sup>3</sup>: U = {rho} × {n(G_EARTH, 3)} × 4/3 π × "
+                 f"({r} × 10<sup>−3</sup>)<sup>3</sup>", "C1", "a"),
             Mark(f"= {n(u, 3)} N", "A1", "a"),
             Mark("At terminal speed weight = drag + upthrust: mg = 6πηrv + U", "C1", "b"),
             Mark(f"v = ({n(mass, 2)} × {n(G_EARTH, 3)} − {u_b}) / (6π × {eta} × {r} × 10<sup>−3</sup>)",

@@ -17,11 +17,12 @@ from physics_figures.figures.question_diagram import question_diagram
 from physics_figures.notation import DIGIT_GROUP_SEPARATOR
 from physics_figures.worksheets import latex
 
-#: Every template of the two-dimensional type, and the collisions and explosions along a line
-#: that have no graph to read (a graph template prints its graph).
+#: Every template of the two-dimensional type, and the collisions and explosions along a line,
+#: elastic or not, that have no graph to read (a graph template prints its graph) and give numbers
+#: (collision-energy-explained describes four situations in words, with no numbers to draw).
 DIAGRAMMED = sorted(key for key, template in bank.TEMPLATES.items()
-                    if template.build.__module__.endswith((".two_d", ".momentum_line"))
-                    and template.variant(0).graph is None)
+                    if template.build.__module__.endswith((".two_d", ".momentum_line", ".elastic"))
+                    and template.variant(0).graph is None and template.variant(0).givens)
 
 
 def _numbers(question) -> list[str]:
@@ -33,7 +34,9 @@ def _numbers(question) -> list[str]:
 def test_the_two_dimensional_and_collision_templates_are_the_ones_expected():
     assert {"practice-pucks", "glancing-speed-choice", "explosion-three-pieces", "skaters-stick-right-angles",
             "oblique-wall-bounce", "puck-components", "explosion-two-pieces", "quick-check-2",
-            "practice-trolleys-stick", "practice-spring-apart", "stick-choice", "collision-third-law"} == set(DIAGRAMMED)
+            "practice-trolleys-stick", "practice-spring-apart", "stick-choice", "collision-third-law",
+            "quick-check-4", "elastic-or-not-choice", "stick-energy-choice", "elastic-both-moving",
+            "sticking-energy-lost", "sticking-fraction-lost", "bounce-energy-ratio"} == set(DIAGRAMMED)
 
 
 @pytest.mark.parametrize(("key", "index"), [variant_param(bank.TEMPLATES[key], index, key, index)

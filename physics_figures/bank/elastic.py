@@ -36,6 +36,7 @@ from ..questions import (
     choices_in_order,
 )
 from ..variants import Draw, Template
+from . import diagrams
 from ._common import M_S, PER_S, enough_figures, w
 
 #: A unit for feedback, which the page shows as plain text.
@@ -72,6 +73,7 @@ def light_ball_hits_heavy_ball(m1: float = 1.0, u1: float = 6.0, m2: float = 2.0
               f"{heavy} kg ball at rest. Calculate the velocities of (a) the {light} kg ball and (b) the "
               f"{heavy} kg ball afterwards."),
         givens=(Given("m1", m1, "kg", 2), Given("u1", u1, "m s^-1", 2), Given("m2", m2, "kg", 2)),
+        diagram=diagrams.line(((f"{light} kg", u1), (f"{heavy} kg", 0.0)), (("", None), ("", None))),
         parts=(
             Part(f"velocity of the {light} kg ball", v1, "m s^-1", "velocity", units=M_S, shown_sig_figs=2,
                  direction="signed", positive=forward, revisit=revisit,
@@ -194,6 +196,7 @@ def elastic_or_not_choice(situation: float = 0) -> Question:
         givens=(Given("mass of A", m1, "kg", 2), Given("mass of B", m2, "kg", 2),
                 Given("velocity of A after", abs(v1), "m s^-1", 2),
                 Given("velocity of B after", abs(v2), "m s^-1", 2)),
+        diagram=diagrams.line(((f"{mass_a} kg", u1), (f"{mass_b} kg", u2)), (("", v1), ("", v2))),
         parts=(ChoicePart("Which statement about the collision is correct?", options,
                           OPTION_LETTERS[turn],
                           revisit="Momentum is conserved in every collision. To decide elastic or "
@@ -264,6 +267,7 @@ def stick_energy_choice(m1: float = 2.0, u1: float = 4.0, m2: float = 1.0, speed
               "together."),
         givens=(Given("mass of A", m1, "kg", 2), Given("speed of A", u1, "m s^-1", 2),
                 Given("mass of B", m2, "kg", 2), Given("speed of B", speed2, "m s^-1", 2)),
+        diagram=diagrams.line(((f"{a_mass} kg", u1), (f"{b_mass} kg", u2)), (("", None),)),
         parts=(ChoicePart("How much kinetic energy is transferred to other forms in the collision?",
                           options, answer,
                           revisit="Find the common velocity from momentum (with B's velocity negative), "
@@ -340,6 +344,7 @@ def elastic_both_moving(m1: float = 0.20, u1: float = 3.0, m2: float = 0.30, spe
               "Take A's first direction as positive."),
         givens=(Given("mass of A", m1, "kg", 2), Given("speed of A", u1, "m s^-1", 2),
                 Given("mass of B", m2, "kg", 2), Given("speed of B", speed2, "m s^-1", 2)),
+        diagram=diagrams.line(((f"{ma} kg", u1), (f"{mb} kg", u2)), (("", None), ("", None))),
         parts=(
             Part("relative speed of approach", approach, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
                  revisit="Relative speed is how fast the gap closes: moving towards each other, add the speeds.",
@@ -406,6 +411,7 @@ def sticking_energy_lost(m1: float = 0.80, u1: float = 3.0, m2: float = 1.2) -> 
               "energy transferred to other forms."),
         givens=(Given("mass of A", m1, "kg", 2), Given("speed of A", u1, "m s^-1", 2),
                 Given("mass of B", m2, "kg", 2)),
+        diagram=diagrams.line(((f"{ma} kg", u1), (f"{mb} kg", 0.0)), (("", None),)),
         parts=(
             Part("speed just after the collision", v, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
                  revisit="Momentum is conserved: m₁u₁ = (m₁ + m₂)v, with the mass of both trolleys after.",
@@ -489,6 +495,7 @@ def sticking_fraction_lost(m1: float = 3.0, u1: float = 4.0, m2: float = 1.0) ->
               "forms in the collision. Give (b) as a decimal or as a percentage."),
         givens=(Given("mass of A", m1, "kg", 2), Given("speed of A", u1, "m s^-1", 2),
                 Given("mass of B", m2, "kg", 2)),
+        diagram=diagrams.line(((f"{ma} kg", u1), (f"{mb} kg", 0.0)), (("", None),)),
         parts=(
             Part("speed just after the collision", v, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
                  revisit="Momentum is conserved: m₁u₁ = (m₁ + m₂)v, with the mass of both trolleys after.",
@@ -566,6 +573,7 @@ def bounce_energy_ratio(m1: float = 0.20, u1: float = 3.0, m2: float = 0.60, bac
               "kinetic energy before the collision). Give (b) as a decimal or as a percentage."),
         givens=(Given("mass of A", m1, "kg", 2), Given("speed of A", u1, "m s^-1", 2),
                 Given("mass of B", m2, "kg", 2), Given("speed of A after", back, "m s^-1", 2)),
+        diagram=diagrams.line(((f"{ma} kg", u1), (f"{mb} kg", 0.0)), (("", v1), ("", None))),
         parts=(
             Part("speed of B just after the collision", v2, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
                  revisit="Momentum is conserved, with a sign on every velocity: A bounces back, so its "

@@ -29,10 +29,12 @@ pytestmark = [pytest.mark.site, pytest.mark.browser]
 PHONE = {"width": 390, "height": 844}
 
 # Every image the figure module drew (in a figure, or a file under _images/) except the
-# question graphs, with what a reader's browser finds around it.
+# question graphs and diagrams, with what a reader's browser finds around it. (A question's
+# diagram draws the numbers its text gives, and its alt text says them all:
+# tests/test_question_diagrams.py; a table would repeat the question.)
 FIGURE_FACTS = r"""() => [...document.querySelectorAll('img')]
   .filter(img => img.closest('figure') || /(^|\/)_images\//.test(img.getAttribute('src') || ''))
-  .filter(img => !img.classList.contains('q-graph'))
+  .filter(img => !img.classList.contains('q-graph') && !img.classList.contains('q-diagram'))
   .map(img => {
     const figure = img.closest('figure');
     const id = img.getAttribute('aria-describedby');

@@ -205,6 +205,9 @@ def test_the_precache_lists_every_page_and_what_pages_load_but_no_downloads(site
     assert "searchindex.js" in listed
     assert any(path.startswith("_static/questions/") and path.endswith(".svg") for path in listed)
     assert not [path for path in listed if path.startswith(("pdf/", "teachers/")) or path.endswith((".ttf", ".map", ".zip"))]
+    # the theme's Font Awesome fonts (300 kB gzip) are never loaded: the site's subset is
+    assert not [path for path in listed if "fontawesome/webfonts/" in path]
+    assert "_static/site-assets/icons.woff" in listed
     sw = (site_dir / offline.SERVICE_WORKER).read_text(encoding="utf-8")
     assert all(f'"{path}"' in sw for path in listed)
     assert offline.precache_size(site_dir) <= 2_000_000  # CLARIFICATIONS: at most 2 MB gzip

@@ -23,6 +23,8 @@ _SCALE = 0.36
 _LENGTH = 1.6
 _SPACING = 5.2  # between bodies in a panel: an arrow and its label fit between
 _LEFT, _RIGHT, _HEIGHT = 2.6, 3.6, 2.2  # a panel's reach beyond its first and last bodies, and up and down
+_MIN_WIDTH = 9.0  # a lone body's panel: room for an arrow's label either side
+_HEADROOM = 0.5  # above an arrow's label: a line of text
 _COLOURS = (MAIN, SECOND, INK)
 
 
@@ -75,7 +77,7 @@ def _panel(ax, title: str, bodies: tuple[Body, ...], diagram: Diagram, *, plane:
         _body(ax, index * _SPACING, body, _COLOURS[index % len(_COLOURS)], plane=plane)
     right = (len(bodies) - 1) * _SPACING
     if diagram.wall:
-        ax.plot([right + 3.2, right + 3.2], [-_HEIGHT, _HEIGHT], color=INK, linewidth=4)
+        ax.plot([right + 4.4, right + 4.4], [-_HEIGHT, _HEIGHT], color=INK, linewidth=4)
     if compass:
         for tip, name, where in (((-2.2, 1.9), "N", {"ha": "center", "va": "bottom"}),
                                  ((-1.5, 1.2), "E", {"ha": "left", "va": "center"})):
@@ -84,7 +86,7 @@ def _panel(ax, title: str, bodies: tuple[Body, ...], diagram: Diagram, *, plane:
                     fontsize=SMALL_TEXT, color=GUIDE, **where)
     ax.set_title(title, fontsize=SMALL_TEXT, color=INK)
     ax.set_xlim(-_LEFT, right + _RIGHT)
-    ax.set_ylim(-_HEIGHT, _HEIGHT)
+    ax.set_ylim(-_HEIGHT, _HEIGHT + _HEADROOM)  # an upward arrow's label stays under the title
     ax.set_aspect("equal")
     ax.set_axis_off()
 
@@ -92,13 +94,18 @@ def _panel(ax, title: str, bodies: tuple[Body, ...], diagram: Diagram, *, plane:
 @styled
 def plot_question_diagram(diagram: Diagram) -> Figure:
     panels = [(title, bodies) for title, bodies in (("Before", diagram.before), ("After", diagram.after)) if bodies]
-    widths = [_LEFT + _RIGHT + (len(bodies) - 1) * _SPACING for _, bodies in panels]
-    figure = Figure(figsize=(sum(widths) * _SCALE, 2 * _HEIGHT * _SCALE + 0.5), layout="constrained")
+    # Before above After, not side by side: narrow enough that a phone shows its text at 11 px or
+    # more (tests/test_reading_browser.py), the panels sharing one scale.
+    width = max(_MIN_WIDTH, *(_LEFT + _RIGHT + (len(bodies) - 1) * _SPACING for _, bodies in panels))
+    figure = Figure(figsize=(width * _SCALE, len(panels) * ((2 * _HEIGHT + _HEADROOM) * _SCALE + 0.3)), layout="constrained")
     plane = diagram.compass or diagram.wall or any(
         a.direction % 180 for b in (*diagram.before, *diagram.after) for a in b.arrows)
-    axes = figure.subplots(1, len(panels), squeeze=False, width_ratios=widths)[0]
+    axes = figure.subplots(len(panels), 1, squeeze=False)[:, 0]
     for index, (ax, (title, bodies)) in enumerate(zip(axes, panels, strict=True)):
         _panel(ax, title, bodies, diagram, plane=plane, compass=diagram.compass and index == 0)
+        # one width, so one scale for both panels, each panel's bodies centred in it
+        pad = (width - (_LEFT + _RIGHT + (len(bodies) - 1) * _SPACING)) / 2
+        ax.set_xlim(-_LEFT - pad, (len(bodies) - 1) * _SPACING + _RIGHT + pad)
     return figure
 
 

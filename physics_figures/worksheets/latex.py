@@ -448,8 +448,12 @@ def answer_key(sheet: Sheet, version: Version) -> str:
     for number, item in enumerate(version.items, start=1):
         question = item.question
         body.append(f"\\question{{{number}}}{{\\sffamily\\bfseries {tex(item.template.title)}}} "
-                    f"{{\\small ({tex(item.template.key)}, variant {item.variant})}} \\hfill "
-                    f"\\mbox{{\\textbf{{[{_marks(question.marks)}]}}}}\\par")
+                    f"{{\\small ({tex(item.template.key)}, variant {item.variant})}}"
+                    # the marks flush right, on the next line when the title leaves no room (TeXbook
+                    # p. 106), never split and never into the margin
+                    "\\unskip\\nobreak\\hfil\\penalty50\\hskip1em\\hbox{}\\nobreak\\hfil"
+                    f"\\mbox{{\\textbf{{[{_marks(question.marks)}]}}}}"
+                    "{\\parfillskip=0pt\\finalhyphendemerits=0\\par}")
         body.append("{\\small " + rich(question.text) + "}")
         for index, marks in enumerate(part_marks(question)):
             body.append("\\par\\needspace{3\\baselineskip}" + "\n\n".join(_key_part(question, index, marks)))

@@ -44,7 +44,9 @@ ICONS = {192: "_static/offline/icon-192.png", 512: "_static/offline/icon-512.png
 THEME_COLOUR = colour("manifest.theme")
 BACKGROUND = colour("manifest.background")
 #: Downloads and fallbacks no page needs offline.
-NOT_PRECACHED = re.compile(r"^pdf/|^teachers/|\.ttf$|\.map$|\.zip$")
+# (and the theme's Font Awesome fonts, 300 kB: its stylesheet names them, but the site's own subset,
+# site_assets/icons.woff, declared after it, is the one every page loads)
+NOT_PRECACHED = re.compile(r"^pdf/|^teachers/|\.ttf$|\.map$|\.zip$|^_static/vendor/fontawesome/webfonts/")
 #: Loaded by script on demand: New numbers' variants and graphs, the search index.
 ON_DEMAND = ("_static/questions/", "searchindex.js")
 _REFERENCE = re.compile(r'(?:src|href)="([^"#?]+)')

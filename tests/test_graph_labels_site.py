@@ -120,8 +120,8 @@ def site_graphs(site_dir: Path) -> dict[str, str]:
 
 
 def builder_graphs(site_dir: Path) -> dict[str, str]:
-    """The sheet builder's graphs: every inline SVG in its data that is a question graph (drawn on
-    graph paper, q-graph-small-squares; a question's diagram is not one)."""
+    """The sheet builder's graphs: every inline SVG in its data that is a question graph (a
+    question's diagram, whose label starts "Diagram.", is not one)."""
     script = (site_dir / "teachers" / "sheet-data.js").read_text(encoding="utf-8")
     data = json.loads(script[script.index("{"):script.rindex("}") + 1])
     found, stack = {}, [data]
@@ -133,7 +133,7 @@ def builder_graphs(site_dir: Path) -> dict[str, str]:
             stack += item
         elif isinstance(item, str) and "<svg" in item:
             for number, svg in enumerate(re.findall(r"<svg\b.*?</svg>", item, re.DOTALL)):
-                if "q-graph-small-squares" in svg and all(tick_labels(svg)):
+                if 'aria-label="Diagram.' not in svg and all(tick_labels(svg)):
                     found[f"sheet-data graph {len(found)}.{number}"] = svg
     return found
 

@@ -23,6 +23,8 @@ _SCALE = 0.36
 _LENGTH = 1.6
 _SPACING = 5.2  # between bodies in a panel: an arrow and its label fit between
 _LEFT, _RIGHT, _HEIGHT = 2.6, 3.6, 2.2  # a panel's reach beyond its first and last bodies, and up and down
+#: At most this wide: a phone shows it about 315 px wide, so its 12 pt text stays at 11 px or more.
+_MAX_INCHES = 4.2
 _MIN_WIDTH = 9.0  # a lone body's panel: room for an arrow's label either side
 _HEADROOM = 0.5  # above an arrow's label: a line of text
 _COLOURS = (MAIN, SECOND, INK)
@@ -97,7 +99,8 @@ def plot_question_diagram(diagram: Diagram) -> Figure:
     # Before above After, not side by side: narrow enough that a phone shows its text at 11 px or
     # more (tests/test_reading_browser.py), the panels sharing one scale.
     width = max(_MIN_WIDTH, *(_LEFT + _RIGHT + (len(bodies) - 1) * _SPACING for _, bodies in panels))
-    figure = Figure(figsize=(width * _SCALE, len(panels) * ((2 * _HEIGHT + _HEADROOM) * _SCALE + 0.3)), layout="constrained")
+    scale = min(_SCALE, _MAX_INCHES / width)  # three bodies abreast: the same inches, text relatively larger
+    figure = Figure(figsize=(width * scale, len(panels) * ((2 * _HEIGHT + _HEADROOM) * scale + 0.3)), layout="constrained")
     plane = diagram.compass or diagram.wall or any(
         a.direction % 180 for b in (*diagram.before, *diagram.after) for a in b.arrows)
     axes = figure.subplots(len(panels), 1, squeeze=False)[:, 0]

@@ -255,7 +255,9 @@ def question_sheet(sheet: Sheet, version: Version) -> str:
         keep = question.parts[0].kind == "mcq"
         start = [f"\\question{{{number}}}{rich(question.text)}"]
         if question.graph is not None or question.diagram is not None:
-            start.append("\\par\\begin{center}\\includegraphics[width=0.78\\linewidth]{"
+            # a graph to read is wide; a diagram (Before above After) needs less than half the line
+            size = "0.78" if question.graph is not None else "0.42"
+            start.append(f"\\par\\begin{{center}}\\includegraphics[width={size}\\linewidth]{{"
                          + _graph_file(number) + "}\\end{center}")
         parts = [_part(question, index, marks) for index, marks in enumerate(part_marks(question))]
         if keep:

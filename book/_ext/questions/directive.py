@@ -233,12 +233,9 @@ def cursor_text(svg: Path, graph) -> str:
     return json.dumps(cursor_data(svg.read_text(encoding="utf-8"), graph), ensure_ascii=False, separators=(",", ":"))
 
 
-def write_graph(folder: Path, name: str, graph, *, formats: tuple[str, ...]):
-    """Draw a question's graph into folder/name.<format>, rewriting a file only when its
-    bytes change (so an unchanged graph is not copied again). Returns the BookFigure."""
-    from physics_figures.figures.question_graph import question_graph
-
-    drawn = question_graph(graph)
+def _write_figure(folder: Path, name: str, drawn, formats: tuple[str, ...]):
+    """Write a drawn question figure into folder/name.<format>, rewriting a file only when its
+    bytes change (so an unchanged figure is not copied again). Returns the BookFigure."""
     folder.mkdir(parents=True, exist_ok=True)
     for extension in formats:
         content = drawn.svg().encode() if extension == "svg" else drawn.pdf()
@@ -249,6 +246,12 @@ def write_graph(folder: Path, name: str, graph, *, formats: tuple[str, ...]):
     return drawn
 
 
+def write_graph(folder: Path, name: str, graph, *, formats: tuple[str, ...]):
+    """Draw a question's graph into folder/name.<format> (see _write_figure)."""
+    from physics_figures.figures.question_graph import question_graph
+
+    return _write_figure(folder, name, question_graph(graph), formats)
+
 
 def diagram_name(key: str, index: int) -> str:
     """A variant's diagram's file name, without its extension."""
@@ -256,16 +259,8 @@ def diagram_name(key: str, index: int) -> str:
 
 
 def write_diagram(folder: Path, name: str, diagram, *, formats: tuple[str, ...]):
-    """Draw a question's diagram into folder/name.<format> (physics_figures.figures.question_diagram),
-    rewriting a file only when its bytes change. Returns the BookFigure."""
+    """Draw a question's diagram into folder/name.<format> (physics_figures.figures.question_diagram;
+    see _write_figure)."""
     from physics_figures.figures.question_diagram import question_diagram
 
-    drawn = question_diagram(diagram)
-    folder.mkdir(parents=True, exist_ok=True)
-    for extension in formats:
-        content = drawn.svg().encode() if extension == "svg" else drawn.pdf()
-        path = folder / f"{name}.{extension}"
-        if not path.exists() or path.read_bytes() != content:
-            path.write_bytes(content)
-    drawn.figure.clear()
-    return drawn
+    return _write_figure(folder, name, question_diagram(diagram), formats)

@@ -48,14 +48,19 @@ def split_choices(pages: list[str], versions: list[Version]) -> list[str]:
     split, cursor = [], 0
     for version in versions:
         for number, item in enumerate(version.items, start=1):
+            # each question from where it starts, past the one before: two questions can open with
+            # the same letters (digits are not letters: "puck A of mass 0.60 kg" and "… 0.30 kg")
+            start = text.find(_stem(item.question, 0), cursor)
+            cursor = max(cursor, start)
             for index, part in enumerate(item.question.parts):
                 if part.kind != "mcq":
                     continue
-                stem = text.find(_stem(item.question, index), cursor)
+                stem = start if index == 0 else text.find(_stem(item.question, index), cursor)
                 answer = text.find(ANSWER_LINE, max(stem, 0))
                 assert stem >= 0 and answer >= 0, (version.letter, number, item.template.key, _stem(item.question, index))
                 if page_of(stem) != page_of(answer):
                     split.append(f"version {version.letter}, question {number} ({item.template.key}): stem on page "
                                  f"{page_of(stem)}, answer line on page {page_of(answer)}")
                 cursor = answer + len(ANSWER_LINE)
+            cursor = max(cursor, start + 1)
     return split

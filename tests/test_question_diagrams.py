@@ -58,7 +58,7 @@ def test_the_printed_sheet_includes_each_question_s_diagram():
     version = Version("A", (Item(bank.TEMPLATES["puck-components"], 1),))
     files = latex.graphs(version)
     assert list(files) == ["graph-1.pdf"] and files["graph-1.pdf"].startswith(b"%PDF")
-    assert "\\includegraphics[width=0.78\\linewidth]{graph-1.pdf}" in latex.question_sheet(
+    assert "\\includegraphics[width=0.42\\linewidth]{graph-1.pdf}" in latex.question_sheet(
         latex.Sheet("s", "S", 1, (version,)), version)
 
 

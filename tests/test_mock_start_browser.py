@@ -10,7 +10,7 @@
 from __future__ import annotations
 
 import pytest
-from test_mock_test_browser import KEPT, PAGE, answer, right, start, variants
+from test_mock_test_browser import KEPT, PAGE, answer, right, start, three_sf, variants
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
@@ -53,7 +53,7 @@ def test_a_mock_tests_mistakes_are_kept_and_the_plan_counts_them(student, base_u
         given[named] = right(shown[named])
         mistake = next(m for m in shown[named]["parts"][0]["mistakes"] if m["unit"] is None and m["direction"] is None)
         value = mistake["value"] if shown[named]["parts"][0]["direction"] == "signed" else abs(mistake["value"])
-        given[named]["a"]["value"] = format(value, ".3g")
+        given[named]["a"]["value"] = three_sf(value)
     for index, answers in given.items():
         answer(page, index, answers)
     page.locator(".mock-bar .mock-finish").click()

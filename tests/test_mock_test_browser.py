@@ -86,6 +86,12 @@ def time_left(page, test: dict, gone_ms: int = 0) -> int:
     return shown
 
 
+def three_sf(value: float) -> str:
+    """A value as a student working to 3 s.f. writes it, zeros kept ("0.300", not "0.3": the
+    engine reads "0.3" as 1 s.f., and names no mistake and gives no A1 from a 1 s.f. answer)."""
+    return format(value, "#.3g").rstrip(".")
+
+
 def right(variant: dict) -> dict:
     """Each part answered from the variant's own key (3 s.f., its unit and direction)."""
     out = {}
@@ -94,7 +100,7 @@ def right(variant: dict) -> dict:
             out[part["id"]] = {"choice": part["answer"]}
         else:
             direction = part["answerDirection"] if part["direction"] == "choice" else ""
-            out[part["id"]] = {"value": format(part["value"], ".3g"), "unit": part["unit"], "direction": direction}
+            out[part["id"]] = {"value": three_sf(part["value"]), "unit": part["unit"], "direction": direction}
     return out
 
 
@@ -104,7 +110,7 @@ def wrong(variant: dict) -> dict:
         if part["kind"] == "mcq":
             out[part["id"]] = {"choice": next(o["letter"] for o in part["options"] if o["letter"] != part["answer"])}
         else:
-            out[part["id"]] = {"value": format(part["value"] * 7.3, ".3g"), "unit": part["unit"], "direction": ""}
+            out[part["id"]] = {"value": three_sf(part["value"] * 7.3), "unit": part["unit"], "direction": ""}
     return out
 
 

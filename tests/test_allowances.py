@@ -278,3 +278,27 @@ def test_a_wrong_direction_is_not_read_as_the_g_equals_10_slip():
     assert g_ten["mistake"] == "used g = 10 m s⁻²" and marked[1]["marks"]["byPart"]["b"] == [2, 3]
     # Moodle's number box takes 12 as right; the direction box alone loses its mark
     assert _moodle_grade(question, 1, 12.0) == 100.0
+
+
+# ------------------------------------------------------------------ M1 A1 in a numeric part
+
+
+def test_a_mistake_cannot_keep_an_a1_whose_m1_it_loses():
+    """9702/23/O/N/17 Q3(b)(iii): "[both M1 marks required to award this mark] A1". A named
+    mistake that keeps the answer's line and loses the method's is refused on a part whose
+    scheme codes M1 A1, and stands where the method's line is a C1 (no dependence)."""
+    from physics_figures.questions import Mark
+
+    question = bank.TEMPLATES["practice-wall-bounce"].build(**BOUNCE_25)
+    part = question.parts[1]
+    odd = Mistake("half the change", part.value / 2, "Half.", keeps=("answer", "direction"), credited=C1_RULE)
+    stated = dataclasses.replace(part, asks="state", mistakes=(*part.mistakes, odd))
+    scheme = tuple(Mark(m.text, "M1", m.part) if m.part == "b" and m.code == "C1" else m for m in question.mark_scheme)
+    try:
+        dataclasses.replace(question, parts=(question.parts[0], stated), mark_scheme=scheme)
+    except ValueError as error:
+        assert "M1" in str(error) and "half the change" in str(error)
+    else:
+        raise AssertionError("a mistake kept the A1 without its M1")
+    # with C1 (no dependence) the same declaration stands
+    dataclasses.replace(question, parts=(question.parts[0], dataclasses.replace(part, mistakes=(*part.mistakes, odd))))

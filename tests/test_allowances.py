@@ -208,6 +208,7 @@ def test_a_named_mistake_keeps_the_c1_its_scheme_credits_on_the_site_the_key_and
         assert "9702/22/M/J/25 Q4(b)(i)" in rows[mistake.name].feedback
         # Moodle's number box (its direction box gives the B1): the C1 of C1 A1
         assert _moodle_grade(question, 0, float(typed(mistake.value)), direction_box=1) == 50.0
+        assert any("9702/22/M/J/25 Q4(b)(i)" in feedback for *_, feedback in graded_answers(question, 0))
 
 
 def test_keeps_needs_the_paper_that_credits_it():

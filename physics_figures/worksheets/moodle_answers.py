@@ -132,7 +132,8 @@ def graded_answers(question: Question, index: int, *, direction_box: int = 0) ->
         return grade(max(0, earned), len(lines) - direction_box)
 
     size = (lambda v: v) if part.direction == "signed" else abs
-    wrong = [(size(m.value), kept(m.loses), f"{m.name[:1].upper()}{m.name[1:]}. {m.feedback}")
+    wrong = [(size(m.value), kept(m.loses), f"{m.name[:1].upper()}{m.name[1:]}. {m.feedback}"
+              + (f" The scheme credits this working ({m.credited})." if m.credited else ""))
              for m in part.mistakes if m.unit is None and m.direction is None]
     if part.g_nine_eight is not None:
         wrong.append((part.g_nine_eight, kept(losses["g-9.8"]),

@@ -160,6 +160,7 @@ class Question:
         self._check_mark_codes()
         self._check_ecf()
         self._check_direction_lines()
+        self._check_dependent_a1()
         if self.text:
             textformat.parse(self.text)  # raises ValueError naming a bad tag
 
@@ -183,6 +184,17 @@ class Question:
                 part = self.parts[self.part_ids.index(self.owner(mark))]
                 _require(part.direction != "none", "earns", mark.earns,
                          f"'direction' needs a part that asks for a direction ({self.key}: {mark.text!r})")
+
+    def _check_dependent_a1(self) -> None:
+        """9702's M1 A1: the A1 needs the M1 before it (marking_rules.json, "dependent-a1"), so a
+        named mistake of a part with an M1 may not keep the answer's line and lose the method's."""
+        for part_id, part in zip(self.part_ids, self.parts, strict=True):
+            if not any(m.code == "M1" and self.owner(m) == part_id for m in self.mark_scheme if m.code):
+                continue
+            for mistake in getattr(part, "mistakes", ()):
+                _require(not ("method" in mistake.loses and "answer" not in mistake.loses), "keeps",
+                         mistake.keeps, f"keeps the A1 without the M1 it depends on ({self.key} ({part_id}): "
+                                        f"{mistake.name})")
 
     def owner(self, mark: Mark) -> str:
         """The part whose marks a line counts in. A line of two parts ("(a, b) C1 C1") goes to
@@ -247,7 +259,7 @@ class Question:
             value = method.evaluate({u: float(printed[u]) for u in method.uses})
             value = value if part.direction == "signed" else abs(value)
             typed = number(value, part.check_sig_figs)
-            if part._accepted(value) or part._named(value) or typed in found:
+            if part._accepted(value) or part._named(value) or part._allowed(value) or typed in found:
                 continue
             found[typed] = Alternative(value, "the value the scheme's working gives from the "
                                               "earlier answers as printed")

@@ -630,52 +630,64 @@ car_mass_symbol = sympy.Symbol("car_mass")
 _HARDEST_BRAKING = 6.5
 
 
-def stopping_force_from_distance(mass: float = 1500.0, speed: float = 20.0, distance: float = 50.0) -> Question:
+def stopping_force_from_distance(mass: float = 1500.0, speed: float = 20.0, distance: float = 50.0,
+                                 body: float = 0) -> Question:
     """The stopping force from a distance: the deceleration from v² = u² + 2as, then F = ma
     (notes, How to do it 1., "Stopping distance with a constant force"; 9702/21/M/J/24 Q3 asks
     for a stopping force). The scheme's lines follow 9702/21/M/J/16 Q2(b) ("v² = u² + 2as and
     v = 0 C1 … A1") and, for the force worked from the student's own a, 9702/21/M/J/18 Q2(b)(iii)
-    (C1 for F = ma with the candidate's own a, then A1)."""
+    (C1 for F = ma with the candidate's own a, then A1).
+
+    body: 0 for a car braking on a road (the variants), 1 for an object brought to rest by a constant
+    force, as 9702/21/M/J/24 Q3(c) sets it (4.2 kg at 6.0 m s⁻¹ stopped in 0.050 m: 360 m s⁻²). Only
+    a car's tyres cap the deceleration."""
+    car = int(body) == 0
+    noun, force_name = ("car", "average braking force") if car else ("object", "stopping force")
     deceleration = -acceleration_from_distance(speed, 0.0, distance)
-    if deceleration > _HARDEST_BRAKING:
+    if car and deceleration > _HARDEST_BRAKING:
         raise ValueError(f"distance must let the car stop at no more than {_HARDEST_BRAKING} m s^-2, as hard as "
-                         f"tyres brake on a dry road (got distance={distance!r} m: {n(deceleration, 2)} m s^-2)")
-    force = mass * deceleration  # F = ma with the car's mass: the resultant (braking) force
+                         f"tyres brake on a dry road (got distance={distance!r} m: {n(deceleration, 2)} m s^-2; "
+                         "body=1 poses an object stopped by a constant force, with no such cap)")
+    force = mass * deceleration  # F = ma with the body's mass: the resultant (stopping) force
     m, u, s = n(mass, 2), n(speed, 2), n(distance, 2)
+    text = (f"A car of mass {m} kg is travelling at {u} {PER_S} along a straight, level road. The "
+            f"driver brakes and the car stops in a distance of {s} m, with a constant deceleration. "
+            "Calculate (a) the deceleration of the car and (b) the average braking force on it "
+            "(the resultant force).") if car else (
+            f"An object of mass {m} kg moves in a straight line at a speed of {u} {PER_S}. A constant force "
+            f"brings it to rest in a distance of {s} m. Calculate (a) the deceleration of the object and "
+            "(b) the magnitude of the force.")
     return Question(
         key="stopping-force-distance",
-        text=(f"A car of mass {m} kg is travelling at {u} {PER_S} along a straight, level road. The "
-              f"driver brakes and the car stops in a distance of {s} m, with a constant deceleration. "
-              "Calculate (a) the deceleration of the car and (b) the average braking force on it "
-              "(the resultant force)."),
+        text=text,
         givens=(Given("mass", mass, "kg", 2), Given("speed", speed, "m s^-1", 2),
                 Given("stopping distance", distance, "m", 2)),
         parts=(
-            Part("deceleration of the car", deceleration, "m s^-2", "acceleration", units=M_S2,
-                 shown_sig_figs=2, sign_means="the acceleration is against the motion: the car slows down",
-                 revisit="The car stops, so v = 0: v² = u² + 2as gives a = −u² / 2s. The deceleration is "
+            Part(f"deceleration of the {noun}", deceleration, "m s^-2", "acceleration", units=M_S2,
+                 shown_sig_figs=2, sign_means=f"the acceleration is against the motion: the {noun} slows down",
+                 revisit=f"The {noun} stops, so v = 0: v² = u² + 2as gives a = −u² / 2s. The deceleration is "
                          "its size.",
                  mistakes=(
                      Mistake("forgot to square the speed", speed / (2 * distance),
                              f"You used u instead of u². The equation is v² = u² + 2as: "
                              f"0 = {u}² − 2 × a × {s}."),
                      Mistake("time taken as distance ÷ speed", speed**2 / distance,
-                             f"You took the time to stop as {s} / {u}, as if the car kept its speed "
+                             f"You took the time to stop as {s} / {u}, as if the {noun} kept its speed "
                              "(or left out the 2 in 2as). It slows down all the way: use v² = u² + 2as, "
                              "a = u² / 2s."),
                  ), see="second-law"),
-            Part("average braking force", force, "N", "force", shown_sig_figs=2,
+            Part(force_name, force, "N", "force", shown_sig_figs=2,
                  working=(Step("deceleration", deceleration, "m s^-2", 2),),
                  answer_from=lambda a: mass * a,
                  ecf=Ecf(car_mass_symbol * a_answer, {"car_mass": mass}),
-                 revisit="The braking force is the resultant force: F = ma, with the car's mass and its "
+                 revisit=f"The {force_name.removeprefix('average ')} is the resultant force: F = ma, with the {noun}'s mass and its "
                          "deceleration (or, by work done, F s = ½mu²).",
                  mistakes=(
                      Mistake("the ½ left out of the kinetic energy", mass * speed**2 / distance,
                              f"You used F s = mu². The kinetic energy the brakes remove is ½mu²: "
                              f"F × {s} = ½ × {m} × {u}²."),
                      Mistake("kinetic energy given", kinetic_energy(mass, speed),
-                             "That is the car's kinetic energy, ½mu², in J. The force is that energy ÷ "
+                             f"That is the {noun}'s kinetic energy, ½mu², in J. The force is that energy ÷ "
                              "the distance, or ma.", unit="J", see="kinetic-energy"),
                  ), see="second-law"),
         ),

@@ -51,3 +51,24 @@ def test_the_collision_can_ask_the_force_on_the_body_that_stops():
     assert force.value == pytest.approx(0.24 * 16 / 0.0020)
     assert force.answer_direction == "to the left"
     assert {m.direction for m in force.mistakes if m.name == "the force on B"} == {"to the right"}
+
+
+ROCKET = bank.TEMPLATES["rocket-lift-off"]
+
+
+def test_the_rocket_prints_its_givens_to_the_figures_they_are_stated_to():
+    """A mass stated to 3 s.f. printed to 2 (0.247 kg as 0.25) gives a key the printed text does not."""
+    question = ROCKET.build(mass=0.247, thrust=16)
+    assert "mass 0.247 kg" in question.text and "thrust of 16 N" in question.text
+    assert [given.text for given in question.givens] == ["0.247", "16"]
+    assert ROCKET.variant(0).givens[0].text == "0.60"  # the variants' givens are stated to 2 s.f., as before
+
+
+def test_the_rocket_can_ask_its_mass_from_its_thrust_and_acceleration():
+    """9702/23/O/N/22 Q2(a)(iii): thrust 16 N, acceleration 55 m s⁻², so m = 16 / (55 + 9.81) = 0.25 kg [2]."""
+    question = ROCKET.build(thrust=16, lift_off_acceleration=55)
+    (mass,) = question.parts
+    assert mass.value == pytest.approx(16 / (55 + 9.81))
+    assert "thrust of 16 N" in question.text and "55 m s" in question.text
+    assert question.part_marks() == [2]
+    assert "used g = 10 m s⁻²" in {mistake.name for mistake in mass.mistakes}

@@ -32,6 +32,16 @@ def w(value: float) -> str:
     return format_number(value, 3)
 
 
+def stated_figures(value: float, least: int = 2, most: int = 4) -> int:
+    """The significant figures a given is stated to: the fewest, from ``least``, that print it
+    exactly (a paper's 0.247 kg is stated to 3, a drawn 0.65 kg to 2), at most ``most``. A given
+    printed to fewer figures than it has would make the printed text give another answer."""
+    for sig_figs in range(least, most + 1):
+        if math.isclose(float(round_number(value, sig_figs)), value, rel_tol=1e-9, abs_tol=1e-12):
+            return sig_figs
+    return most
+
+
 def reading_rule(tolerance: float, unit: str) -> str:
     """What a graph question says about its readings (text format): the marker accepts half
     a small square either way."""

@@ -32,7 +32,7 @@ from ..questions import (
     choices_in_order,
 )
 from ..variants import Draw, Template
-from ._common import M_S2, PER_S, PER_S2, enough_figures, w
+from ._common import M_S2, PER_S, PER_S2, enough_figures, stated_figures, w
 
 a_answer, trailer_mass_symbol, trailer_resistance_symbol = sympy.symbols("a trailer_mass trailer_resistance")
 hanging_mass_symbol, gravity_symbol = sympy.symbols("hanging_mass gravity")
@@ -471,22 +471,64 @@ def block_and_hanging_mass(block_mass: float = 1.2, hanging_mass: float = 0.60,
     )
 
 
-def rocket_lift_off(mass: float = 0.60, thrust: float = 9.0) -> Question:
+def _rocket_mass(thrust: float, lift_off_acceleration: float) -> Question:
+    """The rocket's mass from its thrust and its acceleration: T - mg = ma, so m = T / (a + g), as
+    9702/23/O/N/22 Q2(a)(iii) asks it (thrust 16 N, acceleration 55 m s⁻², [2])."""
+    if lift_off_acceleration <= 0:
+        raise ValueError(f"lift_off_acceleration must be upwards, above zero, for the rocket to lift off "
+                         f"(got lift_off_acceleration={lift_off_acceleration!r})")
+    mass = thrust / (lift_off_acceleration + G_EARTH)
+    t, a = n(thrust, stated_figures(thrust)), n(lift_off_acceleration, stated_figures(lift_off_acceleration))
+    g = n(G_EARTH, 3)
+    return Question(
+        key="rocket-lift-off",
+        text=(f"A model rocket lifts off from its launch pad. Its engine gives an upward thrust of {t} N and "
+              f"it accelerates upwards at {a} {PER_S2}. Air resistance is negligible. Calculate the mass "
+              "of the rocket."),
+        givens=(Given("thrust", thrust, "N", stated_figures(thrust)),
+                Given("acceleration", lift_off_acceleration, "m s^-2", stated_figures(lift_off_acceleration))),
+        parts=(
+            Part("mass of the rocket", mass, "kg", "mass", shown_sig_figs=2,
+                 answer_for_g=lambda g_: thrust / (lift_off_acceleration + g_),
+                 revisit="The resultant force is the thrust less the weight: T − mg = ma, so m = T / (a + g).",
+                 mistakes=(
+                     Mistake("weight left out", thrust / lift_off_acceleration,
+                             f"You used the thrust as the resultant force. The weight acts downwards as well: "
+                             f"{t} − m × {g} = m × {a}."),
+                     Mistake("weight added", thrust / (lift_off_acceleration - G_EARTH),
+                             "You added the weight to the thrust. They act in opposite directions: "
+                             "resultant = thrust − weight."),
+                 ), see="weight"),
+        ),
+        mark_scheme=(
+            Mark(f"T − mg = ma: {t} − m × {g} = m × {a}", "C1", "a"),
+            Mark(f"m = {t} / ({a} + {g}) = {n(mass, 2)} kg", "A1", "a"),
+        ),
+    )
+
+
+def rocket_lift_off(mass: float = 0.60, thrust: float = 9.0, lift_off_acceleration: float = 0) -> Question:
     """A model rocket at lift-off: weight, then thrust - weight = ma (notes: rockets and lifts),
-    with (b) carried forward from (a)."""
+    with (b) carried forward from (a). Givens print to the figures they are stated to.
+
+    lift_off_acceleration: 0 (the variants) gives the mass and asks the acceleration; a value asks
+    the mass from the thrust and that acceleration instead (_rocket_mass), as a paper does."""
+    if lift_off_acceleration:
+        return _rocket_mass(thrust, lift_off_acceleration)
     rocket_weight = weight(mass)
     if thrust <= rocket_weight:
         raise ValueError(f"thrust must exceed the weight {n(rocket_weight, 3)} N, or the rocket "
                          f"would not lift off (got thrust={thrust!r})")
     a = acceleration(thrust - rocket_weight, mass)
-    m, t = n(mass, 2), n(thrust, 2)
+    mass_figures, thrust_figures = stated_figures(mass), stated_figures(thrust)  # as the question states them
+    m, t = n(mass, mass_figures), n(thrust, thrust_figures)
     wt = n(rocket_weight, 3)
     return Question(
         key="rocket-lift-off",
         text=(f"A model rocket of mass {m} kg stands on its launch pad. At lift-off its engine gives "
               f"an upward thrust of {t} N. Calculate (a) the weight of the rocket and (b) its "
               "acceleration at lift-off."),
-        givens=(Given("mass", mass, "kg", 2), Given("thrust", thrust, "N", 2)),
+        givens=(Given("mass", mass, "kg", mass_figures), Given("thrust", thrust, "N", thrust_figures)),
         parts=(
             Part("weight of the rocket", rocket_weight, "N", "force", shown_sig_figs=3,
                  answer_for_g=lambda g_: weight(mass, g=g_),

@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import pytest
+from test_marks_rules import mark_questions
 
 from physics_figures import bank
 
@@ -72,3 +73,19 @@ def test_the_rocket_can_ask_its_mass_from_its_thrust_and_acceleration():
     assert "thrust of 16 N" in question.text and "55 m s" in question.text
     assert question.part_marks() == [2]
     assert "used g = 10 m s⁻²" in {mistake.name for mistake in mass.mistakes}
+
+
+ELASTIC = bank.TEMPLATES["elastic-both-moving"]
+
+
+def test_data_stated_to_1_sf_print_so_and_take_a_1_sf_answer():
+    """9702/22/O/N/23 Q4(b): "A at 4 m s⁻¹ … B at 6 m s⁻¹ … B moves back at 2 m s⁻¹", perfectly
+    elastic: A's speed after is 8 m s⁻¹. The data print as stated (4, not 4.0), and the answer "8",
+    to the 1 s.f. of the data, earns the mark in the browser's engine."""
+    question = ELASTIC.build(u1=4, speed2=6, back2=2, figures=1)
+    assert [given.text for given in question.givens] == ["4", "6", "2"]
+    assert "A at 4 m s" in question.text and "at 2 m s" in question.text
+    assert question.parts[0].value == pytest.approx(4 + 6 - 2)
+    marked = mark_questions([(question.browser_data(), {"a": {"value": value, "unit": "m s^-1"}})
+                             for value in ("8", "8.0", "12")])
+    assert [result["marks"]["byPart"]["a"] for result in marked] == [[1, 1], [1, 1], [0, 1]]

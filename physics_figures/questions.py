@@ -247,7 +247,7 @@ class Question:
             value = method.evaluate({u: float(printed[u]) for u in method.uses})
             value = value if part.direction == "signed" else abs(value)
             typed = number(value, part.check_sig_figs)
-            if part._accepted(value) or part._named(value) or typed in found:
+            if part._accepted(value) or part._named(value) or part._allowed(value) or typed in found:
                 continue
             found[typed] = Alternative(value, "the value the scheme's working gives from the "
                                               "earlier answers as printed")

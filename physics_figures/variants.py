@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 from .notation import round_number
+from .parts.numeric import G_TEN_SLIP
 from .questions import Question
 
 #: What a template asks for (data-kind): a number, a choice of four, a reading of a graph,
@@ -92,6 +93,10 @@ def confusable_mistakes(question: Question) -> list[str]:
         # and one worked from readings anywhere their half squares take it, written at 2 s.f.
         low, high = part.band if part.kind == "graph" else accepted_band(part.value)
         for mistake in part.mistakes:
+            # g = 10 is 2 % off: its answer often rounds to the key at 2 s.f., which a scheme's A1
+            # takes (to 3 s.f. the marker names it, and a wrong direction stays only that)
+            if mistake.name == G_TEN_SLIP and part.kind == "numeric" and not part._accepted(mistake.value):
+                continue
             same_kind = mistake.unit is None and mistake.direction is None
             typed = float(round_number(mistake.value, 2)) if mistake.value else 0.0
             if same_kind and (low <= mistake.value <= high

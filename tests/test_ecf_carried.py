@@ -89,13 +89,15 @@ def test_the_bank_has_named_mistakes_that_follow_from_earlier_ones():
 def test_every_named_mistake_carried_from_an_earlier_part_earns_ecf():
     """Each named mistake of a later part that follows from the same mistake in the earlier
     parts (Question.carried_mistakes), in every variant: those typed to 2 s.f., the later part
-    to 3 s.f. from their full values, earns all its marks as ecf."""
+    to 3 s.f. from their full values, earns all its marks as ecf. (An earlier g = 10 that rounds
+    to the key at 2 s.f. is the key there, so it is typed to 3 s.f.)"""
     cases, owns = [], []
     for key, variant, part_id, name, uses in CARRIED:
         question = bank.TEMPLATES[key].variant(variant)
         parts = dict(zip(question.part_ids, question.parts, strict=True))
-        answers = {u: _answer(parts[u], next(m.value for m in parts[u].mistakes if m.name == name), 2)
-                   for u in uses}
+        shown = {u: next(m.value for m in parts[u].mistakes if m.name == name) for u in uses}
+        answers = {u: _answer(parts[u], value, 2 if _typed(abs(value), 2) != _typed(abs(parts[u].value), 2) else 3)
+                   for u, value in shown.items()}
         target = parts[part_id]
         answers[part_id] = _answer(target, next(m.value for m in target.mistakes if m.name == name), 3)
         cases.append((question.browser_data(), answers))

@@ -95,3 +95,9 @@ def enough_figures(values: Sequence[float], step: Callable[..., float], printed_
         if min(abs(got - target), abs(abs(got) - abs(target))) <= place / 2 * (1 + 1e-9):
             return tuple(text for text, _ in printed)
     raise ValueError(f"no printing of {values!r} to {_EXACT_UP_TO} s.f. gives {printed_result!r}")
+
+
+#: What the schemes credit in a wrong change in momentum of a ball that turns round: the
+#: working shows a momentum as mass × speed, so it keeps the C1 though the change is wrong
+#: (the speeds subtracted, or one momentum alone). Mistake.credited cites it.
+MOMENTUM_WORKING_C1 = "9702/22/M/J/25 Q4(b)(i): C1 for p = mv or 0.25 × 3.6 or 0.25 × 5.2"

@@ -604,6 +604,7 @@ def skydiver_velocity_time(terminal: float = 50.0, mass: float = 70.0) -> Questi
                              "has grown to equal the weight."),
                  ), see="skydiver"),
             Part("value of k", k, "kg m^-1", "drag constant", units="kg m^-1", shown_sig_figs=2,
+                 answer_for_g=lambda g: drag_constant_for_terminal_velocity(mass, terminal, g=g),
                  ecf=Ecf(b_answer / a_answer**2, {}),
                  readings=(Reading("terminal velocity", terminal, graph.value_division / 2),),
                  answer_from_readings=lambda v: drag_constant_for_terminal_velocity(mass, v),
@@ -653,6 +654,9 @@ def ball_acceleration_from_graph(terminal: float = 20.0, moment: float = 2.0, ma
                       revisit="The terminal velocity is where the curve levels off: read that value.", see="skydiver"),
             GraphPart(f"velocity at {t} s", speed, "m s^-1", "velocity", units=M_S, tolerance=0.25, revisit=f"Go up from {t} s on the time axis to the curve, then across."),
             Part(f"acceleration at {t} s", a, "m s^-2", "acceleration", units=M_S2, shown_sig_figs=2,
+                 answer_for_g=lambda g: acceleration(
+                     weight(mass, g=g) - drag_force(drag_constant_for_terminal_velocity(mass, terminal, g=g), speed),
+                     mass),
                  ecf=Ecf(gravity_symbol * (1 - b_answer**2 / a_answer**2), {"gravity": G_EARTH}),
                  readings=(Reading("terminal velocity", terminal, graph.value_division / 2),
                            Reading(f"velocity at {t} s", speed, graph.value_division / 2)),
@@ -767,7 +771,8 @@ def drag_law_constant(power: float = 2, grams: float = 45.0, diameter_cm: float 
                              "grown to equal the weight."),
                  ), see="skydiver"),
             Part("value of k", k, k_unit, "drag constant", units=k_units, shown_sig_figs=2,
-                 # no g = 10 here: a g slip is made, and named, in (a), and (b) carries it forward
+                 # k = mg / vⁿ: g = 10 here too (after (a)'s own g = 10 it is carried forward: ecf)
+                 answer_for_g=lambda g: power_law_constant(weight(mass, g=g), speed, power=power),
                  ecf=Ecf(a_answer / speed_symbol**power, {"speed": speed}),
                  revisit=f"At terminal speed {plain_law} equals the weight mg, so k = mg / "
                          f"{'v' if power == 1 else 'v²'}.",
@@ -946,7 +951,9 @@ def stokes_terminal_speed(grams: float = 0.11, radius_mm: float = 1.5, density: 
                              "That is the ball's weight. The upthrust uses the density of the liquid: ρgV."),
                  ), see="skydiver"),
             Part("terminal speed of the ball", v_t, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
-                 # no g = 10 here: a g slip is named in (a), and (b) carries (a) forward
+                 # g = 10 in mg and in U alike; with (a)'s own g = 10 upthrust carried into it, ecf
+                 answer_for_g=lambda g: power_law_terminal_velocity(mass, k, power=1, g=g,
+                                                                    upthrust=upthrust(density, volume, g=g)),
                  ecf=Ecf((mass_symbol * g_symbol - a_answer) / (6 * sympy.pi * viscosity_symbol * radius_symbol),
                          {"mass": mass, "g_earth": G_EARTH, "viscosity": viscosity, "radius": radius}),
                  revisit="At terminal speed the resultant force is zero: mg = 6πηrv + U, so "

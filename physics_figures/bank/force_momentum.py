@@ -45,8 +45,8 @@ from ..questions import (
 )
 from ..variants import Draw, Template
 from ._common import M_S as _M_S
+from ._common import MOMENTUM_WORKING_C1, PER_S, reading, reading_rule, w
 from ._common import N_S as _N_S
-from ._common import PER_S, reading, reading_rule, w
 
 a_answer, mass_symbol, contact_symbol = sympy.symbols("a mass contact")
 
@@ -133,10 +133,11 @@ def ball_bounces_off_wall(mass: float = 0.16, speed_in: float = 15.0, speed_out:
                  mistakes=(
                      Mistake("u - v instead of u + v", slip,
                              "You used m(u − v). The ball reverses, so the velocities have opposite "
-                             "signs: Δp = m(u + v)."),
+                             "signs: Δp = m(u + v).", keeps=("method",), credited=MOMENTUM_WORKING_C1),
                      Mistake("initial momentum only", momentum(mass, speed_in),
                              "That is only the momentum before. Δp = final momentum − initial "
-                             "momentum, with signs.", see="conservation"),
+                             "momentum, with signs.", keeps=("method",), credited=MOMENTUM_WORKING_C1,
+                             see="conservation"),
                  ), see="second-law"),
             Part("average force exerted on the ball by the wall", force, "N", "force", shown_sig_figs=2,
                  direction="choice", choices=choices, answer_direction="away from the wall",

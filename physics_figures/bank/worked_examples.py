@@ -37,6 +37,7 @@ from ..models import (
 from ..notation import format_number as n
 from ..questions import Ecf, Mark, Mistake, Part, Question
 from ..variants import Template
+from ._common import MOMENTUM_WORKING_C1
 
 _N_S = "N s or kg m s^-1"
 _M_S = "m s^-1 (m/s)"
@@ -180,13 +181,15 @@ def ball_off_a_wall() -> Question:
                              f"You subtracted the speeds. The ball turns round, so its velocities have "
                              f"opposite signs and the size of Δp is the mass × the sum of the speeds, "
                              f"{n(mass, 2)} × ({n(v, 2)} + {n(-u, 2)}). Revisit wrong signs in the "
-                             "common mistakes."),
+                             "common mistakes.", keeps=("method",), credited=MOMENTUM_WORKING_C1),
                      Mistake("final momentum only", momentum(mass, v),
                              "That is the momentum after the bounce. The change is final minus "
-                             "initial momentum, with the initial one negative.", see="conservation"),
+                             "initial momentum, with the initial one negative.", keeps=("method",),
+                             credited=MOMENTUM_WORKING_C1, see="conservation"),
                      Mistake("initial momentum only", momentum(mass, -u),
                              "That is the momentum before the bounce. The change is final minus "
-                             "initial momentum, with the initial one negative.", see="conservation"),
+                             "initial momentum, with the initial one negative.", keeps=("method",),
+                             credited=MOMENTUM_WORKING_C1, see="conservation"),
                      Mistake("kinetic energy instead of momentum",
                              kinetic_energy(mass, u) - kinetic_energy(mass, v),
                              "That is the kinetic energy lost, in J. Momentum is mass × velocity, "
@@ -422,8 +425,9 @@ def sphere_in_oil() -> Question:
                         "release"),
         givens=(),  # the example's statement, just above on the page, gives the numbers
         parts=(
-            # No g = 10 mistake here: 920 x 10 x 1.5e-6 N rounds to the key at 2 s.f.
+            # g = 10 gives 0.0138 N: 0.014 at 2 s.f., the key's own, and named at 3 s.f.
             Part("upthrust on the sphere", lift, "N", "force", shown_sig_figs=3,
+                 answer_for_g=lambda g_: upthrust(oil, volume, g=g_),
                  revisit="Upthrust = ρgV with the density of the oil (the fluid pushed aside), "
                          "not of the sphere.",
                  mistakes=(

@@ -1,3 +1,4 @@
+# ruff: noqa: RUF002  (docstrings quote the schemes' words, with their true minus, dash and times)
 
 """The numeric part kind: a calculated value, with its unit, direction, named mistakes, the
 working that rounding part-way follows, error carried forward and alternatives. Its browser
@@ -31,6 +32,10 @@ from .common import (
     unit_text,
 )
 
+#: The name of the slip a part whose answer uses g names (Part.answer_for_g): the book's rule,
+#: "g = 10 loses only the A1".
+G_TEN_SLIP = "used g = 10 m s⁻²"
+
 
 @dataclass(frozen=True)
 class Mistake:
@@ -44,8 +49,15 @@ class Mistake:
     kind: what the mistake is, for the marks it keeps (marking_rules.json): "slip" (g = 10,
     a power-of-ten or prefix slip: keeps the C1 and M1), "direction" (keeps all but the
     direction's mark; the default when ``direction`` is set) or "physics" (a wrong formula or
-    idea: keeps nothing; the default otherwise). keeps: the roles it keeps where a published
-    scheme says otherwise than its kind ("method", "answer", "direction").
+    idea: keeps nothing; the default otherwise).
+
+    keeps: the roles of the part's lines it keeps where a published scheme says otherwise than
+    its kind ("method": the C1 and M1 lines, "answer", "direction"), e.g. ``("method",)`` for
+    a wrong answer whose working the scheme credits with its C1. credited: the scheme that
+    says so, cited with its words (required with ``keeps``), e.g. "9702/22/M/J/25 Q4(b)(i):
+    C1 for p = mv or 0.25 × 3.6 or 0.25 × 5.2"; the key prints it beside what the answer
+    keeps. A direction's own B1 is kept or lost by the direction chosen, whatever the value
+    (a B mark stands on its own), unless the mistake is itself a wrong direction.
     """
 
     name: str
@@ -56,6 +68,7 @@ class Mistake:
     direction: str | None = None
     kind: str = ""
     keeps: tuple[str, ...] | None = None
+    credited: str = ""
     see: str | None = None
 
     def __post_init__(self):
@@ -66,28 +79,62 @@ class Mistake:
         _require(self.kind in marking.MISTAKE_KINDS, "kind", self.kind, f"must be one of {marking.MISTAKE_KINDS}")
         _require(self.keeps is None or set(self.keeps) <= set(marking.ROLES), "keeps", self.keeps,
                  f"must be some of {marking.ROLES}")
+        _require(self.keeps is None or bool(self.credited.strip()), "credited", self.credited,
+                 f"must cite the published scheme that keeps {self.keeps} for this working (paper, question, words)")
 
     @property
     def loses(self) -> tuple[str, ...]:
         """The roles of the part's mark lines this mistake loses."""
         if self.keeps is not None:
-            return tuple(role for role in marking.ROLES if role not in self.keeps)
+            # a value's mistake leaves the direction to the direction chosen (the engine's
+            # directionWrong); only a wrong direction loses that role by itself
+            return tuple(role for role in marking.ROLES if role not in self.keeps
+                         and (role != "direction" or self.direction is not None))
         return marking.mistake_losses(self.kind)
 
 
 @dataclass(frozen=True)
 class Alternative:
-    """A value the mark scheme also accepts for a part (SI units): from another valid route
-    ("4500 or 4600"), or what the scheme's own rounded working gives. ``why`` says which, for
-    the feedback."""
+    """A value the mark scheme also accepts for a part (SI units): a scheme's "allow" value
+    ("allow 0.89"), a second route's ("allow 4500 or 4600 for either method"), or what the
+    scheme's own rounded working gives ("7.2 or 7.4 from rounded values of F"; see
+    ``from_rounded``). It earns every line the key earns (the outcome "alternative") on the
+    site, and the sheets' keys and Moodle accept it too.
+
+    why: where the value comes from, for the feedback and the key ("the force from the change
+    in momentum rounded to 1.3 N s"). paper: the published scheme that allows it, cited with
+    its words ("9702/21/M/J/22 Q2(c)(ii): allow 7.2 N m or 7.4 N m from rounded values of F");
+    empty only for what the book derives itself (Question.scheme_alternatives).
+    """
 
     value: float
     why: str
+    _: KW_ONLY
+    paper: str = ""
 
     def __post_init__(self):
         object.__setattr__(self, "value", float(self.value))
         _require(math.isfinite(self.value), "value", self.value, "must be a finite number")
         _require(bool(self.why.strip()), "why", self.why, "must say where the value comes from")
+
+    @classmethod
+    def from_rounded(cls, route: Callable[..., float], intermediates: tuple[float, ...],
+                     sig_figs: int | tuple[int | None, ...], *, why: str, paper: str) -> Alternative:
+        """The value a scheme's route gives from its own rounded intermediates ("650 / 5.5"):
+        ``route`` (the model's own function of the intermediates, in order) called with each
+        intermediate (SI, unrounded) rounded to ``sig_figs`` significant figures, one number
+        for all or one per intermediate (None: that one is used as it is)."""
+        figures = (sig_figs,) * len(intermediates) if isinstance(sig_figs, int) else tuple(sig_figs)
+        _require(len(figures) == len(intermediates), "sig_figs", sig_figs,
+                 f"must give one precision per intermediate ({len(intermediates)})")
+        _require(all(f is None or f >= 1 for f in figures), "sig_figs", sig_figs, "must be 1 or more (or None)")
+        rounded = [value if f is None else _round_sf(value, f) for value, f in zip(intermediates, figures, strict=True)]
+        return cls(route(*rounded), why, paper=paper)
+
+    @property
+    def reason(self) -> str:
+        """Why it is accepted, as feedback and the key say it: "why (paper)"."""
+        return f"{self.why} ({self.paper})" if self.paper else self.why
 
 
 @dataclass(frozen=True)
@@ -186,6 +233,10 @@ class Part:
     direction: "none" (a size), "signed" (positive is ``positive``) or "choice" (a size
     plus one of ``choices``; the right one is ``answer_direction``). sign_means: for a
     size, what a minus sign would say (e.g. "backwards"), when the signed form is right too.
+    allow_minus: for a size whose scheme says "allow −X" or "ignore sign" where no direction
+    is asked, the scheme cited with its words ("9702/21/M/J/22 Q1(b)(ii): = (–) 48 N s"): a
+    minus sign then earns every line (the outcome "ignore-sign"); without it a minus sign on a
+    size loses the A1 (CLARIFICATIONS, Papers).
     asks: what the part asks for (ASKS); only "show that", "explain" and "state" earn M1.
     working: the intermediate values, and answer_from: the answer as a function of them
     (in order); with both, ``rounded_part_way`` lists what rounding them early gives.
@@ -220,8 +271,11 @@ class Part:
     #: Other valid methods for error carried forward (e.g. the tension from the hanging mass
     #: as well as from the block): each is tried in turn.
     ecf_also: tuple[Ecf, ...] = ()
-    #: Values the scheme also accepts (another route, a range's ends are not needed: see GraphPart).
+    #: Values the scheme also accepts, each with the paper that allows it: its "allow" values,
+    #: its second routes', and a route's from the scheme's own rounded intermediate
+    #: (Alternative.from_rounded). A range's ends are not needed: see GraphPart and readings.
     alternatives: tuple[Alternative, ...] = ()
+    allow_minus: str = ""
     #: The values read off the question's graph that the answer is worked from, and the answer as
     #: a function of them (in order; the model's own function): every answer that readings
     #: within half a small square give is right (``band``).
@@ -247,6 +301,9 @@ class Part:
         _require(self.asks in ASKS, "asks", self.asks, f"must be one of {ASKS}")
         _require(not self.sign_means or self.direction == "none", "sign_means", self.sign_means,
                  "is only for a part that asks for a size (direction 'none')")
+        _require(not self.allow_minus or self.direction == "none", "allow_minus", self.allow_minus,
+                 "is only for a part that asks for a size (direction 'none'); where the direction is "
+                 "asked separately a minus sign is ignored anyway")
         _require((self.answer_from is None) == (not self.working), "working", self.working,
                  "and answer_from go together")
         _require(not self.ecf_also or self.ecf is not None, "ecf_also", self.ecf_also,
@@ -268,15 +325,29 @@ class Part:
             _require(math.isclose(at_981, self.value, rel_tol=1e-9), "answer_for_g", at_981,
                      f"must give the part's value {self.value!r} at g = {G_EARTH}")
             g_ten = Mistake(
-                "used g = 10 m s⁻²", self._size(self.answer_for_g(G_TEN)),
+                G_TEN_SLIP, self._size(self.answer_for_g(G_TEN)),
                 "You used g = 10 m s⁻². The data give g = 9.81 m s⁻²: with 10 the answer "
                 "is out in the second significant figure, which loses the accuracy mark (A1).",
                 kind="slip")
-            object.__setattr__(self, "mistakes", (*self.mistakes, g_ten))
+            # worked from readings of a graph, a g = 10 answer that readings within half a small
+            # square give too is right (Part.band): no slip is named then
+            if not self._band_holds(g_ten.value):
+                object.__setattr__(self, "mistakes", (*self.mistakes, g_ten))
         for mistake in self.mistakes:
             _require(mistake.direction is None or mistake.direction in self.choices,
                      "mistake.direction", mistake.direction, f"must be one of choices={self.choices}")
         self._check_mistakes_differ()
+        self._check_alternatives()
+
+    def _check_alternatives(self) -> None:
+        """An accepted value the marker could not tell from a named mistake at check_sig_figs
+        would take that mistake's marks or its own by the order of the checks: refused."""
+        for alternative in self.alternatives:
+            typed = number(self._size(alternative.value), self.check_sig_figs)
+            clash = [m.name for m in self.mistakes if m.unit is None and m.direction is None
+                     and number(self._size(m.value), self.check_sig_figs) == typed]
+            _require(not clash, "alternatives", alternative,
+                     f"gives {typed}, as the named mistake {clash} does: the marker could not tell them apart")
 
     def _check_mistakes_differ(self) -> None:
         """The marker names the first mistake a typed value matches at check_sig_figs, so two
@@ -301,6 +372,11 @@ class Part:
         """The marker takes value, typed to 3 s.f., as right (it trusts the key to 3 s.f.)."""
         return number(value, self.check_sig_figs) == number(self.value, self.check_sig_figs)
 
+    def _allowed(self, value: float) -> bool:
+        """The marker takes value, typed to 3 s.f., as a value the scheme also accepts."""
+        typed = number(self._size(value), self.check_sig_figs)
+        return any(number(self._size(a.value), self.check_sig_figs) == typed for a in self.alternatives)
+
     def _named(self, value: float) -> bool:
         return any(m.unit is None and m.direction is None
                    and number(m.value, self.check_sig_figs) == number(value, self.check_sig_figs)
@@ -321,6 +397,14 @@ class Part:
         steps = [(r.value - r.tolerance, r.value, r.value + r.tolerance) for r in self.readings]
         answers = [self._size(self.answer_from_readings(*box)) for box in itertools.product(*steps)]
         return (min(answers), max(answers))
+
+    def _band_holds(self, value: float) -> bool:
+        """Whether the answers readings within half a small square give hold value, or it
+        written to 2 s.f. (variants.confusable_mistakes refuses a named mistake there)."""
+        if self.band is None:
+            return False
+        typed = float(round_number(value, DEFAULT_MIN_SIG_FIGS)) if value else 0.0
+        return self.band[0] <= value <= self.band[1] or self.band_takes(typed, DEFAULT_MIN_SIG_FIGS)
 
     def band_takes(self, typed: float, sig_figs: int) -> bool:
         """Whether a value written to sig_figs s.f. could be an answer from readings within the
@@ -343,7 +427,8 @@ class Part:
         if self.answer_for_g is None:
             return None
         value = self._size(self.answer_for_g(G_NINE_EIGHT))
-        return None if self._accepted(value) or self._named(value) else value
+        taken = self._accepted(value) or self._named(value) or self._allowed(value) or self._band_holds(value)
+        return None if taken else value
 
     @property
     def rounded_part_way(self) -> tuple[tuple[float, str], ...]:
@@ -363,7 +448,8 @@ class Part:
                               for i, step in enumerate(self.working)]
                     answer = self._size(self.answer_from(*values))
                     key = number(answer, self.check_sig_figs)
-                    if self._accepted(answer) or self._named(answer) or key in found or key == g_slip:
+                    if (self._accepted(answer) or self._named(answer) or self._allowed(answer) or key in found
+                            or key == g_slip):
                         continue
                     what = " and ".join(
                         f"the {self.working[i].name} to {number(values[i], sig_figs)}"
@@ -391,14 +477,14 @@ class Part:
             "minSf": self.min_sig_figs, "checkSf": self.check_sig_figs,
             "direction": self.direction, "positive": self.positive, "choices": list(self.choices),
             "answerDirection": self.answer_direction, "directionHint": self.direction_hint,
-            "signMeans": self.sign_means,
+            "signMeans": self.sign_means, "allowMinus": self.allow_minus,
             "revisit": self.revisit, "see": self.see,
             "mistakes": [
                 {"name": m.name, "value": m.value, "unit": m.unit, "direction": m.direction,
                  "feedback": m.feedback, "loses": list(m.loses), "see": m.see}
                 for m in self.mistakes
             ],
-            "alternatives": [{"value": a.value, "why": a.why} for a in self.alternatives],
+            "alternatives": [{"value": a.value, "why": a.reason} for a in self.alternatives],
             # the answers that readings within half a small square give (only where read)
             **({"band": list(self.band)} if self.readings else {}),
             "gNineEight": self.g_nine_eight,

@@ -14,6 +14,7 @@ number from physics_figures, written by physics_figures.notation.format_number.
 
 from __future__ import annotations
 
+import math
 import re
 from typing import NamedTuple
 
@@ -354,7 +355,10 @@ def wrong_answers(question: Question, index: int) -> list[WrongAnswer]:
         else:
             value = mistake.value if part.direction == "signed" else abs(mistake.value)
             written = _value_with_unit(value, MISTAKE_SIG_FIGS, mistake.unit or part.unit)
-        rows.append(WrongAnswer(written, mistake.name, mistake.feedback, marks_kept(lines, mistake.loses)))
+        # where the scheme credits the working it shows, the key says which scheme
+        feedback = (f"{mistake.feedback} The scheme credits this working ({mistake.credited})."
+                    if mistake.credited else mistake.feedback)
+        rows.append(WrongAnswer(written, mistake.name, feedback, marks_kept(lines, mistake.loses)))
     if part.g_nine_eight is not None:
         rows.append(WrongAnswer(_value_with_unit(part.g_nine_eight, MISTAKE_SIG_FIGS, part.unit), "used g = 9.8 m s⁻²",
                                 "The data give g = 9.81 m s⁻²: 9.8 is close but moves the third figure.",
@@ -375,16 +379,29 @@ def wrong_answers(question: Question, index: int) -> list[WrongAnswer]:
     return rows
 
 
+def _allowed_value(part, value: float) -> str:
+    """An allowed value as the scheme writes it: to 2 s.f. where that is all its figures
+    (0.86, not 0.860), else to 3."""
+    value = value if part.direction == "signed" else abs(value)
+    figures = 2 if math.isclose(float(round_number(value, 2)), value, rel_tol=1e-9) else 3
+    return _value_with_unit(value, figures, part.unit)
+
+
 def accept_note(part) -> str:
     """What the key accepts beside a numeric or graph part's answer (plain text, the PDF key's
-    and the sheet builder's): " (accept 2 or more significant figures)", or a reading's band."""
+    and the sheet builder's): " (accept 2 or more significant figures)", or a reading's band;
+    then what the part's scheme allows besides, each with its paper ("; allow 10.8 N: the
+    force from ... (9702/...)", "; allow −4.0 N s (9702/...)")."""
     if part.kind == "graph":
         return f" (read from the graph: accept {part.band_text()})"
+    allowed = "".join(f"; allow {_allowed_value(part, a.value)}: {a.reason}" for a in part.alternatives)
+    if part.allow_minus:
+        allowed += f"; allow {_value_with_unit(-abs(part.value), part.shown_sig_figs, part.unit)} ({part.allow_minus})"
     if part.readings:  # worked from readings: what readings within half a small square give
         low, high = part.band
         return (f" (accept {part.min_sig_figs} or more significant figures; from readings of the "
-                f"graph to half a small square, {format_number(low, 3)} to {format_number(high, 3)})")
-    return f" (accept {part.min_sig_figs} or more significant figures)"
+                f"graph to half a small square, {format_number(low, 3)} to {format_number(high, 3)}{allowed})")
+    return f" (accept {part.min_sig_figs} or more significant figures{allowed})"
 
 
 def working_text(part) -> str:

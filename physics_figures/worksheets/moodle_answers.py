@@ -73,10 +73,15 @@ def right_forms(question: Question, index: int) -> list[tuple[float, float]]:
     if step and math.isclose(abs(part.value) / step % 1, 0.5, abs_tol=1e-7):
         forms.append(_band(math.copysign(abs(three[0]) - step, part.value), RIGHT_SIG_FIGS[1]))
     size = (lambda v: v) if part.direction == "signed" else abs
-    forms += [_band(size(a.value), RIGHT_SIG_FIGS[1]) for a in (*part.alternatives, *question.scheme_alternatives(index))]
+    # a value the scheme also accepts, at 3 s.f. and, as written to 2 s.f. (0.86 for 0.8627), that value only
+    for alternative in (*part.alternatives, *question.scheme_alternatives(index)):
+        forms += [_band(size(alternative.value), RIGHT_SIG_FIGS[1]),
+                  _exact(float(round_number(size(alternative.value), RIGHT_SIG_FIGS[0])))]
     if part.readings:  # worked from readings of the graph: what readings within half a small square
         low, high = part.band  # give, after the key (whose value Moodle shows); not widened by the
         forms.append(((low + high) / 2, (high - low) / 2))  # student's rounding: strict
+    if getattr(part, "allow_minus", ""):  # the scheme allows "-X" on this size: each form, negative too
+        forms += [(-value, width) for value, width in forms]
     return uncovered(forms)
 
 

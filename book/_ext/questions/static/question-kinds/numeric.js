@@ -213,13 +213,17 @@
       return result;
     }
 
-    function namedMistake(dims, scale) {
+    /* keyValue: the value typed is the key's (at its own figures): then no mistake of the value
+     * alone is what it shows (a g = 10 value that rounds to the key, say), only one of its
+     * direction or its unit, so a wrong direction is never read as a slip. */
+    function namedMistake(dims, scale, keyValue) {
       var mistakes = part.mistakes || [];
       for (var i = 0; i < mistakes.length; i++) {
         var mistake = mistakes[i];
         var mistakeDims = mistake.unit ? parseUnit(mistake.unit).readings[0].dims : expected.dims;
         if (!sameDims(mistakeDims, dims)) continue;
         if (mistake.direction && mistake.direction !== direction) continue;
+        if (keyValue && !mistake.direction && !mistake.unit) continue;
         var value = mode === "signed" ? mistake.value : Math.abs(mistake.value);
         if ((number.sfMax >= 2 || value === 0) && against(value, scale).match) {
           var meant = mistake.unit ? undefined : value;
@@ -254,9 +258,10 @@
     }
 
     // A size typed with a minus sign: ignored where the direction is asked separately (the
-    // schemes' "ignore sign"), right where the part says what the sign means, else a slip.
+    // schemes' "ignore sign") or where the part's scheme allows it (allowMinus, its paper),
+    // right where the part says what the sign means, else a slip.
     var signed = mode !== "signed" && typed < 0;
-    var signIgnored = signed && mode === "choice";
+    var signIgnored = signed && (mode === "choice" || !!part.allowMinus);
     var sign = signed && !part.signMeans && !signIgnored;
     var result = against(target, reading.scale);
     // A value the scheme also accepts (another route, or its own rounded working).
@@ -291,7 +296,9 @@
       if (signIgnored)
         return out(
           "ignore-sign",
-          "Correct: the minus sign is ignored, as the direction is given separately.",
+          mode === "choice"
+            ? "Correct: the minus sign is ignored, as the direction is given separately."
+            : "Correct: the scheme allows the minus sign here (" + part.allowMinus + ").",
           null,
           keySize,
         );
@@ -306,7 +313,7 @@
       return out("missing-direction", "The size is right. Now give the direction.", null, keySize);
     }
 
-    var named = namedMistake(reading.dims, reading.scale);
+    var named = namedMistake(reading.dims, reading.scale, result.match);
     if (named) return named;
 
     if (!unit.empty && reading.scale !== 1 && against(target, 1).match && sameDims(expected.dims, [0, 0, 0, 1])) {

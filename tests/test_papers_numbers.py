@@ -105,3 +105,21 @@ def test_the_explosion_takes_a_shell_at_rest_as_the_papers_fireworks_start():
     for part in question.parts:
         typed = [f"{abs(m.value):.3g}" for m in part.mistakes if m.unit is None and m.direction is None]
         assert f"{abs(part.value):.3g}" not in typed and len(typed) == len(set(typed)), part.prompt
+
+
+CYCLIST = bank.TEMPLATES["graph-cyclist-momentum-time"]
+
+
+def test_the_momentum_time_graph_may_start_rising_at_t_0():
+    """A momentum-time line may rise from t = 0, with no flat part before the change (issue 38: the
+    templates could not draw it)."""
+    question = CYCLIST.build(start=240, end=640, begins=0, lasts=8)
+    assert question.graph.points[:2] == ((0.0, 240.0), (8.0, 640.0))
+    assert question.parts[2].value == pytest.approx((640 - 240) / 8)
+
+
+def test_the_momentum_time_graph_may_fall():
+    question = CYCLIST.build(start=640, end=240, begins=4, lasts=8)
+    assert "she slows down" in question.text
+    assert [point[1] for point in question.graph.points] == [640.0, 640.0, 240.0, 240.0]
+    assert question.parts[2].value == pytest.approx(400 / 8)  # the force's size

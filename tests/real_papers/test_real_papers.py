@@ -33,8 +33,8 @@ def _still_blocked(case: dict) -> bool:
     if blocker == "text-kind":  # a define/state part waits for the text kind (k38-text)
         question = bank.TEMPLATES[case["template"]].variant(0)
         return all(part.kind != "text" for part in question.parts)
-    if blocker == "sketch-kind":  # a sketch part waits for the sketch kind (k38-sketch)
-        return "sketch" not in variants.KINDS
+    if blocker == "sketch-kind":  # a sketch part waits for the sketch kind (k38-sketch) and a template of it
+        return "sketch" not in variants.KINDS or case["template"] is None
     if blocker == "refused":  # the template refuses the paper's numbers
         try:
             _question(case)

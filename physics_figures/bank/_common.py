@@ -8,7 +8,7 @@ import re
 from collections.abc import Callable, Sequence
 
 from ..notation import format_number, round_number
-from ..questions import format_reading
+from ..questions import Mistake, format_reading
 
 #: Every usual form of a unit, for the marker's messages.
 N_S = "N s or kg m s^-1"
@@ -30,6 +30,33 @@ def w(value: float) -> str:
         if math.isclose(float(round_number(value, sig_figs)), value, rel_tol=1e-9, abs_tol=1e-12):
             return format_number(value, sig_figs)
     return format_number(value, 3)
+
+
+def stated_figures(value: float, least: int = 2, most: int = 4) -> int:
+    """The significant figures a given is stated to: the fewest, from ``least``, that print it
+    exactly (a paper's 0.247 kg is stated to 3, a drawn 0.65 kg to 2), at most ``most``. A given
+    printed to fewer figures than it has would make the printed text give another answer."""
+    for sig_figs in range(least, most + 1):
+        if math.isclose(float(round_number(value, sig_figs)), value, rel_tol=1e-9, abs_tol=1e-12):
+            return sig_figs
+    return most
+
+
+def one_of_each(key: float, mistakes: Sequence[Mistake], sig_figs: int = 3, *, signed: bool = False) -> tuple[Mistake, ...]:
+    """The named mistakes that the marker can tell apart: a mistake whose value, to ``sig_figs``,
+    is the key's or an earlier mistake's is dropped. Some givens make two routes meet (a shell at
+    rest has no momentum before to forget), and a paper's numbers may be such givens. signed: a
+    signed part compares the values with their signs."""
+    size = (lambda value: value) if signed else abs
+    kept, seen = [], {format_number(size(key), sig_figs)}
+    for mistake in mistakes:
+        if mistake.unit is None and mistake.direction is None:
+            typed = format_number(size(mistake.value), sig_figs)
+            if typed in seen:
+                continue
+            seen.add(typed)
+        kept.append(mistake)
+    return tuple(kept)
 
 
 def reading_rule(tolerance: float, unit: str) -> str:

@@ -321,9 +321,48 @@ def collision_energy_explained(situation: float = 0) -> Question:
     )
 
 
-def elastic_both_moving(m1: float = 0.20, u1: float = 3.0, m2: float = 0.30, speed2: float = 1.5) -> Question:
+def _elastic_from_speeds(u1: float, speed2: float, back2: float, figures: int) -> Question:
+    """A's speed after an elastic collision from the speeds alone: separation = approach, as
+    9702/22/O/N/23 Q4(b) asks it ("A at 4 m s⁻¹, B at 6 m s⁻¹ … B moves back at 2 m s⁻¹": 8 m s⁻¹,
+    [1]). The speeds print to the figures the question states them to, and data stated to 1 s.f.
+    take a 1 s.f. answer (min_sig_figs)."""
+    approach = relative_speed(u1, -speed2)
+    after_a = back2 - approach  # B moves back the way it came, now in A's first direction
+    ua, ub, vb = (n(value, figures) for value in (u1, speed2, back2))
+    return Question(
+        key="elastic-both-moving",
+        text=(f"Blocks A and B move directly towards each other, A at {ua} {PER_S} and B at {ub} {PER_S}, and "
+              f"collide. The collision is perfectly elastic. After the collision B moves back along its "
+              f"original path at {vb} {PER_S}. Calculate the speed of A after the collision."),
+        givens=(Given("speed of A", u1, "m s^-1", figures), Given("speed of B", speed2, "m s^-1", figures),
+                Given("speed of B after", back2, "m s^-1", figures)),
+        parts=(
+            Part("speed of A after the collision", abs(after_a), "m s^-1", "speed", units=M_S,
+                 shown_sig_figs=max(figures, 1), min_sig_figs=min(figures, 2),
+                 revisit="Elastic: the relative speed of separation equals the relative speed of approach, "
+                         f"{ua} + {ub}. B moves away from A at {vb}, so A moves back at the difference.",
+                 mistakes=(
+                     Mistake("subtracted the speeds of approach", abs(back2 - relative_speed(u1, speed2)),
+                             f"They move towards each other, so they approach at {ua} + {ub}, the sum."),
+                 ), see="relative-speed"),
+        ),
+        mark_scheme=(
+            Mark(f"relative speed of approach = {ua} + {ub} = relative speed of separation; "
+                 f"speed of A = {n(approach, figures)} − {vb} = {n(abs(after_a), figures)} {PER_S}", "B1", "a"),
+        ),
+    )
+
+
+def elastic_both_moving(m1: float = 0.20, u1: float = 3.0, m2: float = 0.30, speed2: float = 1.5,
+                        back2: float = 0, figures: float = 2) -> Question:
     """Both bodies moving towards each other, elastic: relative speeds (notes: 5 and 3 m s^-1
-    towards each other approach at 8 m s^-1), then the two equations solved together."""
+    towards each other approach at 8 m s^-1), then the two equations solved together.
+
+    back2: 0 (the variants) asks both velocities from the masses; a value is B's speed back after
+    the collision, and the question asks A's speed from the speeds alone (_elastic_from_speeds),
+    with the speeds stated to ``figures`` significant figures."""
+    if back2:
+        return _elastic_from_speeds(u1, speed2, back2, int(figures))
     u2 = -speed2  # B moves towards A: positive is A's first direction
     approach = relative_speed(u1, u2)
     v1, v2 = elastic_collision(m1, u1, m2, u2)

@@ -308,24 +308,29 @@ def kick_force_time(peak: float = 200.0, rise: float = 0.01, hold: float = 0.03,
 def cyclist_momentum_time(start: float = 240.0, end: float = 640.0, begins: float = 4.0,
                           lasts: float = 8.0) -> Question:
     """A momentum-time graph: read two momenta, the resultant force is the gradient (notes:
-    reading a momentum-time graph)."""
-    history = MomentumHistory((0.0, begins, begins + lasts, 20.0), (start, start, end, end))
-    force = float(history.segment_forces[1])
+    reading a momentum-time graph). As the papers draw them, the line may start rising at t = 0
+    (begins = 0) and may fall (end below start: she slows down, and the force asked is its size)."""
+    times, momenta = (0.0, begins, begins + lasts, 20.0), (start, start, end, end)
+    if begins == 0:  # the change starts at once: no flat part before it
+        times, momenta = times[1:], momenta[1:]
+    history = MomentumHistory(times, momenta)
+    force = abs(float(history.segment_forces[-2]))  # the sloping segment; its size when she slows down
+    change = "speeds up" if end > start else "slows down"
     _, top, division = value_axis(max(start, end))  # the axis grows with the momenta
     graph = Graph("momentum–time", "momentum", "N s", tuple(zip(history.times, history.momenta, strict=True)),
                   time_division=0.5, value_division=division, time_max=20.0, value_max=top)
     t0, t1 = n(begins, decimals=1), n(begins + lasts, decimals=1)
     return Question(
         key="graph-cyclist-momentum-time",
-        text=("The graph shows how the momentum of a cyclist changes as she speeds up along a straight, "
+        text=(f"The graph shows how the momentum of a cyclist changes as she {change} along a straight, "
               f"level road. {reading_rule(division / 2, 'N s')}"),
         givens=(),
         graph=graph,
         parts=(
-            GraphPart("momentum before she speeds up", start, "N s", "momentum", units=_N_S,
+            GraphPart(f"momentum before she {change}", start, "N s", "momentum", units=_N_S,
                       tolerance=division / 2,
                       revisit="Read the flat part of the line at the start against the momentum axis.", see="momentum"),
-            GraphPart("momentum after she speeds up", end, "N s", "momentum", units=_N_S,
+            GraphPart(f"momentum after she {change}", end, "N s", "momentum", units=_N_S,
                       tolerance=division / 2,
                       revisit="Read the flat part of the line at the end against the momentum axis.", see="momentum"),
             Part(f"resultant force on her between {t0} s and {t1} s", force, "N", "force",
@@ -334,13 +339,13 @@ def cyclist_momentum_time(start: float = 240.0, end: float = 640.0, begins: floa
                  # the times are printed in the prompt; the two momenta are read off the graph
                  readings=(Reading("momentum before", start, graph.value_division / 2),
                            Reading("momentum after", end, graph.value_division / 2)),
-                 answer_from_readings=lambda before, after: average_force(after - before, lasts),
+                 answer_from_readings=lambda before, after: abs(average_force(after - before, lasts)),
                  revisit="The resultant force is the gradient of the momentum–time graph: F = Δp / Δt.",
                  mistakes=(
                      Mistake("final momentum ÷ time", average_force(end, lasts),
                              "You divided the final momentum by the time. The force is the change in "
                              "momentum ÷ time: subtract the momentum before.", see="conservation"),
-                     Mistake("time from zero", average_force(end - start, begins + lasts),
+                     Mistake("time from zero", abs(average_force(end - start, begins + lasts)),
                              f"You measured the time from 0. The momentum changes only from {t0} s to "
                              f"{t1} s: use that time.", see="momentum"),
                  ), see="momentum-time-graph"),

@@ -32,7 +32,7 @@ from ..questions import (
     choices_in_order,
 )
 from ..variants import Draw, Template
-from ._common import M_S2, PER_S, PER_S2, enough_figures, w
+from ._common import M_S2, PER_S, PER_S2, enough_figures, stated_figures, w
 
 a_answer, trailer_mass_symbol, trailer_resistance_symbol = sympy.symbols("a trailer_mass trailer_resistance")
 hanging_mass_symbol, gravity_symbol = sympy.symbols("hanging_mass gravity")
@@ -471,22 +471,64 @@ def block_and_hanging_mass(block_mass: float = 1.2, hanging_mass: float = 0.60,
     )
 
 
-def rocket_lift_off(mass: float = 0.60, thrust: float = 9.0) -> Question:
+def _rocket_mass(thrust: float, lift_off_acceleration: float) -> Question:
+    """The rocket's mass from its thrust and its acceleration: T - mg = ma, so m = T / (a + g), as
+    9702/23/O/N/22 Q2(a)(iii) asks it (thrust 16 N, acceleration 55 m s⁻², [2])."""
+    if lift_off_acceleration <= 0:
+        raise ValueError(f"lift_off_acceleration must be upwards, above zero, for the rocket to lift off "
+                         f"(got lift_off_acceleration={lift_off_acceleration!r})")
+    mass = thrust / (lift_off_acceleration + G_EARTH)
+    t, a = n(thrust, stated_figures(thrust)), n(lift_off_acceleration, stated_figures(lift_off_acceleration))
+    g = n(G_EARTH, 3)
+    return Question(
+        key="rocket-lift-off",
+        text=(f"A model rocket lifts off from its launch pad. Its engine gives an upward thrust of {t} N and "
+              f"it accelerates upwards at {a} {PER_S2}. Air resistance is negligible. Calculate the mass "
+              "of the rocket."),
+        givens=(Given("thrust", thrust, "N", stated_figures(thrust)),
+                Given("acceleration", lift_off_acceleration, "m s^-2", stated_figures(lift_off_acceleration))),
+        parts=(
+            Part("mass of the rocket", mass, "kg", "mass", shown_sig_figs=2,
+                 answer_for_g=lambda g_: thrust / (lift_off_acceleration + g_),
+                 revisit="The resultant force is the thrust less the weight: T − mg = ma, so m = T / (a + g).",
+                 mistakes=(
+                     Mistake("weight left out", thrust / lift_off_acceleration,
+                             f"You used the thrust as the resultant force. The weight acts downwards as well: "
+                             f"{t} − m × {g} = m × {a}."),
+                     Mistake("weight added", thrust / (lift_off_acceleration - G_EARTH),
+                             "You added the weight to the thrust. They act in opposite directions: "
+                             "resultant = thrust − weight."),
+                 ), see="weight"),
+        ),
+        mark_scheme=(
+            Mark(f"T − mg = ma: {t} − m × {g} = m × {a}", "C1", "a"),
+            Mark(f"m = {t} / ({a} + {g}) = {n(mass, 2)} kg", "A1", "a"),
+        ),
+    )
+
+
+def rocket_lift_off(mass: float = 0.60, thrust: float = 9.0, lift_off_acceleration: float = 0) -> Question:
     """A model rocket at lift-off: weight, then thrust - weight = ma (notes: rockets and lifts),
-    with (b) carried forward from (a)."""
+    with (b) carried forward from (a). Givens print to the figures they are stated to.
+
+    lift_off_acceleration: 0 (the variants) gives the mass and asks the acceleration; a value asks
+    the mass from the thrust and that acceleration instead (_rocket_mass), as a paper does."""
+    if lift_off_acceleration:
+        return _rocket_mass(thrust, lift_off_acceleration)
     rocket_weight = weight(mass)
     if thrust <= rocket_weight:
         raise ValueError(f"thrust must exceed the weight {n(rocket_weight, 3)} N, or the rocket "
                          f"would not lift off (got thrust={thrust!r})")
     a = acceleration(thrust - rocket_weight, mass)
-    m, t = n(mass, 2), n(thrust, 2)
+    mass_figures, thrust_figures = stated_figures(mass), stated_figures(thrust)  # as the question states them
+    m, t = n(mass, mass_figures), n(thrust, thrust_figures)
     wt = n(rocket_weight, 3)
     return Question(
         key="rocket-lift-off",
         text=(f"A model rocket of mass {m} kg stands on its launch pad. At lift-off its engine gives "
               f"an upward thrust of {t} N. Calculate (a) the weight of the rocket and (b) its "
               "acceleration at lift-off."),
-        givens=(Given("mass", mass, "kg", 2), Given("thrust", thrust, "N", 2)),
+        givens=(Given("mass", mass, "kg", mass_figures), Given("thrust", thrust, "N", thrust_figures)),
         parts=(
             Part("weight of the rocket", rocket_weight, "N", "force", shown_sig_figs=3,
                  answer_for_g=lambda g_: weight(mass, g=g_),
@@ -630,52 +672,64 @@ car_mass_symbol = sympy.Symbol("car_mass")
 _HARDEST_BRAKING = 6.5
 
 
-def stopping_force_from_distance(mass: float = 1500.0, speed: float = 20.0, distance: float = 50.0) -> Question:
+def stopping_force_from_distance(mass: float = 1500.0, speed: float = 20.0, distance: float = 50.0,
+                                 body: float = 0) -> Question:
     """The stopping force from a distance: the deceleration from v² = u² + 2as, then F = ma
     (notes, How to do it 1., "Stopping distance with a constant force"; 9702/21/M/J/24 Q3 asks
     for a stopping force). The scheme's lines follow 9702/21/M/J/16 Q2(b) ("v² = u² + 2as and
     v = 0 C1 … A1") and, for the force worked from the student's own a, 9702/21/M/J/18 Q2(b)(iii)
-    (C1 for F = ma with the candidate's own a, then A1)."""
+    (C1 for F = ma with the candidate's own a, then A1).
+
+    body: 0 for a car braking on a road (the variants), 1 for an object brought to rest by a constant
+    force, as 9702/21/M/J/24 Q3(c) sets it (4.2 kg at 6.0 m s⁻¹ stopped in 0.050 m: 360 m s⁻²). Only
+    a car's tyres cap the deceleration."""
+    car = int(body) == 0
+    noun, force_name = ("car", "average braking force") if car else ("object", "stopping force")
     deceleration = -acceleration_from_distance(speed, 0.0, distance)
-    if deceleration > _HARDEST_BRAKING:
+    if car and deceleration > _HARDEST_BRAKING:
         raise ValueError(f"distance must let the car stop at no more than {_HARDEST_BRAKING} m s^-2, as hard as "
-                         f"tyres brake on a dry road (got distance={distance!r} m: {n(deceleration, 2)} m s^-2)")
-    force = mass * deceleration  # F = ma with the car's mass: the resultant (braking) force
+                         f"tyres brake on a dry road (got distance={distance!r} m: {n(deceleration, 2)} m s^-2; "
+                         "body=1 poses an object stopped by a constant force, with no such cap)")
+    force = mass * deceleration  # F = ma with the body's mass: the resultant (stopping) force
     m, u, s = n(mass, 2), n(speed, 2), n(distance, 2)
+    text = (f"A car of mass {m} kg is travelling at {u} {PER_S} along a straight, level road. The "
+            f"driver brakes and the car stops in a distance of {s} m, with a constant deceleration. "
+            "Calculate (a) the deceleration of the car and (b) the average braking force on it "
+            "(the resultant force).") if car else (
+            f"An object of mass {m} kg moves in a straight line at a speed of {u} {PER_S}. A constant force "
+            f"brings it to rest in a distance of {s} m. Calculate (a) the deceleration of the object and "
+            "(b) the magnitude of the force.")
     return Question(
         key="stopping-force-distance",
-        text=(f"A car of mass {m} kg is travelling at {u} {PER_S} along a straight, level road. The "
-              f"driver brakes and the car stops in a distance of {s} m, with a constant deceleration. "
-              "Calculate (a) the deceleration of the car and (b) the average braking force on it "
-              "(the resultant force)."),
+        text=text,
         givens=(Given("mass", mass, "kg", 2), Given("speed", speed, "m s^-1", 2),
                 Given("stopping distance", distance, "m", 2)),
         parts=(
-            Part("deceleration of the car", deceleration, "m s^-2", "acceleration", units=M_S2,
-                 shown_sig_figs=2, sign_means="the acceleration is against the motion: the car slows down",
-                 revisit="The car stops, so v = 0: v² = u² + 2as gives a = −u² / 2s. The deceleration is "
+            Part(f"deceleration of the {noun}", deceleration, "m s^-2", "acceleration", units=M_S2,
+                 shown_sig_figs=2, sign_means=f"the acceleration is against the motion: the {noun} slows down",
+                 revisit=f"The {noun} stops, so v = 0: v² = u² + 2as gives a = −u² / 2s. The deceleration is "
                          "its size.",
                  mistakes=(
                      Mistake("forgot to square the speed", speed / (2 * distance),
                              f"You used u instead of u². The equation is v² = u² + 2as: "
                              f"0 = {u}² − 2 × a × {s}."),
                      Mistake("time taken as distance ÷ speed", speed**2 / distance,
-                             f"You took the time to stop as {s} / {u}, as if the car kept its speed "
+                             f"You took the time to stop as {s} / {u}, as if the {noun} kept its speed "
                              "(or left out the 2 in 2as). It slows down all the way: use v² = u² + 2as, "
                              "a = u² / 2s."),
                  ), see="second-law"),
-            Part("average braking force", force, "N", "force", shown_sig_figs=2,
+            Part(force_name, force, "N", "force", shown_sig_figs=2,
                  working=(Step("deceleration", deceleration, "m s^-2", 2),),
                  answer_from=lambda a: mass * a,
                  ecf=Ecf(car_mass_symbol * a_answer, {"car_mass": mass}),
-                 revisit="The braking force is the resultant force: F = ma, with the car's mass and its "
+                 revisit=f"The {force_name.removeprefix('average ')} is the resultant force: F = ma, with the {noun}'s mass and its "
                          "deceleration (or, by work done, F s = ½mu²).",
                  mistakes=(
                      Mistake("the ½ left out of the kinetic energy", mass * speed**2 / distance,
                              f"You used F s = mu². The kinetic energy the brakes remove is ½mu²: "
                              f"F × {s} = ½ × {m} × {u}²."),
                      Mistake("kinetic energy given", kinetic_energy(mass, speed),
-                             "That is the car's kinetic energy, ½mu², in J. The force is that energy ÷ "
+                             f"That is the {noun}'s kinetic energy, ½mu², in J. The force is that energy ÷ "
                              "the distance, or ma.", unit="J", see="kinetic-energy"),
                  ), see="second-law"),
         ),

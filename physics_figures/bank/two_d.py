@@ -36,7 +36,7 @@ from ..questions import (
 )
 from ..variants import Draw, Template
 from . import diagrams
-from ._common import M_S, N_S, PER_S, enough_figures, w
+from ._common import M_S, N_S, PER_S, enough_figures, one_of_each, w
 
 
 def pucks_glancing(mass: float = 0.40, speed_before: float = 2.5, speed_after: float = 1.5,
@@ -566,10 +566,16 @@ def explosion_two_pieces(mass: float = 2.0, speed: float = 5.0, piece: float = 0
     (east_c, across_c) = enough_figures((abs(east), across), lambda x, y: math.hypot(x, y), magnitude)
     (east_d, across_d) = enough_figures((abs(east), across), lambda x, y: math.degrees(math.atan2(y, x)),
                                         n(angle_other, 3))
+    moving = f"moving horizontally due east at {uu} {PER_S}" if speed else "at rest"  # papers' fireworks start at rest
+    # at rest there is no momentum before, so routes that differ for a moving shell meet the key or
+    # each other: keep one of each (a moving shell's variants keep every mistake, as drawn)
+    def distinct(key: float, mistakes: tuple[Mistake, ...], *, signed: bool = False) -> tuple[Mistake, ...]:
+        return mistakes if speed else one_of_each(key, mistakes, signed=signed)
+
     return Question(
         key="explosion-two-pieces",
         diagram=diagrams.explosion_moving(mass, speed, piece, piece_speed, angle, north),
-        text=(f"A firework shell of mass {mm} kg is moving horizontally due east at {uu} {PER_S} when it explodes "
+        text=(f"A firework shell of mass {mm} kg is {moving} when it explodes "
               f"into two pieces. Just after the explosion, a piece of mass {m1} kg moves horizontally at {v1} "
               f"{PER_S} at {theta}° {first} of east. For the other piece, calculate (a) its momentum due east "
               "(negative if it moves west), (b) the size of its momentum due north or south, (c) its speed and "
@@ -582,31 +588,31 @@ def explosion_two_pieces(mass: float = 2.0, speed: float = 5.0, piece: float = 0
                  direction="signed", positive="east",
                  revisit=f"Eastward momentum is conserved: {mm} × {uu} = (the piece's p cos {theta}°) + (the "
                          "other piece's eastward momentum).",
-                 mistakes=(
+                 mistakes=distinct(east, (
                      Mistake("sin and cos swapped", p_before - p_piece * math.sin(math.radians(angle)),
                              f"You used sin. The angle {theta}° is measured from east, so the piece's eastward "
                              "component is p cos θ."),
                      Mistake("momentum before forgotten", -p_piece * math.cos(math.radians(angle)),
                              f"The shell was moving before it exploded: the total eastward momentum is "
                              f"{mm} × {uu} N s, not zero.", see="explosions"),
-                 ), see="two-d"),
+                 ), signed=True), see="two-d"),
             Part("size of the other piece's momentum due north or south", across, "N s", "momentum", units=N_S,
                  shown_sig_figs=2,
                  revisit="There is no north–south momentum before, so the other piece's north–south component "
                          f"cancels the piece's, p sin {theta}°.",
-                 mistakes=(
+                 mistakes=distinct(across, (
                      Mistake("sin and cos swapped", p_piece * math.cos(math.radians(angle)),
                              f"You used cos. The angle {theta}° is measured from east, so the north–south "
                              "component is p sin θ."),
                      Mistake("mass left out", piece_speed * math.sin(math.radians(angle)),
                              "That is a component of the velocity. Momentum = mass × velocity: multiply by "
                              f"the piece's mass, {m1} kg.", see="momentum"),
-                 ), see="two-d"),
+                 )), see="two-d"),
             Part("speed of the other piece", split.speed, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
                  ecf=Ecf(sympy.sqrt(sym_a**2 + sym_b**2) / sym_m, {"m_rest": split.mass}),
                  revisit=f"Combine the two components with Pythagoras, then divide by the other piece's mass, "
                          f"{mm} − {m1} = {rest} kg.",
-                 mistakes=(
+                 mistakes=distinct(split.speed, (
                      Mistake("momentum added as scalars", abs(p_before - p_piece) / split.mass,
                              "You subtracted the sizes of the momenta as if both moved along one line. "
                              "Momentum is a vector: conserve the east and north components separately.",
@@ -620,7 +626,7 @@ def explosion_two_pieces(mass: float = 2.0, speed: float = 5.0, piece: float = 0
                      Mistake("divided by the shell's mass", split.magnitude / mass,
                              f"You divided by the whole shell's mass. The other piece's mass is {mm} − {m1} = "
                              f"{rest} kg.", see="momentum"),
-                 ), see="two-d"),
+                 )), see="two-d"),
             Part("angle between the other piece's direction and the east–west line", angle_other, "°", "angle",
                  units="° (degrees)", shown_sig_figs=3, direction="choice", choices=_COMPASS,
                  answer_direction=answer,
@@ -629,7 +635,7 @@ def explosion_two_pieces(mass: float = 2.0, speed: float = 5.0, piece: float = 0
                                 f"eastward momentum in (a) says east or west.",
                  revisit="tan θ = (north–south momentum) / (east–west momentum); the north–south component "
                          "is opposite to the first piece's.",
-                 mistakes=(
+                 mistakes=distinct(angle_other, (
                      Mistake("tan the wrong way up", 90.0 - angle_other,
                              "You measured the angle from north–south. tan θ = (north–south momentum) / "
                              "(east–west momentum) gives it from the east–west line."),
@@ -642,7 +648,7 @@ def explosion_two_pieces(mass: float = 2.0, speed: float = 5.0, piece: float = 0
                      Mistake("same side as the first piece", angle_other,
                              f"The north–south momentum is zero before, so the other piece moves {other}, "
                              "opposite to the first piece.", direction=wrong_side),
-                 ), see="two-d"),
+                 )), see="two-d"),
         ),
         mark_scheme=(
             Mark(f"East: {mm} × {uu} = {m1} × {v1} cos {theta}° + p<sub>E</sub>", "C1", "a"),

@@ -1,0 +1,225 @@
+"""The sketch part kind: the student draws a line on printed axes (or builds it from segments
+by keyboard), and it is marked on the features a scheme names, each a B1 (CLARIFICATIONS,
+Papers). Each marking point lists, as data, the features of the line it needs and those that
+lose it; the features are read from the drawn line in the graph's own units (s, and the
+quantity's SI unit) by its browser twin, book/_ext/questions/static/question-kinds/sketch.js.
+The key and Moodle's grader information print the same points in words (``describe``)."""
+
+from __future__ import annotations
+
+import itertools
+import math
+from dataclasses import dataclass, field
+from typing import ClassVar
+
+from ..notation import format_number
+from .common import NoValue, _require, unit_text
+
+#: What a feature says of the line: where it starts or ends (zero, positive, negative), that it
+#: rises, falls or is level over a stretch of time (with its gradient constant, increasing or
+#: decreasing, and a value it is level at), a step, a change of sign, and its largest value.
+FEATURES = ("start", "end", "rising", "falling", "level", "step", "sign-change", "peak")
+VALUE_CLASSES = ("zero", "positive", "negative")
+GRADIENTS = ("constant", "increasing", "decreasing")
+_GRADIENT_WORDS = {"constant": "in a straight line", "increasing": "ever more steeply",
+                   "decreasing": "ever less steeply"}
+_STARTS = {"zero": "starts at zero, at t = 0", "positive": "starts above zero, at t = 0",
+           "negative": "starts below zero, at t = 0"}
+_ENDS = {"zero": "is back at zero at the end", "positive": "ends above zero", "negative": "ends below zero"}
+
+
+def _s(value: float) -> str:
+    """A time or value as the key prints it (4 s.f. at most, no trailing noise)."""
+    return format_number(value, 3) if value else "0"
+
+
+@dataclass(frozen=True)
+class Feature:
+    """One thing the line does. ``what`` is one of FEATURES; ``start`` and ``stop`` (s) bound
+    a rising, falling or level stretch; ``gradient`` says how its gradient changes; ``at`` is
+    the value a level stretch is at (within ``within`` value tolerances) or the time of a step;
+    ``value`` classes a start or an end; ``way`` is a step's "up" or "down"; ``count`` is the
+    exact number of sign changes (None: at least one); ``above`` is the least largest value."""
+
+    what: str
+    start: float | None = None
+    stop: float | None = None
+    gradient: str | None = None
+    at: float | None = None
+    value: str | None = None
+    way: str | None = None
+    count: int | None = None
+    above: float | None = None
+    within: float | None = None
+
+    def __post_init__(self):
+        _require(self.what in FEATURES, "what", self.what, f"must be one of {FEATURES}")
+        if self.what in ("rising", "falling", "level"):
+            _require(self.start is not None and self.stop is not None and self.stop > self.start,
+                     "stop", (self.start, self.stop), f"must follow start: a {self.what} stretch has a span")
+        if self.what in ("start", "end"):
+            _require(self.value in VALUE_CLASSES, "value", self.value, f"must be one of {VALUE_CLASSES}")
+        _require(self.gradient is None or self.gradient in GRADIENTS, "gradient", self.gradient,
+                 f"must be one of {GRADIENTS}")
+        _require(self.what != "step" or self.at is not None, "at", self.at, "must give a step's time")
+        _require(self.way in (None, "up", "down"), "way", self.way, "must be 'up' or 'down'")
+        _require(self.what != "peak" or self.above is not None, "above", self.above,
+                 "must give the value a peak reaches")
+
+    def browser_data(self) -> dict:
+        names = {"start": "from", "stop": "to"}
+        data = {"is": self.what}
+        for name in ("start", "stop", "gradient", "at", "value", "way", "count", "above", "within"):
+            if getattr(self, name) is not None:
+                data[names.get(name, name)] = getattr(self, name)
+        return data
+
+    def describe(self, unit: str) -> str:
+        """The feature in words, for the key and the grader: "rising in a straight line from
+        0 to 2.00 s"."""
+        unit = unit_text(unit)
+        if self.what in ("start", "end"):
+            return (_STARTS if self.what == "start" else _ENDS)[self.value]
+        if self.what == "step":
+            return f"a sudden step{' ' + self.way if self.way else ''} at t = {_s(self.at)} s"
+        if self.what == "sign-change":
+            return ("changes sign" if self.count is None
+                    else "never changes sign" if self.count == 0 else f"changes sign {self.count} times")
+        if self.what == "peak":
+            return f"reaches at least {_s(self.above)} {unit}"
+        words = self.what + (f" {_GRADIENT_WORDS[self.gradient]}" if self.gradient else "")
+        if self.what == "level" and self.at is not None:
+            words += f" at {_s(self.at)} {unit}"
+        return f"{words} from t = {_s(self.start)} s to {_s(self.stop)} s"
+
+
+@dataclass(frozen=True)
+class SketchPoint:
+    """A marking point (B1): its text as the scheme words it, the features it needs, the
+    features that lose it, and the paper whose scheme it follows ("9702/21/M/J/23 Q3(c)")."""
+
+    text: str
+    needs: tuple[Feature, ...]
+    source: str
+    loses: tuple[Feature, ...] = ()
+
+    def __post_init__(self):
+        _require(bool(self.needs), "needs", self.needs, "must name at least one feature of the line")
+        _require(self.source.startswith(("9702/", "8702/")), "source", self.source,
+                 "must cite the published 9702 paper whose scheme gives this point")
+
+    def describe(self, unit: str) -> str:
+        needs = "; ".join(f.describe(unit) for f in self.needs)
+        loses = "; ".join(f.describe(unit) for f in self.loses)
+        return f"needs: {needs}" + (f"; lost if: {loses}" if loses else "")
+
+
+@dataclass(frozen=True)
+class SketchAxes:
+    """The printed axes: time from 0 to ``t_max`` (s) in divisions of ``t_division``, the
+    quantity (``symbol``, ``unit`` in plain text) from ``y_min`` to ``y_max`` in ``y_division``s."""
+
+    quantity: str
+    symbol: str
+    unit: str
+    t_max: float
+    t_division: float
+    y_max: float
+    y_division: float
+    y_min: float = 0.0
+
+    def __post_init__(self):
+        _require(self.t_max > 0 and self.t_division > 0, "t_max", self.t_max, "must be positive")
+        _require(self.y_max > self.y_min and self.y_division > 0, "y_max", self.y_max,
+                 f"must be above y_min={self.y_min}")
+        for name, span, division in (("t_max", self.t_max, self.t_division),
+                                     ("y_max", self.y_max - self.y_min, self.y_division)):
+            count = span / division
+            _require(abs(count - round(count)) < 1e-6 and 2 <= round(count) <= 20, name, span,
+                     f"must be 2 to 20 whole divisions of {division}")
+
+    def browser_data(self) -> dict:
+        return {"t": [0.0, self.t_max], "y": [self.y_min, self.y_max], "quantity": self.quantity,
+                "symbol": self.symbol, "unit": unit_text(self.unit),
+                "tDivision": self.t_division, "yDivision": self.y_division}
+
+
+@dataclass(frozen=True)
+class SketchTolerance:
+    """How exactly a feature must be drawn, as shares of the axes: a value within ``value`` of
+    the y span is at it (and zero within it), a time within ``time`` of the t span, a change of
+    more than ``step`` of the y span within that time is a step, and two gradients differ when
+    they differ by more than ``curve`` of the larger."""
+
+    value: float = 0.05
+    time: float = 0.04
+    step: float = 0.2
+    curve: float = 0.3
+
+    def __post_init__(self):
+        for name in ("value", "time", "step", "curve"):
+            share = getattr(self, name)
+            _require(0 < share < 0.5, name, share, "must be a share of the axes between 0 and 0.5")
+
+    def browser_data(self) -> dict:
+        return {"value": self.value, "time": self.time, "step": self.step, "curve": self.curve}
+
+
+@dataclass(frozen=True)
+class WrongSketch:
+    """A wrong line a student draws, named, with the marking points it still earns (by index):
+    the tests draw it by pointer and build it by keyboard, and the key says what it keeps."""
+
+    name: str
+    line: tuple[tuple[float, float], ...]
+    keeps: tuple[int, ...]
+
+
+@dataclass(frozen=True)
+class SketchPart(NoValue):
+    """A sketch on the question's axes, marked on its points (each a B1). ``model`` is the
+    right line (the key's figure, and what the tests draw); ``wrong`` are lines students draw,
+    with the points each keeps."""
+
+    prompt: str
+    axes: SketchAxes
+    points: tuple[SketchPoint, ...]
+    model: tuple[tuple[float, float], ...]
+    wrong: tuple[WrongSketch, ...] = ()
+    tolerance: SketchTolerance = field(default_factory=SketchTolerance)
+    kind: ClassVar[str] = "sketch"
+    asks: ClassVar[str] = "sketch"
+    revisit: ClassVar[str] = ""
+
+    def __post_init__(self):
+        object.__setattr__(self, "model", _line(self.model))
+        _require(len(self.model) >= 2, "model", self.model, "must hold at least two points")
+        _require(bool(self.points), "points", self.points, "must hold the scheme's marking points")
+        self._check_inside(self.model, "model")
+        for wrong in self.wrong:
+            self._check_inside(_line(wrong.line), f"wrong '{wrong.name}'")
+            _require(all(0 <= i < len(self.points) for i in wrong.keeps), "keeps", wrong.keeps,
+                     f"must index the {len(self.points)} marking points")
+
+    def _check_inside(self, line, name: str) -> None:
+        times = [t for t, _ in line]
+        _require(all(b >= a for a, b in itertools.pairwise(times)), name, line, "must run forward in time")
+        _require(all(0 <= t <= self.axes.t_max + 1e-9 and self.axes.y_min - 1e-9 <= y <= self.axes.y_max + 1e-9
+                     for t, y in line), name, line, "must lie inside the axes")
+
+    @property
+    def answer_text(self) -> str:
+        """The key in words: each marking point with the features it reads."""
+        return " ".join(f"{point.text} (B1: {point.describe(self.axes.unit)})." for point in self.points)
+
+    def browser_data(self, part_id: str) -> dict:
+        return {"id": part_id, "kind": self.kind, "prompt": self.prompt, "axes": self.axes.browser_data(),
+                "tolerance": self.tolerance.browser_data(),
+                "points": [{"text": p.text, "needs": [f.browser_data() for f in p.needs],
+                            "loses": [f.browser_data() for f in p.loses]} for p in self.points]}
+
+
+def _line(points) -> tuple[tuple[float, float], ...]:
+    line = tuple((float(t), float(y)) for t, y in points)
+    _require(all(math.isfinite(t) and math.isfinite(y) for t, y in line), "line", line, "must be finite numbers")
+    return line

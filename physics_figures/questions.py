@@ -141,7 +141,8 @@ class Question:
     def __post_init__(self):
         readings = [p for p in self.parts if p.kind == "graph"]
         # a "which graph?" item shows its graph too: its options are sketches drawn from it
-        sketches = any(p.kind == "mcq" and p.sketches for p in self.parts)
+        # (and a sketch part may be drawn from one: parts.sketch)
+        sketches = any((p.kind == "mcq" and p.sketches) or getattr(p, "may_show_graph", False) for p in self.parts)
         _require(bool(readings) == (self.graph is not None) or (sketches and not readings), "graph", self.graph,
                  f"goes with a part read from it (GraphPart) in {self.key}: both or neither")
         carried = [r for p in self.parts for r in getattr(p, "readings", ())]

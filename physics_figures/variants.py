@@ -26,7 +26,7 @@ from .questions import Question
 
 #: What a template asks for (data-kind): a number, a choice of four, a reading of a graph,
 #: a written explanation.
-KINDS = ("numeric", "mcq", "graph", "explain")
+KINDS = ("numeric", "mcq", "graph", "explain", "sketch")
 #: Fresh-number templates give the site at least this many variants, and keep at least
 #: MIN_RESERVE more that the site never ships: the teacher's worksheets, tests and Moodle
 #: file draw only from those (issue 26), so no student has met a sheet's numbers. Templates

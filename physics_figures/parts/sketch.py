@@ -10,6 +10,7 @@ from __future__ import annotations
 import itertools
 import math
 from dataclasses import dataclass, field
+from html import escape
 from typing import ClassVar
 
 from ..notation import format_number
@@ -190,6 +191,8 @@ class SketchPart(NoValue):
     kind: ClassVar[str] = "sketch"
     asks: ClassVar[str] = "sketch"
     revisit: ClassVar[str] = ""
+    #: Its question may print a graph to sketch from (9702/21/M/J/23 Q3: force from momentum).
+    may_show_graph: ClassVar[bool] = True
 
     def __post_init__(self):
         object.__setattr__(self, "model", _line(self.model))
@@ -213,13 +216,98 @@ class SketchPart(NoValue):
         return " ".join(f"{point.text} (B1: {point.describe(self.axes.unit)})." for point in self.points)
 
     def browser_data(self, part_id: str) -> dict:
+        from ..figures.sketch_axes import axes_svg  # SVG text only: no matplotlib
+
         return {"id": part_id, "kind": self.kind, "prompt": self.prompt, "axes": self.axes.browser_data(),
+                "svg": axes_svg(self.axes),
                 "tolerance": self.tolerance.browser_data(),
                 "points": [{"text": p.text, "needs": [f.browser_data() for f in p.needs],
                             "loses": [f.browser_data() for f in p.loses]} for p in self.points]}
+
+
+def form_html(base: str, part: dict) -> str:
+    """The part's form on the page, from its browser data: the axes to draw on (the SVG, whose
+    drawing area alone takes touch for the pen), Undo and Clear, and the keyboard builder (a
+    start value, then segments), whose every step is announced in the status line."""
+    unit = part["axes"]["unit"]
+    options = "".join(f'<option value="{value}">{words}</option>' for value, words in (
+        ("rising", "rising"), ("falling", "falling"), ("level", "level"), ("step-up", "a step up"),
+        ("step-down", "a step down")))
+    shapes = "".join(f'<option value="{value}">{words}</option>' for value, words in (
+        ("straight", "straight"), ("steeper", "getting steeper (curving up)"),
+        ("less", "getting less steep (curving over)")))
+    field = ('<label class="q-field" for="{id}"><span>{label}</span>'
+             '<input type="number" step="any" class="q-sketch-{name}" id="{id}"{value}></label>')
+    return (
+        f'<div class="q-sketch-pad" data-unit="{escape(unit)}">'
+        f'<div class="q-sketch-draw">{part["svg"]}</div>'
+        '<div class="q-sketch-tools"><button type="button" class="q-sketch-undo">Undo</button>'
+        '<button type="button" class="q-sketch-clear">Clear the line</button></div>'
+        '<details class="q-sketch-keys"><summary>Build the line from segments (keyboard)</summary>'
+        + field.format(id=f"{base}-start", label=f"Start value at t = 0 ({unit})", name="start", value=' value="0"')
+        + '<button type="button" class="q-sketch-set-start">Start the line here</button>'
+        f'<label class="q-field" for="{base}-kind"><span>Next segment</span>'
+        f'<select class="q-sketch-kind" id="{base}-kind">{options}</select></label>'
+        f'<label class="q-field" for="{base}-shape"><span>Its gradient</span>'
+        f'<select class="q-sketch-shape" id="{base}-shape">{shapes}</select></label>'
+        + field.format(id=f"{base}-until", label="Until t = (s)", name="until", value="")
+        + field.format(id=f"{base}-to", label=f"To the value ({unit})", name="to", value="")
+        + '<button type="button" class="q-sketch-add">Add the segment</button></details>'
+        f'<p class="q-sketch-status" aria-live="polite" id="{base}-status"></p></div>')
 
 
 def _line(points) -> tuple[tuple[float, float], ...]:
     line = tuple((float(t), float(y)) for t, y in points)
     _require(all(math.isfinite(t) and math.isfinite(y) for t, y in line), "line", line, "must be finite numbers")
     return line
+
+
+# ------------------------------------------------------------------ the part on paper and in Moodle
+# What the sheets, the key and Moodle print of a sketch part (physics_figures.worksheets):
+# blank axes to draw on, the key's axes with the model line and its features, and the grader's
+# information (Moodle has no sketch type: an essay, CLARIFICATIONS, Papers).
+
+def _feature_items(part: SketchPart) -> list[str]:
+    return [f"{point.text} (B1; {point.describe(part.axes.unit)}; {point.source})" for point in part.points]
+
+
+def sheet_latex(part: SketchPart, prompt: str, marks: int, tex) -> str:
+    """On the question sheet: the prompt, then the blank axes to sketch on, then the marks."""
+    from ..figures.sketch_axes import axes_tikz  # TikZ text only: no matplotlib
+
+    return (f"\\par\\vspace{{4pt}}\\needspace{{8cm}}{tex(prompt)}\\par\\begin{{center}}{axes_tikz(part.axes)}"
+            f"\\end{{center}}\\partmarks{{{marks}}}\\par")
+
+
+def key_latex(part: SketchPart, label: str, marks: int, tex) -> list[str]:
+    """In the key: the model line on the axes, then each feature that earns a B1."""
+    from ..figures.sketch_axes import axes_tikz
+
+    items = "\n".join(f"\\item {tex(item)}" for item in _feature_items(part))
+    return [f"\\textbf{{{tex(label)}A sketch marked on its features}} \\hfill [{marks}]",
+            f"\\begin{{center}}{axes_tikz(part.axes, line=part.model)}\\end{{center}}",
+            f"\\begin{{itemize}}[leftmargin=1.5em,itemsep=0pt,topsep=2pt]\n{items}\n\\end{{itemize}}"]
+
+
+def sheet_html(part: SketchPart, prompt: str, marks_html: str) -> str:
+    """On the HTML sheet: the prompt, the blank axes (inline SVG), the marks."""
+    return (f'<div class="sb-part"><p>{escape(prompt)}</p><figure class="sb-graph">{part.browser_data("a")["svg"]}'
+            f'</figure><p class="sb-answer">{marks_html}</p></div>')
+
+
+def key_html(part: SketchPart, label: str, marks_html: str) -> str:
+    from ..figures.sketch_axes import axes_svg
+
+    items = "".join(f"<li>{escape(item)}</li>" for item in _feature_items(part))
+    return (f'<p class="sb-key-answer"><strong>{escape(label)}A sketch marked on its features</strong> '
+            f'{marks_html}</p><figure class="sb-graph">{axes_svg(part.axes, line=part.model)}</figure>'
+            f"<ul>{items}</ul>")
+
+
+def grader_html(part: SketchPart) -> str:
+    """Moodle's grader information for the essay a sketch part exports as: each B1 feature, and
+    the wrong sketches students draw with the marks they keep."""
+    items = "".join(f"<li>{escape(item)}</li>" for item in _feature_items(part))
+    wrong = "".join(f"<li>{escape(w.name)}: {len(w.keeps)}/{len(part.points)}</li>" for w in part.wrong)
+    return (f"<p><strong>Marking the sketch: one B1 for each feature</strong></p><ul>{items}</ul>"
+            + (f"<p><strong>Sketches students draw, and their marks</strong></p><ul>{wrong}</ul>" if wrong else ""))

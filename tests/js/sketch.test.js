@@ -82,6 +82,17 @@ test("rising, falling and level, with the gradient's trend", () => {
   assert.ok(!holds({ is: "level", from: 0, to: 10 }, straight));
 });
 
+test("a straight line with a corner, then level, is not a curve of decreasing gradient", () => {
+  const corner = [
+    [0, 0],
+    [5, 40],
+    [10, 40],
+  ];
+  assert.ok(!holds({ is: "rising", from: 0, to: 10, gradient: "decreasing" }, corner));
+  const curve = drawn((t) => 40 * Math.tanh(t / 5), 0, 10);
+  assert.ok(holds({ is: "rising", from: 0, to: 10, gradient: "decreasing" }, curve));
+});
+
 test("a hand's wobble does not turn a straight line into a curve", () => {
   const wobbly = drawn((t) => 4 * t + 0.8 * Math.sin(7 * t), 0, 10);
   assert.ok(holds({ is: "rising", from: 0, to: 10, gradient: "constant" }, wobbly));

@@ -72,15 +72,27 @@
     return true;
   }
 
-  /* How the gradient changes through a window: the chord's gradient over its first half
-   * against its second half. */
+  /* How the gradient changes through a window, from the chords' gradients over its four
+   * quarters: "constant" when they agree within `curve` of the largest; "decreasing" when the
+   * second is clearly below the first and none climbs back (a straight line with a corner
+   * then level is not a curve: its first two quarters agree); "increasing", the same read
+   * backwards; else "" (a wave). */
   function gradientTrend(window, size) {
     var ys = window.ys,
-      half = Math.floor(ys.length / 2);
-    var first = Math.abs(ys[half] - ys[0]),
-      second = Math.abs(ys[ys.length - 1] - ys[half]);
-    if (Math.abs(second - first) <= size.curve * Math.max(first, second)) return "constant";
-    return second > first ? "increasing" : "decreasing";
+      q = ys.length - 1;
+    var g = [0, 1, 2, 3].map(function (i) {
+      return Math.abs(ys[Math.round(((i + 1) * q) / 4)] - ys[Math.round((i * q) / 4)]);
+    });
+    var most = Math.max.apply(null, g);
+    if (most - Math.min.apply(null, g) <= size.curve * most) return "constant";
+    if (easing(g, size.curve / 2)) return "decreasing";
+    return easing(g.slice().reverse(), size.curve / 2) ? "increasing" : "";
+  }
+
+  function easing(g, margin) {
+    if (!(g[1] < g[0] * (1 - margin))) return false;
+    for (var i = 1; i < g.length; i++) if (g[i] > g[i - 1] * (1 + margin)) return false;
+    return true;
   }
 
   /* What the line does through [from, to]: "rising", "falling", "level" or "" (wavers, or

@@ -78,3 +78,52 @@ def test_a_feature_or_point_that_cannot_be_read_is_refused_by_name():
     with pytest.raises(ValueError, match="model"):
         SketchPart("Sketch it.", axes, (SketchPoint("x", (Feature("start", value="zero"),), "9702/21/M/J/23 Q3(c)"),),
                    model=((0.0, 0.0), (5.0, 20.0)))
+
+
+def test_the_pull_is_the_gradient_plus_the_friction():
+    from physics_figures.models import applied_force
+
+    assert applied_force(3.0, 2.0) == pytest.approx(5.0)  # 9702/21/M/J/23 Q3: X = F + 2.0 N
+    assert applied_force(-1.0, 2.0) == pytest.approx(1.0)
+    with pytest.raises(ValueError, match="opposing_force"):
+        applied_force(3.0, -2.0)
+
+
+# ------------------------------------------------------------------ on paper and in Moodle
+
+def test_the_sheets_print_blank_axes_and_the_key_lists_the_features():
+    from physics_figures.worksheets import plan, select
+    from physics_figures.worksheets.html import key_body, sheet_body
+    from physics_figures.worksheets.latex import answer_key, question_sheet
+
+    keys = [t.key for t in sketches.TEMPLATES]
+    sheet = plan("s", "Sketches", select(templates=keys), versions=1, seed=3)
+    version = sheet.versions[0]
+    # a tie (~) prints as a space
+    tex, key = question_sheet(sheet, version), answer_key(sheet, version).replace("~", " ")
+    assert tex.count("\\begin{tikzpicture}") == len(keys)  # the axes, and no line on them
+    assert "line width=1.2pt" not in tex
+    for item in version.items:
+        part = item.question.parts[0]
+        html, html_key = sheet_body(item.question), key_body(item.question)
+        assert 'class="q-sketch-axes"' in html and "q-sketch-model" not in html
+        assert "q-sketch-model" in html_key
+        for point in part.points:
+            assert point.text in key and point.source in key
+            assert point.text in html_key
+
+
+def test_moodle_exports_an_essay_with_the_features_as_the_graders_information():
+    import xml.etree.ElementTree as ET
+
+    from physics_figures.worksheets import moodle as moodle_export
+
+    tree, _ = moodle_export.export([sketches.TEMPLATES[1]])
+    essays = [q for q in tree.getroot().iter("question") if q.get("type") == "essay"]
+    assert len(essays) == len(sketches.TEMPLATES[1].reserve_variants) >= 4
+    for essay in essays:
+        grader = essay.find("graderinfo/text").text
+        assert "one B1 for each feature" in grader and "9702/21/M/J/23 Q3(c)" in grader
+        assert any(f.get("name", "").endswith("-axes.svg") for f in essay.iter("file"))
+        assert "@@PLUGINFILE@@/" in essay.find("questiontext/text").text
+    assert ET.tostring(tree.getroot())

@@ -85,7 +85,7 @@ def axes_svg(axes, *, line=None, label: str = "") -> str:
         points = " ".join(f"{_n(x)},{_n(y)}" for x, y in (place(axes, t, v) for t, v in line))
         drawn = (f'<polyline class="q-sketch-model" points="{points}" fill="none" stroke="{LINE}" '
                  'stroke-width="2.5" stroke-linejoin="round" stroke-linecap="round"/>')
-    name = escape(label or f"Axes: {axes.quantity} {_label(axes)} against time t / s")
+    name = escape(label or f"Axes to sketch on: {axes.quantity} / {_label(axes).split(' / ')[1]} against time / s")
     return (
         f'<svg xmlns="http://www.w3.org/2000/svg" class="q-sketch-axes" viewBox="0 0 {WIDTH} {HEIGHT}" '
         f'width="{WIDTH}" height="{HEIGHT}" role="img" aria-label="{name}" '

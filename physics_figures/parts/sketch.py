@@ -188,6 +188,8 @@ class SketchPart(NoValue):
     model: tuple[tuple[float, float], ...]
     wrong: tuple[WrongSketch, ...] = ()
     tolerance: SketchTolerance = field(default_factory=SketchTolerance)
+    #: The section a sketch that misses a feature sends the student back to (bank.sections).
+    see: str | None = None
     kind: ClassVar[str] = "sketch"
     asks: ClassVar[str] = "sketch"
     revisit: ClassVar[str] = ""
@@ -218,7 +220,8 @@ class SketchPart(NoValue):
     def browser_data(self, part_id: str) -> dict:
         from ..figures.sketch_axes import axes_svg  # SVG text only: no matplotlib
 
-        return {"id": part_id, "kind": self.kind, "prompt": self.prompt, "axes": self.axes.browser_data(),
+        return {"id": part_id, "kind": self.kind, "prompt": self.prompt, "see": self.see,
+                "axes": self.axes.browser_data(),
                 "svg": axes_svg(self.axes),
                 "tolerance": self.tolerance.browser_data(),
                 "points": [{"text": p.text, "needs": [f.browser_data() for f in p.needs],

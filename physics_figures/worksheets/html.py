@@ -15,6 +15,7 @@ from html import escape
 
 from .. import textformat
 from ..notation import join_units
+from ..parts import sketch as sketch_part
 from ..questions import OPTION_LETTERS, Question, unit_text
 from .latex import (
     LINES_PER_MARK,
@@ -65,6 +66,8 @@ def _sheet_part(question: Question, index: int, marks: int) -> str:
     if part.kind == "mcq":
         return (f'<div class="sb-part"><p>{prompt}</p>{_options(part)}<p class="sb-answer">Answer (A, B, C or D): '
                 f'<span class="sb-box"></span> {_marks(marks)}</p></div>')
+    if part.kind == "sketch":  # blank axes to sketch on
+        return sketch_part.sheet_html(part, label + part.prompt, _marks(marks))
     if part.kind == "explain":
         lines = '<span class="sb-line"></span>' * (LINES_PER_MARK * marks)
         return (f'<div class="sb-part"><p>{prompt}</p><div class="sb-lines">{lines}</div>'
@@ -100,6 +103,8 @@ def _key_part(question: Question, index: int, marks: int) -> str:
                         if letter != part.answer)
         return (f'<p class="sb-key-answer"><strong>{plain(label)}{part.answer}: {rich(right.text)}</strong> '
                 f"{_marks(marks)}</p><ul>{wrong}</ul>")
+    if part.kind == "sketch":  # the model line on the axes, and each feature's B1
+        return sketch_part.key_html(part, question.label(index), _marks(marks))
     if part.kind == "explain":
         return (f'<p class="sb-key-answer"><strong>{plain(question.label(index))}Model answer</strong> '
                 f"{_marks(marks)}</p><p>{rich(part.model_answer)}</p>")

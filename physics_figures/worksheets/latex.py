@@ -22,6 +22,7 @@ import sympy
 from .. import marking, textformat
 from ..bank._common import w as working_number
 from ..notation import format_number, join_units, round_number
+from ..parts import sketch as sketch_part
 from ..questions import OPTION_LETTERS, Question, unit_text
 from . import DATA_LINE, Sheet, Version, part_marks
 
@@ -228,6 +229,8 @@ def _part_body(question: Question, index: int, marks: int) -> str:
                 "\\begin{enumerate}[label=\\textbf{\\Alph*}, itemsep=1pt, topsep=4pt]\n"
                 + options + "\n\\end{enumerate}\n" + r"Answer (A, B, C or D): \gridbox \partmarks{"
                 + str(marks) + "}\\par")
+    if part.kind == "sketch":  # blank axes to sketch on
+        return sketch_part.sheet_latex(part, label + part.prompt, marks, tex)
     if part.kind == "explain":
         return (f"\\par\\vspace{{4pt}}\\needspace{{4\\baselineskip}}{tex(label + part.prompt)}"
                 f"\\writinglines{{{LINES_PER_MARK * marks}}}\\vspace{{2pt}}\\partmarks{{{marks}}}\\par")
@@ -408,6 +411,8 @@ def _key_part(question: Question, index: int, marks: int) -> list[str]:
             f"(\\textbf{{{tex(option_marks(question, index))}}}). {tex(option.feedback)}"
             for letter, option in wrong) + "\n\\end{itemize}")
         return out
+    if part.kind == "sketch":  # the model line on the axes, and each feature's B1
+        return out + sketch_part.key_latex(part, question.label(index), marks, tex)
     if part.kind == "explain":  # "Model answer", not "Answer Model answer", for a part alone
         out.append(f"\\textbf{{{tex(question.label(index))}Model answer}} \\hfill [{marks}]\\par "
                    f"{rich(part.model_answer)}")

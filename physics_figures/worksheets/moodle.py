@@ -334,6 +334,18 @@ def _part(out: _Export, template: Template, index: int, question: Question, part
                    for letter, option, text in zip(OPTION_LETTERS, part.options, shown, strict=True)]
         out.multichoice(name, idnumber, stem + ask + "</p>", marks, general, files, options,
                         option_files=option_files)
+    elif part.kind == "sketch":
+        # no sketch type in Moodle: an essay on the printed axes, the features as the grader's information
+        from ..figures.sketch_axes import HEIGHT, WIDTH, axes_svg  # SVG text only: no matplotlib
+        from ..parts.sketch import grader_html
+
+        axes_file = f"{idnumber}-axes.svg"
+        axes = (f'<p><img src="@@PLUGINFILE@@/{axes_file}" alt="{_escape(part.axes.quantity)} against time: '
+                f'axes to sketch on" width="{WIDTH}" height="{HEIGHT}"></p><p>Sketch the line on these axes (on '
+                "paper, or as a drawing you attach) and describe its shape: where it starts, where it rises, falls "
+                "or is level, and how its gradient changes.</p>")
+        out.essay(name, idnumber, stem + ask + f" [{marks}]</p>" + axes, marks, general,
+                  {**files, axes_file: axes_svg(part.axes).encode()}, grader_html(part) + _scheme_html(question))
     elif part.kind == "explain":
         grader = (f"<p><strong>Model answer</strong></p>{textformat.to_html(part.model_answer)}"
                   + _scheme_html(question) + how_marked)

@@ -128,6 +128,7 @@ class QuestionDirective(SphinxDirective):
         store.questions(self.env).setdefault(self.env.docname, []).append({
             "key": data.key, "title": title, "marks": data.marks, "try_first": node["template"]["tryFirst"],
             "graph": data.graph is not None,  # the page loads the enlarged graph view
+            "sketch": any(p.kind == "sketch" for p in data.parts),  # the page loads the sketch pad
             "answers": [data.label(i) + f"{p.prompt}: {p.answer_text}" for i, p in enumerate(data.parts)],
             "scheme": [child.deepcopy() for child in worked.children],
         })
@@ -144,6 +145,11 @@ def answer_lines(label: str, part, marks: int) -> list[nodes.Node]:
             options += nodes.list_item("", *(sketch_nodes(option.sketch) if option.sketch else text_nodes(option.text)))
         return [nodes.paragraph(text=f"{label}{part.prompt}"), options,
                 nodes.paragraph(text="Answer (A, B, C or D): " + "." * 8 + tail)]
+    if part.kind == "sketch":  # blank axes to sketch on (the site's pad draws on the same axes)
+        from physics_figures.figures.sketch_axes import axes_svg, axes_tikz
+
+        return [nodes.paragraph(text=f"{label}{part.prompt}"), nodes.raw("", axes_svg(part.axes), format="html"),
+                nodes.raw("", axes_tikz(part.axes), format="latex"), nodes.paragraph(text=tail.strip())]
     if part.kind == "explain":
         return [nodes.paragraph(text=f"{label}{part.prompt}")] + [
             nodes.paragraph(text="." * 70 + (tail if last else "")) for last in (False, False, False, True)]

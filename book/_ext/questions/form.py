@@ -15,6 +15,7 @@ from sphinx.util import logging
 
 from physics_figures import marking  # the rule table the browser's engine reads
 from physics_figures.notation import join_units  # a number never parts from its unit
+from physics_figures.parts.sketch import form_html as sketch_form_html  # the sketch kind's pad
 
 from . import schedule, store
 from .directive import question
@@ -199,12 +200,14 @@ def visit_question_form(self, node):
             html.append(_options_html(base, part))
         elif kind == "explain":
             html.append(_explain_html(base, part, data))
+        elif kind == "sketch":
+            html.append(sketch_form_html(base, part))
         else:
             hint = not getattr(self, "_q_unit_hint_written", False)
             self._q_unit_hint_written = True  # the translator is one page's: once a page
             html.append(_numeric_html(base, part, label, hint))
         html.append(f'<p class="q-feedback" id="{base}-feedback" role="status"></p><p class="q-part-marks"></p>')
-        if kind not in ("mcq", "explain"):
+        if kind not in ("mcq", "explain", "sketch"):
             html.append(_help_html(label))
         html.append("</fieldset>")
     new = ('<button type="button" class="q-new">New numbers</button>'
@@ -262,6 +265,11 @@ def add_assets(app, pagename, templatename, context, doctree):
         app.add_js_file("help-steps.js", loading_method="defer", priority=470)  # before questions.js (500)
         app.add_js_file("question-relabel.js", loading_method="defer")  # New numbers' words, shared
         app.add_js_file("questions.js", loading_method="defer")
+        # the sketch kind's marker and pad, only on the pages that ask a sketch
+        if any(item.get("sketch") for item in store.questions(app.env).get(pagename, ())):
+            app.add_css_file("sketch.css")
+            app.add_js_file("question-kinds/sketch.js", loading_method="defer", priority=450)
+            app.add_js_file("sketch-pad.js", loading_method="defer", priority=455)
         # the enlarged graph view, on the pages that print a question's graph
         if any(item.get("graph") for item in store.questions(app.env).get(pagename, ())):
             app.add_js_file("graph-view.js", loading_method="defer")

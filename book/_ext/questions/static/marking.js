@@ -38,7 +38,7 @@
     root.QuestionKinds ||
     (function () {
       var found = {};
-      ["numeric", "choice", "explain"].forEach(function (file) {
+      ["numeric", "choice", "explain", "sketch"].forEach(function (file) {
         var kind = require("./question-kinds/" + file + ".js");
         kind.kinds.forEach(function (name) {
           found[name] = kind;
@@ -82,13 +82,16 @@
     data.parts.forEach(function (part) {
       byPart[part.id] = [0, 0];
     });
+    // a marker that judges each of its part's lines itself (a sketch's features: earned[k] for
+    // the part's k-th line) is taken at its word
     data.marks.forEach(function (line, index) {
       var part = data.parts.filter(function (p) {
         return p.id === line.part;
       })[0];
       var result = results[line.part] || { code: "wrong" };
-      var ok =
-        part.kind === "explain"
+      var ok = Array.isArray(result.earned)
+        ? !!result.earned[byPart[line.part][1]]
+        : part.kind === "explain"
           ? ticked(data, result, index)
           : !line.roles.some(function (role) {
               return lostRoles(result).indexOf(role) >= 0;

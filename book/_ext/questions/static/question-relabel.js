@@ -14,7 +14,10 @@
       legend.textContent = root.Notation.joinUnits((data.parts.length > 1 ? "(" + part.id + ") " : "") + prompt);
       var positive = box.querySelector(".q-note .q-positive");
       if (positive && part.direction === "signed") positive.textContent = root.Notation.joinUnits(part.positive);
-      if (part.kind === "mcq") {
+      var kind = (root.QuestionKinds || {})[part.kind];
+      if (kind && kind.page && kind.page.relabel) {
+        kind.page.relabel(box, part); // its own form's words and figures (a sketch's axes)
+      } else if (part.kind === "mcq") {
         var choices = box.querySelectorAll(".q-choice");
         part.options.forEach(function (option, i) {
           choices[i].parentNode.querySelector(".q-option-text").innerHTML = option.html;

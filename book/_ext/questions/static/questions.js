@@ -139,8 +139,16 @@
       };
     }
 
+    // A kind that brings its own page side (a sketch's pad: static/sketch-pad.js) reads,
+    // fills and judges its answer itself.
+    function pageOf(part) {
+      var kind = (root.QuestionKinds || {})[part.kind];
+      return kind && kind.page;
+    }
+
     function answerOf(part) {
       var f = fields(part);
+      if (pageOf(part)) return pageOf(part).read(f.box, part);
       if (part.kind === "mcq") {
         var chosen = Array.prototype.filter.call(f.choices, function (c) {
           return c.checked;
@@ -172,7 +180,9 @@
 
     function fill(part, a) {
       var f = fields(part);
-      if (part.kind === "mcq") {
+      if (pageOf(part)) {
+        pageOf(part).fill(f.box, a);
+      } else if (part.kind === "mcq") {
         Array.prototype.forEach.call(f.choices, function (c) {
           c.checked = c.value === a.choice;
         });
@@ -238,6 +248,7 @@
       // A Check with nothing written is no attempt: it is not kept.
       var tried = data.parts.some(function (part) {
         var a = answerOf(part);
+        if (pageOf(part)) return pageOf(part).tried(a);
         return part.kind === "mcq"
           ? !!a.choice
           : part.kind === "explain"

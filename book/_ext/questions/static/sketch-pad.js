@@ -257,6 +257,18 @@
     field("add").addEventListener("click", function () {
       on.add(kind.value, shape.value, Number(field("until").value), Number(field("to").value));
     });
+    // Enter in a box adds what it is for (it would otherwise submit the form: Check)
+    [
+      ["start", "set-start"],
+      ["until", "add"],
+      ["to", "add"],
+    ].forEach(function (pair) {
+      field(pair[0]).addEventListener("keydown", function (event) {
+        if (event.key !== "Enter") return;
+        event.preventDefault();
+        field(pair[1]).click();
+      });
+    });
   }
 
   function buttons(box, pad) {
@@ -301,6 +313,12 @@
   var api = { attach: attach, segment: segment, segmentProblem: segmentProblem, page: page };
   if (typeof module === "object" && module.exports) module.exports = api;
   else {
+    // every sketch part's pad is ready for the pen from the start
+    var ready = function () {
+      Array.prototype.forEach.call(document.querySelectorAll('fieldset.q-part[data-kind="sketch"]'), padOf);
+    };
+    if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", ready);
+    else ready();
     root.SketchPad = api;
     // the kind's marker (question-kinds/sketch.js) loads first; the page's side joins it here
     (root.QuestionKinds = root.QuestionKinds || {}).sketch.page = page;

@@ -147,6 +147,9 @@ def test_each_sketch_earns_the_marks_its_features_give(site_dir, base_url, brows
                 assert said[0].startswith("The line starts at t = 0 s"), said
                 assert all(s.startswith("Added ") for s in said[1:]), said
             got.append((name, how, _check(page, form), f"{keeps}/{total} marks"))
+            # the feedback names each feature found (✓) and each missing (✗)
+            feedback = form.locator(".q-feedback").text_content()
+            got.append((name, how + " (feedback)", feedback.count("✓ ") + feedback.count("✗ "), total + 1))
     page.close()
     assert not errors
     wrong = [f"{name} by {how}: {score}, the features give {want}" for name, how, score, want in got if score != want]

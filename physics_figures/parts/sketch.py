@@ -14,7 +14,7 @@ from html import escape
 from typing import ClassVar
 
 from ..notation import format_number
-from .common import NoValue, _require, unit_text
+from .common import SCRIPTS, NoValue, _require, feedback_html, unit_text
 
 #: What a feature says of the line: where it starts or ends (zero, positive, negative), that it
 #: rises, falls or is level over a stretch of time (with its gradient constant, increasing or
@@ -193,8 +193,13 @@ class SketchPart(NoValue):
     kind: ClassVar[str] = "sketch"
     asks: ClassVar[str] = "sketch"
     revisit: ClassVar[str] = ""
-    #: Its question may print a graph to sketch from (9702/21/M/J/23 Q3: force from momentum).
-    may_show_graph: ClassVar[bool] = True
+    #: Its question may print a graph to sketch from (9702/21/M/J/23 Q3: force X from a
+    #: momentum-time graph).
+    drawn_from_graph: ClassVar[bool] = True
+    #: The marker, and the page's side of the part (it asks the pad: static/sketch-pad.js,
+    #: loaded with sketch.css only on the pages that ask a sketch).
+    browser_script: ClassVar[str] = str(SCRIPTS / "sketch.js")
+    page_assets: ClassVar[tuple[str, ...]] = ("sketch-pad.js", "sketch.css")
 
     def __post_init__(self):
         object.__setattr__(self, "model", _line(self.model))
@@ -227,8 +232,75 @@ class SketchPart(NoValue):
                 "points": [{"text": p.text, "needs": [f.browser_data() for f in p.needs],
                             "loses": [f.browser_data() for f in p.loses]} for p in self.points]}
 
+    # ------------------------------------------------------- the kind's hooks (parts/__init__.py)
 
-def form_html(base: str, part: dict) -> str:
+    @classmethod
+    def form_html(cls, part: dict, question: dict, *, base: str, label: str, page: dict) -> str:
+        """The axes to draw on (the drawing area alone takes touch for the pen), Undo and Clear,
+        and the keyboard builder, whose every step is announced."""
+        return _form_html(base, part) + feedback_html(base)
+
+    def print_lines(self, label: str, marks: int, paper) -> list:
+        """On paper and without JavaScript: the prompt, the blank axes, the marks."""
+        from ..figures.sketch_axes import axes_svg, axes_tikz  # SVG and TikZ text only
+
+        return [paper.line(f"{label}{self.prompt}"), *paper.figure(axes_svg(self.axes), axes_tikz(self.axes)),
+                paper.line(f"[{marks}]")]
+
+    def _features(self) -> list[str]:
+        return [f"{point.text} (B1; {point.describe(self.axes.unit)}; {point.source})" for point in self.points]
+
+    def latex_sheet(self, question, index: int, marks: int, sheet) -> str:
+        from ..figures.sketch_axes import axes_tikz
+
+        return (f"\\par\\vspace{{4pt}}\\needspace{{8cm}}{sheet.tex(question.label(index) + self.prompt)}\\par"
+                f"\\begin{{center}}{axes_tikz(self.axes)}\\end{{center}}\\partmarks{{{marks}}}\\par")
+
+    def latex_key(self, question, index: int, marks: int, sheet) -> list[str]:
+        """The model line on the axes, then each feature that earns a B1, with its paper."""
+        from ..figures.sketch_axes import axes_tikz
+
+        tex = sheet.tex
+        items = "\n".join(f"\\item {tex(item)}" for item in self._features())
+        return [f"\\textbf{{{tex(question.label(index))}A sketch marked on its features}} \\hfill [{marks}]",
+                f"\\begin{{center}}{axes_tikz(self.axes, line=self.model)}\\end{{center}}",
+                f"\\begin{{itemize}}[leftmargin=1.5em,itemsep=0pt,topsep=2pt]\n{items}\n\\end{{itemize}}"]
+
+    def html_sheet(self, question, index: int, marks: int, sheet) -> str:
+        from ..figures.sketch_axes import axes_svg
+
+        return (f'<div class="sb-part"><p>{escape(question.label(index) + self.prompt)}</p>'
+                f'<figure class="sb-graph">{axes_svg(self.axes)}</figure>'
+                f'<p class="sb-answer">{sheet.marks_html(marks)}</p></div>')
+
+    def html_key(self, question, index: int, marks: int, sheet) -> str:
+        from ..figures.sketch_axes import axes_svg
+
+        items = "".join(f"<li>{escape(item)}</li>" for item in self._features())
+        return (f'<p class="sb-key-answer"><strong>{escape(question.label(index))}A sketch marked on its features'
+                f'</strong> {sheet.marks_html(marks)}</p><figure class="sb-graph">'
+                f"{axes_svg(self.axes, line=self.model)}</figure><ul>{items}</ul>")
+
+    def moodle(self, out, item, question, index: int) -> None:
+        """No sketch type in Moodle: an essay on the printed axes (a file), with each feature's
+        B1 and the sketches students draw as the grader's information (CLARIFICATIONS, Papers)."""
+        from ..figures.sketch_axes import HEIGHT, WIDTH, axes_svg
+
+        axes_file = f"{item.idnumber}-axes.svg"
+        axes = (f'<p><img src="@@PLUGINFILE@@/{axes_file}" alt="{escape(self.axes.quantity)} against time: axes '
+                f'to sketch on" width="{WIDTH}" height="{HEIGHT}"></p><p>Sketch the line on these axes (on paper, '
+                "or as a drawing you attach) and describe its shape: where it starts, where it rises, falls or is "
+                "level, and how its gradient changes.</p>")
+        features = "".join(f"<li>{escape(text)}</li>" for text in self._features())
+        wrong = "".join(f"<li>{escape(w.name)}: {len(w.keeps)}/{len(self.points)}</li>" for w in self.wrong)
+        grader = (f"<p><strong>Marking the sketch: one B1 for each feature</strong></p><ul>{features}</ul>"
+                  + (f"<p><strong>Sketches students draw, and their marks</strong></p><ul>{wrong}</ul>" if wrong else "")
+                  + item.scheme + item.how_marked)
+        out.essay(item.name, item.idnumber, item.stem + item.ask + f" [{item.marks}]</p>" + axes, item.marks,
+                  item.general, {**item.files, axes_file: axes_svg(self.axes).encode()}, grader)
+
+
+def _form_html(base: str, part: dict) -> str:
     """The part's form on the page, from its browser data: the axes to draw on (the SVG, whose
     drawing area alone takes touch for the pen), Undo and Clear, and the keyboard builder (a
     start value, then segments), whose every step is announced in the status line."""
@@ -263,54 +335,3 @@ def _line(points) -> tuple[tuple[float, float], ...]:
     line = tuple((float(t), float(y)) for t, y in points)
     _require(all(math.isfinite(t) and math.isfinite(y) for t, y in line), "line", line, "must be finite numbers")
     return line
-
-
-# ------------------------------------------------------------------ the part on paper and in Moodle
-# What the sheets, the key and Moodle print of a sketch part (physics_figures.worksheets):
-# blank axes to draw on, the key's axes with the model line and its features, and the grader's
-# information (Moodle has no sketch type: an essay, CLARIFICATIONS, Papers).
-
-def _feature_items(part: SketchPart) -> list[str]:
-    return [f"{point.text} (B1; {point.describe(part.axes.unit)}; {point.source})" for point in part.points]
-
-
-def sheet_latex(part: SketchPart, prompt: str, marks: int, tex) -> str:
-    """On the question sheet: the prompt, then the blank axes to sketch on, then the marks."""
-    from ..figures.sketch_axes import axes_tikz  # TikZ text only: no matplotlib
-
-    return (f"\\par\\vspace{{4pt}}\\needspace{{8cm}}{tex(prompt)}\\par\\begin{{center}}{axes_tikz(part.axes)}"
-            f"\\end{{center}}\\partmarks{{{marks}}}\\par")
-
-
-def key_latex(part: SketchPart, label: str, marks: int, tex) -> list[str]:
-    """In the key: the model line on the axes, then each feature that earns a B1."""
-    from ..figures.sketch_axes import axes_tikz
-
-    items = "\n".join(f"\\item {tex(item)}" for item in _feature_items(part))
-    return [f"\\textbf{{{tex(label)}A sketch marked on its features}} \\hfill [{marks}]",
-            f"\\begin{{center}}{axes_tikz(part.axes, line=part.model)}\\end{{center}}",
-            f"\\begin{{itemize}}[leftmargin=1.5em,itemsep=0pt,topsep=2pt]\n{items}\n\\end{{itemize}}"]
-
-
-def sheet_html(part: SketchPart, prompt: str, marks_html: str) -> str:
-    """On the HTML sheet: the prompt, the blank axes (inline SVG), the marks."""
-    return (f'<div class="sb-part"><p>{escape(prompt)}</p><figure class="sb-graph">{part.browser_data("a")["svg"]}'
-            f'</figure><p class="sb-answer">{marks_html}</p></div>')
-
-
-def key_html(part: SketchPart, label: str, marks_html: str) -> str:
-    from ..figures.sketch_axes import axes_svg
-
-    items = "".join(f"<li>{escape(item)}</li>" for item in _feature_items(part))
-    return (f'<p class="sb-key-answer"><strong>{escape(label)}A sketch marked on its features</strong> '
-            f'{marks_html}</p><figure class="sb-graph">{axes_svg(part.axes, line=part.model)}</figure>'
-            f"<ul>{items}</ul>")
-
-
-def grader_html(part: SketchPart) -> str:
-    """Moodle's grader information for the essay a sketch part exports as: each B1 feature, and
-    the wrong sketches students draw with the marks they keep."""
-    items = "".join(f"<li>{escape(item)}</li>" for item in _feature_items(part))
-    wrong = "".join(f"<li>{escape(w.name)}: {len(w.keeps)}/{len(part.points)}</li>" for w in part.wrong)
-    return (f"<p><strong>Marking the sketch: one B1 for each feature</strong></p><ul>{items}</ul>"
-            + (f"<p><strong>Sketches students draw, and their marks</strong></p><ul>{wrong}</ul>" if wrong else ""))

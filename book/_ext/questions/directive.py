@@ -128,37 +128,50 @@ class QuestionDirective(SphinxDirective):
         store.questions(self.env).setdefault(self.env.docname, []).append({
             "key": data.key, "title": title, "marks": data.marks, "try_first": node["template"]["tryFirst"],
             "graph": data.graph is not None,  # the page loads the enlarged graph view
-            "sketch": any(p.kind == "sketch" for p in data.parts),  # the page loads the sketch pad
+            "assets": sorted({asset for part in data.parts for asset in part.page_assets}),  # its kinds' own
             "answers": [data.label(i) + f"{p.prompt}: {p.answer_text}" for i, p in enumerate(data.parts)],
             "scheme": [child.deepcopy() for child in worked.children],
         })
 
 
-def answer_lines(label: str, part, marks: int) -> list[nodes.Node]:
-    """What a part prints on paper: its options and a box for the letter, lines for an
-    explanation, or a line for a value (and its direction); each ends with the part's
-    marks, [2], as on a Cambridge paper."""
-    tail = f" [{marks}]"
-    if part.kind == "mcq":
-        options = nodes.enumerated_list(enumtype="upperalpha", classes=["q-options-print"])
-        for option in part.options:
-            options += nodes.list_item("", *(sketch_nodes(option.sketch) if option.sketch else text_nodes(option.text)))
-        return [nodes.paragraph(text=f"{label}{part.prompt}"), options,
-                nodes.paragraph(text="Answer (A, B, C or D): " + "." * 8 + tail)]
-    if part.kind == "sketch":  # blank axes to sketch on (the site's pad draws on the same axes)
-        from physics_figures.figures.sketch_axes import axes_svg, axes_tikz
+class Paper:
+    """What a part kind's ``print_lines`` builds its printed lines with (docutils nodes): the
+    part on paper and on the page without JavaScript (physics_figures/parts/__init__.py)."""
 
-        return [nodes.paragraph(text=f"{label}{part.prompt}"), nodes.raw("", axes_svg(part.axes), format="html"),
-                nodes.raw("", axes_tikz(part.axes), format="latex"), nodes.paragraph(text=tail.strip())]
-    if part.kind == "explain":
-        return [nodes.paragraph(text=f"{label}{part.prompt}")] + [
-            nodes.paragraph(text="." * 70 + (tail if last else "")) for last in (False, False, False, True)]
-    line = f"{label}{part.prompt} = " + "." * 28
-    if part.direction == "choice":
-        line += " direction: " + "." * 16
-    # the question sheet draws its own line from this data (book/_latex/latex_question_sheets.py)
-    return [nodes.paragraph(text=line + tail, classes=["q-answer-line"], prompt=f"{label}{part.prompt}",
-                            marks=marks, direction=part.direction == "choice")]
+    @staticmethod
+    def line(text: str, **attributes) -> nodes.paragraph:
+        """A line of plain text; attributes (classes, data) for the question sheet to read."""
+        return nodes.paragraph(text=text, **attributes)
+
+    @staticmethod
+    def options(items: list[list[nodes.Node]]) -> nodes.enumerated_list:
+        """Options lettered A, B, C, ..., each from its nodes."""
+        options = nodes.enumerated_list(enumtype="upperalpha", classes=["q-options-print"])
+        for item in items:
+            options += nodes.list_item("", *item)
+        return options
+
+    @staticmethod
+    def rich(source: str) -> list[nodes.Node]:
+        """Text in the bank's text format."""
+        return text_nodes(source)
+
+    @staticmethod
+    def figure(svg: str, tikz: str) -> list[nodes.Node]:
+        """A drawing given as SVG (the page) and TikZ (the PDF book): a sketch part's blank axes."""
+        return [nodes.raw("", svg, format="html"), nodes.raw("", tikz, format="latex")]
+
+    @staticmethod
+    def sketch(sketch) -> list[nodes.Node]:
+        """A sketch graph (SVG on the page, TikZ in the PDF)."""
+        return sketch_nodes(sketch)
+
+
+def answer_lines(label: str, part, marks: int) -> list[nodes.Node]:
+    """What a part prints on paper, as its kind prints it (its options and a box for the
+    letter, lines for an explanation, a line for a value...); each ends with the part's
+    marks, [2], as on a Cambridge paper."""
+    return part.print_lines(label, marks, Paper)
 
 
 def sketch_nodes(sketch) -> list[nodes.Node]:

@@ -8,6 +8,7 @@
     markQuestion = engine.markQuestion,
     marksText = engine.marksText;
   var Notation = root.Notation;
+  var Kinds = root.QuestionKinds; // each part's kind reads, fills and relabels its own fieldset
 
   var STORE = "dynamics-questions:";
 
@@ -127,47 +128,15 @@
       var box = form.querySelector('[data-part="' + part.id + '"]');
       return {
         box: box,
-        value: box.querySelector(".q-value"),
-        unit: box.querySelector(".q-unit"),
-        direction: box.querySelector(".q-direction"),
         feedback: box.querySelector(".q-feedback"),
         marks: box.querySelector(".q-part-marks"),
-        choices: box.querySelectorAll(".q-choice"),
-        text: box.querySelector(".q-explain"),
-        ticks: box.querySelectorAll(".q-tick"),
         points: box.querySelector(".q-points"),
       };
     }
 
-    // A kind that brings its own page side (a sketch's pad: static/sketch-pad.js) reads,
-    // fills and judges its answer itself.
-    function pageOf(part) {
-      var kind = (root.QuestionKinds || {})[part.kind];
-      return kind && kind.page;
-    }
-
+    // each part's kind reads its own fieldset (static/question-kinds.js)
     function answerOf(part) {
-      var f = fields(part);
-      if (pageOf(part)) return pageOf(part).read(f.box, part);
-      if (part.kind === "mcq") {
-        var chosen = Array.prototype.filter.call(f.choices, function (c) {
-          return c.checked;
-        })[0];
-        return { choice: chosen ? chosen.value : "" };
-      }
-      if (part.kind === "explain") {
-        return {
-          text: f.text.value,
-          ticked: Array.prototype.filter
-            .call(f.ticks, function (t) {
-              return t.checked;
-            })
-            .map(function (t) {
-              return Number(t.value);
-            }),
-        };
-      }
-      return { value: f.value.value, unit: f.unit.value, direction: f.direction ? f.direction.value : "" };
+      return Kinds.of(part).read(fields(part).box, part);
     }
 
     function answers() {
@@ -179,23 +148,7 @@
     }
 
     function fill(part, a) {
-      var f = fields(part);
-      if (pageOf(part)) {
-        pageOf(part).fill(f.box, a);
-      } else if (part.kind === "mcq") {
-        Array.prototype.forEach.call(f.choices, function (c) {
-          c.checked = c.value === a.choice;
-        });
-      } else if (part.kind === "explain") {
-        f.text.value = a.text || "";
-        Array.prototype.forEach.call(f.ticks, function (t) {
-          t.checked = (a.ticked || []).indexOf(Number(t.value)) >= 0;
-        });
-      } else {
-        f.value.value = a.value || "";
-        f.unit.value = a.unit || "";
-        if (f.direction) f.direction.value = a.direction || "";
-      }
+      Kinds.of(part).fill(fields(part).box, part, a);
     }
 
     /* record: a Check (a new attempt); "ticks": a marking point ticked (updates it). */
@@ -247,13 +200,7 @@
       save(storeId(), { answers: answers(), checked: true });
       // A Check with nothing written is no attempt: it is not kept.
       var tried = data.parts.some(function (part) {
-        var a = answerOf(part);
-        if (pageOf(part)) return pageOf(part).tried(a);
-        return part.kind === "mcq"
-          ? !!a.choice
-          : part.kind === "explain"
-            ? !!a.text.trim()
-            : !!(a.value.trim() || a.unit.trim());
+        return Kinds.of(part).answered(answerOf(part));
       });
       if (record && key && tried) {
         var attempt = {

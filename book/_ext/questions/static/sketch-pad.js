@@ -276,9 +276,8 @@
     box.querySelector(".q-sketch-clear").addEventListener("click", pad.clear);
   }
 
-  /* The sketch part on the page (questions.js and the mock test call these through the kind):
-   * a part's box (fieldset.q-part[data-kind="sketch"]) holds one pad, made on first use; its
-   * answer is {line}; a variant with other numbers brings its own axes. */
+  /* A sketch part's fieldset holds one pad, made when the page starts (or on first use); a
+   * variant with other numbers brings its own axes (the kind, question-kinds/sketch.js, asks). */
   function padOf(box) {
     if (!box.sketchPad) box.sketchPad = attach(box.querySelector(".q-sketch-pad"), { onChange: changed(box) });
     return box.sketchPad;
@@ -289,28 +288,15 @@
       box.dispatchEvent(new Event("input", { bubbles: true }));
     };
   }
-  var page = {
-    setUp: padOf,
-    read: function (box) {
-      return { line: padOf(box).line() };
-    },
-    fill: function (box, answer) {
-      padOf(box).set(answer.line || []);
-    },
-    tried: function (answer) {
-      return (answer.line || []).length >= 2;
-    },
-    relabel: function (box, part) {
-      var holder = box.querySelector(".q-sketch-draw");
-      if (!part.svg || !holder) return;
-      var line = box.sketchPad ? box.sketchPad.line() : [];
-      holder.innerHTML = part.svg;
-      box.sketchPad = null;
-      padOf(box).set(line);
-    },
-  };
+  function relabel(box, part) {
+    var holder = box.querySelector(".q-sketch-draw");
+    if (!part.svg || !holder) return;
+    holder.innerHTML = part.svg;
+    box.sketchPad = null;
+    padOf(box);
+  }
 
-  var api = { attach: attach, segment: segment, segmentProblem: segmentProblem, page: page };
+  var api = { attach: attach, segment: segment, segmentProblem: segmentProblem, padOf: padOf, relabel: relabel };
   if (typeof module === "object" && module.exports) module.exports = api;
   else {
     // every sketch part's pad is ready for the pen from the start
@@ -320,7 +306,5 @@
     if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", ready);
     else ready();
     root.SketchPad = api;
-    // the kind's marker (question-kinds/sketch.js) loads first; the page's side joins it here
-    (root.QuestionKinds = root.QuestionKinds || {}).sketch.page = page;
   }
 })(this);

@@ -14,10 +14,54 @@
     };
   }
 
-  var kind = { kinds: ["explain"], mark: markExplanation };
+  /* The part's fieldset: a textarea .q-explain and, after Check, the points' ticks .q-tick, each
+   * the index of its line in the question's marks (form: ExplainPart.form_html). */
+  function read(box) {
+    return {
+      text: box.querySelector(".q-explain").value,
+      ticked: Array.prototype.filter
+        .call(box.querySelectorAll(".q-tick"), function (t) {
+          return t.checked;
+        })
+        .map(function (t) {
+          return Number(t.value);
+        }),
+    };
+  }
+
+  function fill(box, part, answer) {
+    box.querySelector(".q-explain").value = answer.text || "";
+    Array.prototype.forEach.call(box.querySelectorAll(".q-tick"), function (t) {
+      t.checked = (answer.ticked || []).indexOf(Number(t.value)) >= 0;
+    });
+  }
+
+  /* Another variant's points: each tick's line index and words, and the model answer. */
+  function relabel(box, part, data) {
+    var lines = data.marks.filter(function (m) {
+      return m.part === part.id;
+    });
+    Array.prototype.forEach.call(box.querySelectorAll(".q-tick"), function (tick, i) {
+      tick.value = String(data.marks.indexOf(lines[i]));
+      tick.parentNode.querySelector(".q-point-text").innerHTML = lines[i].html;
+    });
+    box.querySelector(".q-points .q-model-text").innerHTML = part.model;
+  }
+
+  var kind = {
+    kinds: ["explain"],
+    mark: markExplanation,
+    read: read,
+    fill: fill,
+    answered: function (answer) {
+      return !!String(answer.text || "").trim();
+    },
+    relabel: relabel,
+    selfMarked: true,
+  };
   if (typeof module === "object" && module.exports) module.exports = kind;
   else
     kind.kinds.forEach(function (name) {
-      (root.QuestionKinds = root.QuestionKinds || {})[name] = kind;
+      root.QuestionKinds.register(name, kind);
     });
 })(this);

@@ -211,14 +211,32 @@
     };
   }
 
+  /* The part on the page: its fieldset holds the pad (static/sketch-pad.js, loaded with the
+   * page's sketch parts: SketchAxes' page_assets), whose line is the answer. */
+  function pad(box) {
+    return root.SketchPad.padOf(box);
+  }
+
   var kind = {
     kinds: ["sketch"],
     mark: markSketch,
+    read: function (box) {
+      return { line: pad(box).line() };
+    },
+    fill: function (box, part, answer) {
+      pad(box).set(answer.line || []);
+    },
+    answered: function (answer) {
+      return (answer.line || []).length >= 2;
+    },
+    relabel: function (box, part) {
+      root.SketchPad.relabel(box, part);
+    },
     features: { cleanLine: cleanLine, valueAt: valueAt, shapeOver: shapeOver, scales: scales, holds: holds },
   };
   if (typeof module === "object" && module.exports) module.exports = kind;
   else
     kind.kinds.forEach(function (name) {
-      (root.QuestionKinds = root.QuestionKinds || {})[name] = kind;
+      root.QuestionKinds.register(name, kind);
     });
 })(this);

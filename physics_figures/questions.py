@@ -141,7 +141,8 @@ class Question:
     def __post_init__(self):
         readings = [p for p in self.parts if p.reads_graph]
         # a "which graph?" item shows its graph too: its options are sketches drawn from it
-        sketches = any(p.sketches for p in self.parts)
+        # (and a sketch part may be drawn from one)
+        sketches = any(p.sketches or p.drawn_from_graph for p in self.parts)
         _require(bool(readings) == (self.graph is not None) or (sketches and not readings), "graph", self.graph,
                  f"goes with a part read from it (GraphPart) in {self.key}: both or neither")
         carried = [r for p in self.parts for r in getattr(p, "readings", ())]

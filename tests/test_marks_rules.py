@@ -124,6 +124,10 @@ def test_every_part_right_earns_its_own_marks_whatever_the_other_parts_say():
         for index, (part_id, part) in enumerate(zip(question.part_ids, question.parts, strict=True)):
             if part.kind == "explain":
                 continue
+            if part.kind == "sketch":  # its model line, drawn
+                cases.append((data, {part_id: {"line": [list(point) for point in part.model]}}))
+                where.append((key, part_id, marks[index]))
+                continue
             answer = {"choice": part.answer} if part.kind == "mcq" else right(part, max(part.shown_sig_figs, 3))
             cases.append((data, {part_id: answer}))
             where.append((key, part_id, marks[index]))

@@ -77,6 +77,9 @@ def _question_cases(question: q.Question, name: str):
             continue
         if part.kind == "explain":  # self-marked against its marking points: nothing to compute
             continue
+        if part.kind == "sketch":  # the model line earns every feature (each wrong line: test_sketches.py)
+            yield where, "model line", data, {"line": [list(p) for p in part.model]}, ("correct", None)
+            continue
         # The key as it prints, and the unrounded value, are both right.
         yield where, "key", data, _answer(part, part.value, sig_figs=part.shown_sig_figs), ("correct", None)
         yield where, "full", data, _answer(part, part.value, sig_figs=6), ("correct", None)

@@ -22,6 +22,7 @@ from . import (
     force_momentum,
     momentum_line,
     newton,
+    sketches,
     statements,
     two_d,
     worked_examples,
@@ -30,7 +31,7 @@ from .sections import SECTIONS
 
 #: Every template of the book, by key, in the order of the notes' types.
 TEMPLATES: dict[str, Template] = {}
-for _module in (newton, drag, force_momentum, definitions, momentum_line, elastic, two_d, statements,
+for _module in (newton, drag, force_momentum, definitions, momentum_line, elastic, two_d, sketches, statements,
                 worked_examples):
     for _template in _module.TEMPLATES:
         if _template.key in TEMPLATES:

@@ -141,3 +141,16 @@ def acceleration_from_distance(u, v, distance):
     v = check.non_negative("v", v, unit="m s^-1")
     distance = check.positive("distance", distance, unit="m")
     return (v**2 - u**2) / (2 * distance)
+
+
+def applied_force(resultant_force, opposing_force):
+    """The force that, against an opposing force, leaves a resultant: F = F_resultant + F_opposing.
+
+    A block dragged against a constant friction (9702/21/M/J/23 Q3: the pull X is the
+    momentum-time graph's gradient plus the 2.0 N friction), or a floor pushing a ball up
+    against its weight. resultant_force: N, signed along the applied force; opposing_force:
+    N (>= 0), against it. Returns the applied force in N.
+    Raises ValueError for a negative opposing force or a value that is not finite.
+    """
+    resultant_force = check.number("resultant_force", resultant_force, unit="N")
+    return resultant_force + check.non_negative("opposing_force", opposing_force, unit="N")

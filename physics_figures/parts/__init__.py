@@ -17,7 +17,9 @@ What a kind's Python class provides (physics_figures.parts.common.PartKind has t
   dependent A1 needs its M1), ``answered_in_words`` (a define/state template may ask it with one
   wording), ``sketches`` (its options are sketch graphs: the question shows its graph),
   ``mock_paper`` ("1", "2" or "": the mock test's paper that asks templates made of it),
-  ``browser_script`` (the path of its JS twin; kinds may share one).
+  ``browser_script`` (the path of its JS twin; kinds may share one), ``page_assets`` (scripts
+  and styles under _static that only the pages asking such a part load), ``drawn_from_graph``
+  (its question may print a graph that no part reads a value off: a sketch drawn from it).
 * The part's data for the page, ``answer_text`` (plain text of its answer) and ``marks``-related
   attributes the bank's templates set (``prompt``, ``asks``, ``revisit``...).
 * ``browser_data(part_id) -> dict``: what the page and its JS twin get (JSON-ready; has "id" and "kind").
@@ -52,6 +54,7 @@ from .diagram import Arrow, Body, Diagram
 from .explain import ExplainPart
 from .graph import Graph, GraphPart, format_reading, reading_places
 from .numeric import Alternative, Ecf, Mistake, Part, Reading, Step
+from .sketch import Feature, SketchAxes, SketchPart, SketchPoint, SketchTolerance, WrongSketch
 
 #: Every part kind by its name: the data-kind of a question's part and the kind the browser's
 #: engine looks its marker up by.
@@ -70,7 +73,7 @@ def register_kind(cls: type[PartKind]) -> type[PartKind]:
     return cls
 
 
-for _kind in (Part, GraphPart, ChoicePart, ExplainPart):
+for _kind in (Part, GraphPart, ChoicePart, ExplainPart, SketchPart):
     register_kind(_kind)
 
 __all__ = [
@@ -83,6 +86,7 @@ __all__ = [
     "Diagram",
     "Ecf",
     "ExplainPart",
+    "Feature",
     "Graph",
     "GraphPart",
     "Mistake",
@@ -91,7 +95,12 @@ __all__ = [
     "PartKind",
     "Reading",
     "Sketch",
+    "SketchAxes",
+    "SketchPart",
+    "SketchPoint",
+    "SketchTolerance",
     "Step",
+    "WrongSketch",
     "choices_in_order",
     "format_reading",
     "reading_places",

@@ -106,6 +106,12 @@ class PartKind:
     #: Its browser twin (a script that registers itself in QuestionKinds), a path the build
     #: copies and loads; several kinds may share one script.
     browser_script: ClassVar[str] = ""
+    #: Scripts and styles (paths under _static) that only the pages asking such a part load,
+    #: after its browser_script: a sketch's drawing pad and its CSS.
+    page_assets: ClassVar[tuple[str, ...]] = ()
+    #: Its question may print a graph it is drawn from, though no part reads a value off it
+    #: (a sketch of force X from a momentum-time graph, 9702/21/M/J/23 Q3(c)).
+    drawn_from_graph: ClassVar[bool] = False
 
 
 class NoValue(PartKind):

@@ -128,6 +128,7 @@ class QuestionDirective(SphinxDirective):
         store.questions(self.env).setdefault(self.env.docname, []).append({
             "key": data.key, "title": title, "marks": data.marks, "try_first": node["template"]["tryFirst"],
             "graph": data.graph is not None,  # the page loads the enlarged graph view
+            "assets": sorted({asset for part in data.parts for asset in part.page_assets}),  # its kinds' own
             "answers": [data.label(i) + f"{p.prompt}: {p.answer_text}" for i, p in enumerate(data.parts)],
             "scheme": [child.deepcopy() for child in worked.children],
         })
@@ -154,6 +155,11 @@ class Paper:
     def rich(source: str) -> list[nodes.Node]:
         """Text in the bank's text format."""
         return text_nodes(source)
+
+    @staticmethod
+    def figure(svg: str, tikz: str) -> list[nodes.Node]:
+        """A drawing given as SVG (the page) and TikZ (the PDF book): a sketch part's blank axes."""
+        return [nodes.raw("", svg, format="html"), nodes.raw("", tikz, format="latex")]
 
     @staticmethod
     def sketch(sketch) -> list[nodes.Node]:

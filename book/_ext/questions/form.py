@@ -201,6 +201,12 @@ def add_assets(app, pagename, templatename, context, doctree):
         app.add_js_file("help-steps.js", loading_method="defer", priority=470)  # before questions.js (500)
         app.add_js_file("question-relabel.js", loading_method="defer")  # New numbers' words, shared
         app.add_js_file("questions.js", loading_method="defer")
+        # the scripts and styles of the page's kinds that only pages asking them load (a sketch's pad)
+        for asset in sorted({a for item in store.questions(app.env).get(pagename, ()) for a in item.get("assets", ())}):
+            if asset.endswith(".css"):
+                app.add_css_file(asset)
+            else:
+                app.add_js_file(asset, loading_method="defer", priority=455)
         # the enlarged graph view, on the pages that print a question's graph
         if any(item.get("graph") for item in store.questions(app.env).get(pagename, ())):
             app.add_js_file("graph-view.js", loading_method="defer")

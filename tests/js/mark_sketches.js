@@ -1,0 +1,21 @@
+// Marks drawn lines with the sketch kind's marker: JSON [{part, line}] on stdin (part as the
+// site ships it, line [[t, y], ...] in the axes' units), JSON [{code, earned}] on stdout.
+// Used by tests/test_sketches.py.
+"use strict";
+const path = require("node:path");
+const sketch = require(
+  path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "question-kinds", "sketch.js"),
+);
+
+let input = "";
+process.stdin.setEncoding("utf8");
+process.stdin.on("data", (chunk) => {
+  input += chunk;
+});
+process.stdin.on("end", () => {
+  const out = JSON.parse(input).map(({ part, line }) => {
+    const result = sketch.mark(part, { line: line });
+    return { code: result.code, earned: result.earned || [] };
+  });
+  process.stdout.write(JSON.stringify(out));
+});

@@ -26,7 +26,7 @@ from .questions import Question
 
 #: What a template asks for (data-kind): a number, a choice of four, a reading of a graph,
 #: a written explanation.
-KINDS = ("numeric", "mcq", "graph", "explain")
+KINDS = ("numeric", "mcq", "graph", "explain", "text")
 #: Fresh-number templates give the site at least this many variants, and keep at least
 #: MIN_RESERVE more that the site never ships: the teacher's worksheets, tests and Moodle
 #: file draw only from those (issue 26), so no student has met a sheet's numbers. Templates
@@ -182,7 +182,7 @@ class Template:
         if self.same_answer_because:
             _require(bool(self.same_answer_because.strip()), "same_answer_because", self.same_answer_because,
                      "must say why the answer cannot follow the variant, in words")
-            _require(bool({"explain", "mcq"} & set(self.kinds)), "same_answer_because", self.same_answer_because,
+            _require(bool({"explain", "text", "mcq"} & set(self.kinds)), "same_answer_because", self.same_answer_because,
                      f"is only for an explain or multiple-choice template, not a {'/'.join(self.kinds)} one")
         _require(not (self.try_first and self.draws), "draws", dict(self.draws),
                  "must be empty for a worked example's try-first part (it keeps the printed numbers)")
@@ -196,8 +196,8 @@ class Template:
                      f"must be at least {self.least_variants} for a {'/'.join(self.kinds)} template")
 
     def _check_one_wording(self) -> None:
-        _require(self.kinds == ("explain",), "one_wording", self.one_wording,
-                 f"is for a define/state template, whose kinds are ('explain',) (got kinds={self.kinds!r})")
+        _require(self.kinds == ("text",), "one_wording", self.one_wording,
+                 f"is for a define/state template, whose kinds are ('text',) (got kinds={self.kinds!r})")
         _require(not self.draws, "one_wording", self.one_wording,
                  f"means one variant, so {self.key} must have no draws (got draws={dict(self.draws)!r})")
         _require(not self.try_first, "one_wording", self.one_wording,

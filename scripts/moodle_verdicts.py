@@ -56,7 +56,7 @@ def _inputs(question, index: int) -> list[dict]:
             rows.append({"label": f"option {letter}", "answer": {"choice": letter},
                          "parts": [{"choice": to_plain(option.text)}], "cannot": ""})
         return rows
-    if part.kind == "explain":
+    if part.kind in ("explain", "text"):
         return []
     cloze = part.direction == "choice"
     direction = part.answer_direction

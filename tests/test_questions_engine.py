@@ -75,7 +75,7 @@ def _question_cases(question: q.Question, name: str):
                 yield (where, letter, data, {"choice": letter},
                        ("mistake", option.mistake) if option.mistake else ("correct", None))
             continue
-        if part.kind == "explain":  # self-marked against its marking points: nothing to compute
+        if part.kind in ("explain", "text"):  # marked from words (tests/test_text_marking.py)
             continue
         # The key as it prints, and the unrounded value, are both right.
         yield where, "key", data, _answer(part, part.value, sig_figs=part.shown_sig_figs), ("correct", None)

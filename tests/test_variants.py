@@ -60,7 +60,7 @@ def test_every_variant_is_sensible_and_tells_its_mistakes_apart(template, index)
         if part.kind == "mcq":  # four different options, one the key, each wrong one a named mistake
             assert sum(not option.mistake for option in part.options) == 1
             continue
-        if part.kind == "explain":  # self-marked against its own marking points
+        if part.kind in ("explain", "text"):  # marked against its own marking points
             assert any(question.parts_of(mark) == (question.part_ids[question.parts.index(part)],)
                        for mark in question.mark_scheme if mark.code)
             continue

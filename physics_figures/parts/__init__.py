@@ -8,11 +8,13 @@ from .diagram import Arrow, Body, Diagram
 from .explain import ExplainPart
 from .graph import Graph, GraphPart, format_reading, reading_places
 from .numeric import Alternative, Ecf, Mistake, Part, Reading, Step
+from .text import Note, TextPart, TextPoint
 
 #: Every part kind by its name: the data-kind of a question's part and the kind the browser's
 #: engine looks its marker up by.
-KINDS = {kind.kind: kind for kind in (Part, GraphPart, ChoicePart, ExplainPart)}
+KINDS = {kind.kind: kind for kind in (Part, GraphPart, ChoicePart, ExplainPart, TextPart)}
 
 __all__ = ["KINDS", "OPTION_LETTERS", "Alternative", "Arrow", "Body", "ChoicePart", "Diagram", "Ecf", "ExplainPart",
-           "Graph", "GraphPart", "Mistake", "Option", "Part", "Reading", "Sketch", "Step", "choices_in_order",
+           "Graph", "GraphPart", "Mistake", "Note", "Option", "Part", "Reading", "Sketch", "Step", "TextPart", "TextPoint",
+           "choices_in_order",
            "format_reading", "reading_places"]

@@ -65,7 +65,7 @@ def _sheet_part(question: Question, index: int, marks: int) -> str:
     if part.kind == "mcq":
         return (f'<div class="sb-part"><p>{prompt}</p>{_options(part)}<p class="sb-answer">Answer (A, B, C or D): '
                 f'<span class="sb-box"></span> {_marks(marks)}</p></div>')
-    if part.kind == "explain":
+    if part.kind in ("explain", "text"):
         lines = '<span class="sb-line"></span>' * (LINES_PER_MARK * marks)
         return (f'<div class="sb-part"><p>{prompt}</p><div class="sb-lines">{lines}</div>'
                 f'<p class="sb-answer">{_marks(marks)}</p></div>')
@@ -100,9 +100,10 @@ def _key_part(question: Question, index: int, marks: int) -> str:
                         if letter != part.answer)
         return (f'<p class="sb-key-answer"><strong>{plain(label)}{part.answer}: {rich(right.text)}</strong> '
                 f"{_marks(marks)}</p><ul>{wrong}</ul>")
-    if part.kind == "explain":
+    if part.kind in ("explain", "text"):
+        rules = part.key_html() if part.kind == "text" else ""  # the wordings accepted and rejected
         return (f'<p class="sb-key-answer"><strong>{plain(question.label(index))}Model answer</strong> '
-                f"{_marks(marks)}</p><p>{rich(part.model_answer)}</p>")
+                f"{_marks(marks)}</p><p>{rich(part.model_answer)}</p>{rules}")
     out = [(f'<p class="sb-key-answer"><strong>{plain(label + part.prompt)} = {plain(part.answer_text)}</strong>'
            f"{plain(accept_note(part))} {_marks(marks)}</p>")]
     if part.working:

@@ -228,12 +228,20 @@ def _part_body(question: Question, index: int, marks: int) -> str:
                 "\\begin{enumerate}[label=\\textbf{\\Alph*}, itemsep=1pt, topsep=4pt]\n"
                 + options + "\n\\end{enumerate}\n" + r"Answer (A, B, C or D): \gridbox \partmarks{"
                 + str(marks) + "}\\par")
-    if part.kind == "explain":
+    if part.kind in ("explain", "text"):
         return (f"\\par\\vspace{{4pt}}\\needspace{{4\\baselineskip}}{tex(label + part.prompt)}"
                 f"\\writinglines{{{LINES_PER_MARK * marks}}}\\vspace{{2pt}}\\partmarks{{{marks}}}\\par")
     space = 0.6 if part.kind == "graph" else WORKING_CM_PER_MARK * marks
     return (f"\\par\\needspace{{{format_number(space + 1.2, decimals=1)}cm}}\\vspace{{{format_number(space, decimals=1)}cm}}\n"
             + _answer_line(label, part, marks) + "\\par")
+
+
+def _text_rules(part) -> str:
+    """A text part's rules in the key: per point, what an examiner accepts, rejects and ignores."""
+    words = {"accept": "Accept", "reject": "Reject", "ignore": "Ignore"}
+    items = [f"\\item[] \\textbf{{{tex(text)}}}" if kind == "point" else f"\\item {words[kind]}: {tex(text)}"
+             for kind, text in part.key_lines()]
+    return "\\begin{itemize}[leftmargin=1.5em,itemsep=0pt,topsep=2pt]\n" + "\n".join(items) + "\n\\end{itemize}"
 
 
 def sketch_row(part) -> str:
@@ -408,9 +416,11 @@ def _key_part(question: Question, index: int, marks: int) -> list[str]:
             f"(\\textbf{{{tex(option_marks(question, index))}}}). {tex(option.feedback)}"
             for letter, option in wrong) + "\n\\end{itemize}")
         return out
-    if part.kind == "explain":  # "Model answer", not "Answer Model answer", for a part alone
+    if part.kind in ("explain", "text"):  # "Model answer", not "Answer Model answer", for a part alone
         out.append(f"\\textbf{{{tex(question.label(index))}Model answer}} \\hfill [{marks}]\\par "
                    f"{rich(part.model_answer)}")
+        if part.kind == "text":  # the wordings accepted and rejected, each with its paper
+            out.append(_text_rules(part))
         return out
     answer = tex(part.answer_text)
     out.append(f"\\textbf{{{tex(label)}{tex(part.prompt)} = {answer}}}{tex(accept_note(part))} \\hfill [{marks}]")

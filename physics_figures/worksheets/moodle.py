@@ -334,9 +334,12 @@ def _part(out: _Export, template: Template, index: int, question: Question, part
                    for letter, option, text in zip(OPTION_LETTERS, part.options, shown, strict=True)]
         out.multichoice(name, idnumber, stem + ask + "</p>", marks, general, files, options,
                         option_files=option_files)
-    elif part.kind == "explain":
+    elif part.kind in ("explain", "text"):
+        # a text part: the points with the wordings an examiner accepts and rejects (Moodle has no
+        # core type that reads them: an essay, CLARIFICATIONS, Papers)
+        rules = ("<p><strong>The marking points</strong></p>" + part.key_html()) if part.kind == "text" else ""
         grader = (f"<p><strong>Model answer</strong></p>{textformat.to_html(part.model_answer)}"
-                  + _scheme_html(question) + how_marked)
+                  + _scheme_html(question) + rules + how_marked)
         out.essay(name, idnumber, stem + ask + f" [{marks}]</p>", marks, general, files, grader)
     else:
         how = " (read from the graph)" if part.kind == "graph" else ""

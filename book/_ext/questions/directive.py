@@ -144,7 +144,7 @@ def answer_lines(label: str, part, marks: int) -> list[nodes.Node]:
             options += nodes.list_item("", *(sketch_nodes(option.sketch) if option.sketch else text_nodes(option.text)))
         return [nodes.paragraph(text=f"{label}{part.prompt}"), options,
                 nodes.paragraph(text="Answer (A, B, C or D): " + "." * 8 + tail)]
-    if part.kind == "explain":
+    if part.kind in ("explain", "text"):
         return [nodes.paragraph(text=f"{label}{part.prompt}")] + [
             nodes.paragraph(text="." * 70 + (tail if last else "")) for last in (False, False, False, True)]
     line = f"{label}{part.prompt} = " + "." * 28

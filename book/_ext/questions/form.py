@@ -22,7 +22,7 @@ from .directive import question
 logger = logging.getLogger(__name__)
 #: The part kinds' markers (static/question-kinds/), each the browser twin of a part class of
 #: physics_figures/parts; marking.js finds them by the kinds they register.
-KIND_SCRIPTS = ("numeric", "choice", "explain")
+KIND_SCRIPTS = ("numeric", "choice", "explain", "text")
 
 
 PRINT_CHOICE = ('<p class="q-print"><button type="button" class="q-print-answers">Print with answers'
@@ -169,6 +169,22 @@ def _explain_html(base: str, part: dict, data: dict) -> str:
             f'<div class="q-model-text">{part["model"]}</div></div></div>')
 
 
+def _text_html(base: str, part: dict) -> str:
+    """A box for the student's words (the one textarea of a text part); after Check, each marking
+    point with what the marker found, a box to tick only where it could not decide."""
+    points = "".join(
+        f'<label class="q-point"><input type="checkbox" class="q-tick" value="{i}" disabled> '
+        f'<span class="q-point-text">{escape(point["text"])}</span> <strong>{point["code"]}</strong></label>'
+        for i, point in enumerate(part["points"]))
+    return (f'<label class="q-field q-field-wide" for="{base}-text"><span>Your answer</span>'
+            f'<textarea class="q-explain" id="{base}-text" rows="4" aria-describedby="{base}-feedback">'
+            f'</textarea></label>'
+            f'<div class="q-points" hidden><p>The marking points (tick one only where the marker could not '
+            f'decide and your answer makes it):</p>{points}'
+            f'<div class="q-model"><p><strong>A full answer:</strong></p>'
+            f'<div class="q-model-text">{part["model"]}</div></div></div>')
+
+
 def rules_script() -> str:
     """The rule table the marking engine reads (physics_figures/marking_rules.json), once a page."""
     table = json.dumps({"outcomes": marking.outcome_losses(), "sigFigs": marking.sig_figs(),
@@ -199,12 +215,14 @@ def visit_question_form(self, node):
             html.append(_options_html(base, part))
         elif kind == "explain":
             html.append(_explain_html(base, part, data))
+        elif kind == "text":
+            html.append(_text_html(base, part))
         else:
             hint = not getattr(self, "_q_unit_hint_written", False)
             self._q_unit_hint_written = True  # the translator is one page's: once a page
             html.append(_numeric_html(base, part, label, hint))
         html.append(f'<p class="q-feedback" id="{base}-feedback" role="status"></p><p class="q-part-marks"></p>')
-        if kind not in ("mcq", "explain"):
+        if kind not in ("mcq", "explain", "text"):
             html.append(_help_html(label))
         html.append("</fieldset>")
     new = ('<button type="button" class="q-new">New numbers</button>'

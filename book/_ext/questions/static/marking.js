@@ -38,7 +38,7 @@
     root.QuestionKinds ||
     (function () {
       var found = {};
-      ["numeric", "choice", "explain"].forEach(function (file) {
+      ["numeric", "choice", "explain", "text"].forEach(function (file) {
         var kind = require("./question-kinds/" + file + ".js");
         kind.kinds.forEach(function (name) {
           found[name] = kind;
@@ -90,9 +90,11 @@
       var ok =
         part.kind === "explain"
           ? ticked(data, result, index)
-          : !line.roles.some(function (role) {
-              return lostRoles(result).indexOf(role) >= 0;
-            });
+          : part.kind === "text"
+            ? !!(result.earned || [])[byPart[line.part][1]] // its points in the order of its lines
+            : !line.roles.some(function (role) {
+                return lostRoles(result).indexOf(role) >= 0;
+              });
       byPart[line.part][1] += 1;
       if (ok) {
         byPart[line.part][0] += 1;

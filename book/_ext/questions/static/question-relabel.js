@@ -28,6 +28,11 @@
           tick.parentNode.querySelector(".q-point-text").innerHTML = lines[i].html;
         });
         box.querySelector(".q-points .q-model-text").innerHTML = part.model;
+      } else if (part.kind === "text") {
+        Array.prototype.forEach.call(box.querySelectorAll(".q-point-text"), function (text, i) {
+          text.textContent = part.points[i].text;
+        });
+        box.querySelector(".q-points .q-model-text").innerHTML = part.model;
       }
     });
   }

@@ -147,7 +147,7 @@
         })[0];
         return { choice: chosen ? chosen.value : "" };
       }
-      if (part.kind === "explain") {
+      if (part.kind === "explain" || part.kind === "text") {
         return {
           text: f.text.value,
           ticked: Array.prototype.filter
@@ -176,7 +176,7 @@
         Array.prototype.forEach.call(f.choices, function (c) {
           c.checked = c.value === a.choice;
         });
-      } else if (part.kind === "explain") {
+      } else if (part.kind === "explain" || part.kind === "text") {
         f.text.value = a.text || "";
         Array.prototype.forEach.call(f.ticks, function (t) {
           t.checked = (a.ticked || []).indexOf(Number(t.value)) >= 0;
@@ -188,17 +188,32 @@
       }
     }
 
+    /* On a Check, a kind may show more in its part: the text kind what it found of each point,
+     * the explain kind the points it found, ticked to confirm (true when it ticked any). */
+    function preTick(marked) {
+      var ticked = false;
+      data.parts.forEach(function (part) {
+        var kind = (root.QuestionKinds || {})[part.kind];
+        if (kind && kind.preTick) ticked = kind.preTick(fields(part).box, marked.results[part.id]) || ticked;
+      });
+      return ticked;
+    }
+
     /* record: a Check (a new attempt); "ticks": a marking point ticked (updates it). */
     function check(record) {
       var marked = markQuestion(data, answers());
+      var confirmed = record === true && preTick(marked);
+      if (confirmed) marked = markQuestion(data, answers());
       data.parts.forEach(function (part) {
         var f = fields(part),
           result = marked.results[part.id],
           got = marked.marks.byPart[part.id];
         // ✓ only for a part that earned every one of its marks; a part that lost some says which
         var right = got[0] === got[1] && result.code !== "wrong";
-        var selfMarked = result.code === "self-marked";
+        var selfMarked = result.code === "self-marked" && part.kind === "explain";
         if (f.points && selfMarked) f.points.hidden = false;
+        var kind = (root.QuestionKinds || {})[part.kind];
+        if (kind && kind.show) kind.show(f.box, result);
         var lost = engine.lostText(data, marked.marks, part.id);
         // a value in the message stays on one line with its unit, as everywhere in the book
         f.feedback.textContent =
@@ -240,7 +255,7 @@
         var a = answerOf(part);
         return part.kind === "mcq"
           ? !!a.choice
-          : part.kind === "explain"
+          : part.kind === "explain" || part.kind === "text"
             ? !!a.text.trim()
             : !!(a.value.trim() || a.unit.trim());
       });
@@ -260,6 +275,14 @@
             })
             .filter(Boolean),
         };
+        // marks the student gave themselves: ticked points (explain), a point the text marker
+        // could not decide (text); and whether the marker's own ticks were there to confirm
+        var selfMarked = data.parts.some(function (p) {
+          return marked.results[p.id].code === "self-marked";
+        });
+        if (selfMarked) attempt.selfMarked = true;
+        if (confirmed || (record === "ticks" && load("confirm:" + storeId()))) attempt.selfConfirmed = true;
+        if (record === true) save("confirm:" + storeId(), confirmed);
         // A tick re-scores its Check's attempt, which keeps the help, time and first try it had.
         if (record !== "ticks") {
           attempt.help = help.used();

@@ -140,9 +140,9 @@ class Question:
     diagram: Diagram | None = None
 
     def __post_init__(self):
-        readings = [p for p in self.parts if p.kind == "graph"]
+        readings = [p for p in self.parts if p.reads_graph]
         # a "which graph?" item shows its graph too: its options are sketches drawn from it
-        sketches = any(p.kind == "mcq" and p.sketches for p in self.parts)
+        sketches = any(p.sketches for p in self.parts)
         _require(bool(readings) == (self.graph is not None) or (sketches and not readings), "graph", self.graph,
                  f"goes with a part read from it (GraphPart) in {self.key}: both or neither")
         carried = [r for p in self.parts for r in getattr(p, "readings", ())]
@@ -237,7 +237,7 @@ class Question:
         earlier answers as the key prints them, where that differs from the key at the
         marker's precision (an examiner credits it)."""
         part = self.parts[index]
-        if part.kind != "numeric" or not part.ecf_methods:
+        if part.reads_graph or not part.ecf_methods:
             return ()
         printed = {pid: round_number(p.value, p.shown_sig_figs) if p.value is not None else None
                    for pid, p in zip(self.part_ids, self.parts, strict=True)}
@@ -345,7 +345,7 @@ class Question:
         data = {"part": self.owner(mark), "code": mark.code, "roles": list(self.line_roles(mark)),
                 "html": textformat.to_html(mark.text, paragraphs=False) if self.text else ""}
         part = self.parts[self.part_ids.index(data["part"])]
-        if part.kind == "explain" and mark.code == "A1":
+        if part.self_marked and mark.code == "A1":
             # a self-marked A1 depends on the M1 before it in its part (9702's M1 A1)
             before = [i for i in range(index) if lines[i].code == "M1" and self.owner(lines[i]) == data["part"]]
             if before:

@@ -21,12 +21,12 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
 
+from . import parts
 from .notation import round_number
 from .questions import Question
 
-#: What a template asks for (data-kind): a number, a choice of four, a reading of a graph,
-#: a written explanation.
-KINDS = ("numeric", "mcq", "graph", "explain", "text")
+#: What a template asks for (data-kind): the part kinds, by name (physics_figures.parts.KINDS).
+KINDS = parts.KINDS
 #: Fresh-number templates give the site at least this many variants, and keep at least
 #: MIN_RESERVE more that the site never ships: the teacher's worksheets, tests and Moodle
 #: file draw only from those (issue 26), so no student has met a sheet's numbers. Templates
@@ -86,16 +86,16 @@ def confusable_mistakes(question: Question) -> list[str]:
     """Named mistakes whose value the key's 2 s.f. band accepts (the marker could not tell)."""
     found = []
     for part in question.parts:
-        if part.kind not in ("numeric", "graph"):  # a choice or an explanation has no band
+        if not part.has_value:  # e.g. a choice or an explanation: no band
             continue
         # a reading from a graph is right within half a small square; a calculation at 2 s.f.,
         # and one worked from readings anywhere their half squares take it, written at 2 s.f.
-        low, high = part.band if part.kind == "graph" else accepted_band(part.value)
+        low, high = part.band if part.reads_graph else accepted_band(part.value)
         for mistake in part.mistakes:
             same_kind = mistake.unit is None and mistake.direction is None
             typed = float(round_number(mistake.value, 2)) if mistake.value else 0.0
             if same_kind and (low <= mistake.value <= high
-                              or (part.kind == "numeric" and part.band_takes(typed, 2))):
+                              or (not part.reads_graph and part.band_takes(typed, 2))):
                 found.append(f"{part.prompt}: {mistake.name}")
     return found
 
@@ -107,7 +107,7 @@ def rounding_ties(question: Question) -> list[str]:
     in Python. A drawn variant with one is refused (an exam writer, too, would pick other numbers)."""
     found = []
     for part in question.parts:
-        if part.kind != "numeric" or not part.value:
+        if not part.has_value or part.reads_graph or not part.value:
             continue
         scaled = abs(part.value) * 10.0 ** (2 - math.floor(math.log10(abs(part.value))))
         if abs(scaled - math.floor(scaled) - 0.5) > 1e-6:
@@ -126,7 +126,7 @@ def rounding_ties(question: Question) -> list[str]:
 def _answers(question: Question) -> dict[str, float]:
     """Each number a key gives (a calculated or read part), to the 3 s.f. a key prints."""
     return {part.prompt: float(round_number(part.value, 3)) for part in question.parts
-            if part.kind in ("numeric", "graph")}
+            if part.has_value}
 
 
 def repeats_the_site(question: Question, site: list[Question]) -> list[str]:
@@ -178,12 +178,13 @@ class Template:
     def __post_init__(self):
         _require(bool(self.type), "type", self.type, "must name one of its topic's question types")
         _require(bool(self.kinds) and set(self.kinds) <= set(KINDS), "kinds", self.kinds,
-                 f"must be some of {KINDS}")
+                 f"must be some of {tuple(KINDS)}")
         if self.same_answer_because:
             _require(bool(self.same_answer_because.strip()), "same_answer_because", self.same_answer_because,
                      "must say why the answer cannot follow the variant, in words")
-            _require(bool({"explain", "text", "mcq"} & set(self.kinds)), "same_answer_because", self.same_answer_because,
-                     f"is only for an explain or multiple-choice template, not a {'/'.join(self.kinds)} one")
+            _require(any(not KINDS[kind].has_value for kind in self.kinds), "same_answer_because",
+                     self.same_answer_because, "is only for an explain or multiple-choice template (a part with no "
+                     f"value), not a {'/'.join(self.kinds)} one")
         _require(not (self.try_first and self.draws), "draws", dict(self.draws),
                  "must be empty for a worked example's try-first part (it keeps the printed numbers)")
         if self.one_wording:
@@ -196,8 +197,8 @@ class Template:
                      f"must be at least {self.least_variants} for a {'/'.join(self.kinds)} template")
 
     def _check_one_wording(self) -> None:
-        _require(self.kinds == ("text",), "one_wording", self.one_wording,
-                 f"is for a define/state template, whose kinds are ('text',) (got kinds={self.kinds!r})")
+        _require(all(KINDS[kind].answered_in_words for kind in self.kinds), "one_wording", self.one_wording,
+                 f"is for a define/state template, whose parts are answered in words (got kinds={self.kinds!r})")
         _require(not self.draws, "one_wording", self.one_wording,
                  f"means one variant, so {self.key} must have no draws (got draws={dict(self.draws)!r})")
         _require(not self.try_first, "one_wording", self.one_wording,
@@ -217,7 +218,7 @@ class Template:
     @property
     def fresh_numbers(self) -> bool:
         """Its variants are fresh numbers (a calculation or a graph), not fresh situations."""
-        return "numeric" in self.kinds or "graph" in self.kinds
+        return any(KINDS[kind].has_value for kind in self.kinds)
 
     @property
     def shares_variants(self) -> bool:
@@ -323,4 +324,4 @@ def _printed_as(question: Question) -> tuple:
 
 
 def _key_letters(question: Question) -> list[str]:
-    return [part.answer for part in question.parts if part.kind == "mcq"]
+    return [part.answer for part in question.parts if part.answer_grid]

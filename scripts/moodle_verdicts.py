@@ -51,12 +51,12 @@ def _inputs(question, index: int) -> list[dict]:
     (Moodle's), cannot (a CANNOT key or "")}."""
     part, part_id = question.parts[index], question.part_ids[index]
     rows = []
-    if part.kind == "mcq":
+    if part.answer_grid:  # a letter to choose
         for letter, option in zip(OPTION_LETTERS, part.options, strict=True):
             rows.append({"label": f"option {letter}", "answer": {"choice": letter},
                          "parts": [{"choice": to_plain(option.text)}], "cannot": ""})
         return rows
-    if part.kind in ("explain", "text"):
+    if not part.has_value:  # graded by a person (an essay)
         return []
     cloze = part.direction == "choice"
     direction = part.answer_direction

@@ -233,17 +233,18 @@ def test_a_template_may_declare_an_alternative_value():
 
 
 def test_every_part_kind_has_its_python_class_and_its_browser_marker():
-    """physics_figures.parts.KINDS and the markers in static/question-kinds/ name the same kinds,
-    and every template's kinds are among them."""
+    """physics_figures.parts.KINDS and the kinds registered in QuestionKinds (static/question-kinds.js,
+    from the scripts in static/question-kinds/) name the same kinds, and every template's kinds are
+    among them."""
     from physics_figures import parts
     from physics_figures.variants import KINDS
 
-    registered = set()
-    for script in (ENGINE.parent / "question-kinds").glob("*.js"):
-        found = re.search(r"kinds: \[([^\]]*)\]", script.read_text(encoding="utf-8"))
-        assert found, f"{script.name} registers no kind"
-        registered |= set(re.findall(r'"([a-z]+)"', found[1]))
+    registry = ENGINE.parent / "question-kinds.js"
+    listed = subprocess.run([node(), "-e", f"console.log(JSON.stringify(require({json.dumps(str(registry))}).names()))"],
+                            check=True, capture_output=True, text=True, timeout=60)
+    registered = set(json.loads(listed.stdout))
     assert registered == set(parts.KINDS) == set(KINDS)
+    assert {kind for template in bank.TEMPLATES.values() for kind in template.kinds} <= registered
 
 
 def test_every_slip_a_record_names_is_an_outcome_of_the_rule_table():

@@ -155,7 +155,7 @@ def _template(**change) -> Template:
 
 
 @pytest.mark.parametrize(("change", "message"), [
-    ({"kinds": ("mcq",)}, r"one_wording is for a define/state template, whose kinds are \('text',\)"),
+    ({"kinds": ("mcq",)}, r"one_wording is for a define/state template, whose parts are answered in words"),
     ({"draws": {"situation": Draw(0, 0, 3, 1)}}, "one_wording means one variant, so define-x must have no draws"),
     ({"try_first": True}, "one_wording is for the bank's statements, not a worked example's try-first part"),
     ({"one_wording": "one wording"}, "one_wording must say in a sentence why the wording cannot change"),

@@ -4,6 +4,7 @@ mistakes. Its browser twin is book/_ext/questions/static/question-kinds/choice.j
 
 from __future__ import annotations
 
+import html
 import itertools
 import math
 import zlib
@@ -12,7 +13,7 @@ from typing import ClassVar
 
 from .. import marking, textformat
 from ..notation import format_number
-from .common import NoValue, _require
+from .common import SCRIPTS, NoValue, _require, feedback_html, prompt_html
 
 OPTION_LETTERS = ("A", "B", "C", "D")
 
@@ -168,6 +169,10 @@ class ChoicePart(NoValue):
     see: str | None = None
     kind: ClassVar[str] = "mcq"
     asks: ClassVar[str] = "state"
+    answer_grid: ClassVar[bool] = True
+    keeps_with_question_text: ClassVar[bool] = True
+    mock_paper: ClassVar[str] = "1"
+    browser_script: ClassVar[str] = str(SCRIPTS / "choice.js")
 
     def __post_init__(self):
         _require(len(self.options) == len(OPTION_LETTERS), "options", len(self.options),
@@ -200,6 +205,109 @@ class ChoicePart(NoValue):
     def sketches(self) -> bool:
         """The options are sketch graphs (a "which graph?" item)."""
         return all(o.sketch is not None for o in self.options)
+
+    # ------------------------------------------------------- the kind's hooks (parts/__init__.py)
+
+    @classmethod
+    def form_html(cls, part: dict, question: dict, *, base: str, label: str, page: dict) -> str:
+        """Radio buttons A to D (values A-D: the interface outside tests use), and the feedback."""
+        items = "".join(
+            f'<label class="q-option" for="{base}-{o["letter"]}"><input type="radio" class="q-choice" '
+            f'name="{base}" id="{base}-{o["letter"]}" value="{o["letter"]}" aria-describedby="{base}-feedback">'
+            f'<span class="q-letter">{o["letter"]}</span> <span class="q-option-text">{o["html"]}</span></label>'
+            for o in part["options"])
+        # four sketch graphs sit side by side, two by two on a phone (questions.css)
+        sketches = " q-sketches" if any(o.get("sketch") for o in part["options"]) else ""
+        return f'<div class="q-options{sketches}">{items}</div>' + feedback_html(base)
+
+    def print_lines(self, label: str, marks: int, paper) -> list:
+        """The options, then a box for the letter."""
+        options = paper.options([paper.sketch(o.sketch) if o.sketch else paper.rich(o.text) for o in self.options])
+        return [paper.line(f"{label}{self.prompt}"), options,
+                paper.line("Answer (A, B, C or D): " + "." * 8 + f" [{marks}]")]
+
+    def latex_sheet(self, question, index: int, marks: int, sheet) -> str:
+        rich, tex = sheet.rich, sheet.tex
+        prompt = "\\par\\vspace{4pt}" + tex(f"{question.label(index)}{self.prompt}") + "\n"
+        box = r"Answer (A, B, C or D): \gridbox \partmarks{" + str(marks) + "}\\par"
+        if self.sketches:
+            body = prompt + sheet.sketch_row(self) + box
+        else:
+            options = "\n".join(f"\\item {rich(option.text)}" for option in self.options)
+            body = (prompt + "\\begin{enumerate}[label=\\textbf{\\Alph*}, itemsep=1pt, topsep=4pt]\n"
+                    + options + "\n\\end{enumerate}\n" + box)
+        # the first is kept with its question's text (latex.question_sheet); a later one on its own page
+        return "\\begin{keeptogether}" + body + "\\end{keeptogether}" if index else body
+
+    def latex_key(self, question, index: int, marks: int, sheet) -> list[str]:
+        rich, tex = sheet.rich, sheet.tex
+        label = question.label(index) or "Answer "
+        right = self.options[OPTION_LETTERS.index(self.answer)]
+        wrong = [(letter, option) for letter, option in zip(OPTION_LETTERS, self.options, strict=True)
+                 if letter != self.answer]
+        return [f"\\textbf{{{tex(label)}{self.answer}: {rich(right.text)}}} \\hfill [{marks}]",
+                "\\begin{itemize}[leftmargin=1.5em,itemsep=0pt,topsep=2pt]\n" + "\n".join(
+                    f"\\item {letter} ({rich(option.text)}): \\emph{{{tex(option.mistake)}}} "
+                    f"(\\textbf{{{tex(sheet.option_marks(question, index))}}}). {tex(option.feedback)}"
+                    for letter, option in wrong) + "\n\\end{itemize}"]
+
+    def html_sheet(self, question, index: int, marks: int, sheet) -> str:
+        from ..figures.sketches import sketch_svg  # SVG text only: no matplotlib
+        marks_html = sheet.marks_html
+        items = "".join(f'<li><span class="sb-letter">{letter}</span> '
+                        f"{sketch_svg(option.sketch) if option.sketch else _inline_html(option.text)}</li>"
+                        for letter, option in zip(OPTION_LETTERS, self.options, strict=True))
+        sketches = " sb-sketches" if self.sketches else ""
+        return (f'<div class="sb-part"><p>{prompt_html(question.label(index) + self.prompt)}</p>'
+                f'<ol class="sb-options{sketches}">{items}</ol><p class="sb-answer">Answer (A, B, C or D): '
+                f'<span class="sb-box"></span> {marks_html(marks)}</p></div>')
+
+    def html_key(self, question, index: int, marks: int, sheet) -> str:
+        marks_html = sheet.marks_html
+        label = question.label(index) or "Answer "
+        right = self.options[OPTION_LETTERS.index(self.answer)]
+        wrong = "".join(f"<li>{letter} ({_inline_html(option.text)}): <em>{prompt_html(option.mistake)}</em> "
+                        f'(<strong class="sb-kept">{prompt_html(sheet.option_marks(question, index))}</strong>). '
+                        f"{prompt_html(option.feedback)}</li>"
+                        for letter, option in zip(OPTION_LETTERS, self.options, strict=True)
+                        if letter != self.answer)
+        return (f'<p class="sb-key-answer"><strong>{prompt_html(label)}{self.answer}: {_inline_html(right.text)}'
+                f"</strong> {marks_html(marks)}</p><ul>{wrong}</ul>")
+
+    def moodle(self, out, item, question, index: int) -> None:
+        """A multichoice question, options A to D in the printed order, each wrong one with the
+        feedback of its mistake; a sketch option is a small SVG file shown by an image."""
+        shown, option_files = self._moodle_options(item.idnumber)
+        options = [(text, letter == self.answer,
+                    f"<p>{_escape(option.feedback)}</p>" if option.feedback
+                    else f"<p>Right: {_escape(self.answer_text)}.</p>")
+                   for letter, option, text in zip(OPTION_LETTERS, self.options, shown, strict=True)]
+        out.multichoice(item.name, item.idnumber, item.stem + item.ask + "</p>", item.marks, item.general,
+                        item.files, options, option_files=option_files)
+
+    def _moodle_options(self, idnumber: str) -> tuple[list[str], list[dict[str, bytes]]]:
+        """Each option's HTML, and its files: a sketch graph is a small SVG file shown by an <img>
+        whose alt text is its shape in words (Moodle's HTML filter drops inline SVG)."""
+        if not self.sketches:
+            return [textformat.to_html(o.text, paragraphs=False) for o in self.options], []
+        from ..figures.sketches import HEIGHT, WIDTH, sketch_svg  # SVG text only: no matplotlib
+
+        texts, files = [], []
+        for letter, option in zip(OPTION_LETTERS, self.options, strict=True):
+            filename = f"{idnumber}-{letter}.svg"
+            texts.append(f'<img src="@@PLUGINFILE@@/{filename}" alt="{html.escape(option.text)}" '
+                         f'width="{WIDTH}" height="{HEIGHT}">')
+            files.append({filename: sketch_svg(option.sketch).encode()})
+        return texts, files
+
+
+def _inline_html(source: str) -> str:
+    """Text in the text format as HTML, in one paragraph's worth (no <p>)."""
+    return textformat.to_html(source, paragraphs=False)
+
+
+def _escape(text: str) -> str:
+    return html.escape(text, quote=False)
 
 
 def _option_html(option: Option) -> str:

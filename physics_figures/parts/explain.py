@@ -8,7 +8,7 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from .. import textformat
-from .common import NoValue, _require
+from .common import SCRIPTS, NoValue, _require, feedback_html, prompt_html
 from .text import TextPoint, point_needs
 
 
@@ -25,6 +25,9 @@ class ExplainPart(NoValue):
     kind: ClassVar[str] = "explain"
     asks: ClassVar[str] = "explain"
     revisit: ClassVar[str] = ""
+    self_marked: ClassVar[bool] = True
+    answered_in_words: ClassVar[bool] = True
+    browser_script: ClassVar[str] = str(SCRIPTS / "explain.js")
 
     def __post_init__(self):
         textformat.parse(self.model_answer)
@@ -43,3 +46,52 @@ class ExplainPart(NoValue):
             data["points"] = [p.data(point_needs(self.points, i)) for i, p in enumerate(self.points)]
         return data
 
+    # ------------------------------------------------------- the kind's hooks (parts/__init__.py)
+
+    @classmethod
+    def form_html(cls, part: dict, question: dict, *, base: str, label: str, page: dict) -> str:
+        """A box for the student's own words; after Check, the marking points to tick."""
+        points = "".join(
+            f'<label class="q-point"><input type="checkbox" class="q-tick" value="{i}"> '
+            f'<span class="q-point-text">{mark["html"]}</span> <strong>{mark["code"]}</strong></label>'
+            for i, mark in enumerate(question["marks"]) if mark["part"] == part["id"])
+        return (f'<label class="q-field q-field-wide" for="{base}-text"><span>Your answer</span>'
+                f'<textarea class="q-explain" id="{base}-text" rows="4" aria-describedby="{base}-feedback">'
+                f'</textarea></label>'
+                f'<div class="q-points" hidden><p>Tick each marking point your answer makes:</p>{points}'
+                f'<div class="q-model"><p><strong>A full answer:</strong></p>'
+                f'<div class="q-model-text">{part["model"]}</div></div></div>' + feedback_html(base))
+
+    def print_lines(self, label: str, marks: int, paper) -> list:
+        """Dotted lines to write on, the marks after the last."""
+        return [paper.line(f"{label}{self.prompt}")] + [
+            paper.line("." * 70 + (f" [{marks}]" if last else "")) for last in (False, False, False, True)]
+
+    def latex_sheet(self, question, index: int, marks: int, sheet) -> str:
+        tex = sheet.tex
+        return (f"\\par\\vspace{{4pt}}\\needspace{{4\\baselineskip}}{tex(question.label(index) + self.prompt)}"
+                f"\\writinglines{{{sheet.LINES_PER_MARK * marks}}}\\vspace{{2pt}}\\partmarks{{{marks}}}\\par")
+
+    def latex_key(self, question, index: int, marks: int, sheet) -> list[str]:
+        rich, tex = sheet.rich, sheet.tex
+        # "Model answer", not "Answer Model answer", for a part alone
+        return [(f"\\textbf{{{tex(question.label(index))}Model answer}} \\hfill [{marks}]\\par "
+                 f"{rich(self.model_answer)}")]
+
+    def html_sheet(self, question, index: int, marks: int, sheet) -> str:
+        marks_html = sheet.marks_html
+        lines = '<span class="sb-line"></span>' * (sheet.LINES_PER_MARK * marks)
+        return (f'<div class="sb-part"><p>{prompt_html(question.label(index) + self.prompt)}</p>'
+                f'<div class="sb-lines">{lines}</div><p class="sb-answer">{marks_html(marks)}</p></div>')
+
+    def html_key(self, question, index: int, marks: int, sheet) -> str:
+        marks_html = sheet.marks_html
+        return (f'<p class="sb-key-answer"><strong>{prompt_html(question.label(index))}Model answer</strong> '
+                f"{marks_html(marks)}</p><p>{textformat.to_html(self.model_answer, paragraphs=False)}</p>")
+
+    def moodle(self, out, item, question, index: int) -> None:
+        """An essay, with the model answer and the marking points for the grader."""
+        grader = (f"<p><strong>Model answer</strong></p>{textformat.to_html(self.model_answer)}"
+                  + item.scheme + item.how_marked)
+        out.essay(item.name, item.idnumber, item.stem + item.ask + f" [{item.marks}]</p>", item.marks, item.general,
+                  item.files, grader)

@@ -71,6 +71,8 @@ class GraphPart(Part):
     tolerance: float = field(default=0.0, kw_only=True)
     min_sig_figs: int = field(default=1, kw_only=True)
     kind: ClassVar[str] = "graph"
+    reads_graph: ClassVar[bool] = True
+    moodle_how: ClassVar[str] = " (read from the graph)"
 
     def __post_init__(self):
         _require(self.tolerance > 0, "tolerance", self.tolerance,
@@ -117,6 +119,10 @@ class GraphPart(Part):
 
     def browser_data(self, part_id: str) -> dict:
         return {**super().browser_data(part_id), "tolerance": self.tolerance}
+
+    def working_cm(self, marks: int, sheet) -> float:
+        """A reading needs no working: a little room above its answer line."""
+        return 0.6
 
 
 @dataclass(frozen=True)

@@ -10,6 +10,7 @@ import math
 from collections.abc import Callable, Mapping
 from dataclasses import KW_ONLY, dataclass, field
 from functools import cache, cached_property
+from html import escape
 from typing import ClassVar
 
 import sympy
@@ -26,8 +27,15 @@ from .common import (
     G_TEN,
     PART_IDS,
     PART_WAY_SIG_FIGS,
+    SCRIPTS,
+    UNIT_HINT,
+    PartKind,
     _require,
+    feedback_html,
+    field_label,
+    input_html,
     number,
+    prompt_html,
     unit_text,
 )
 
@@ -177,7 +185,7 @@ def _round_sf(value: float, sig_figs: int) -> float:
 
 
 @dataclass(frozen=True)
-class Part:
+class Part(PartKind):
     """One answer box: prompt, answer (SI units) and how to mark it.
 
     unit: the SI unit the answer is in, as typed ("N s", "m s^-2"); units: every usual
@@ -228,6 +236,11 @@ class Part:
     readings: tuple[Reading, ...] = ()
     answer_from_readings: Callable[..., float] | None = field(default=None, compare=False, repr=False)
     kind: ClassVar[str] = "numeric"
+    has_value: ClassVar[bool] = True
+    mock_paper: ClassVar[str] = "2"
+    browser_script: ClassVar[str] = str(SCRIPTS / "numeric.js")
+    #: What Moodle's question adds to the prompt (a reading says it is read from the graph).
+    moodle_how: ClassVar[str] = ""
 
     def __post_init__(self):
         object.__setattr__(self, "value", float(self.value))
@@ -406,3 +419,126 @@ class Part:
             "ecf": [method.browser_data() for method in self.ecf_methods], "kind": self.kind,
         }
 
+    # ------------------------------------------------------- the kind's hooks (parts/__init__.py)
+
+    @classmethod
+    def form_html(cls, part: dict, question: dict, *, base: str, label: str, page: dict) -> str:
+        """Boxes for the value, its unit (and its direction), the feedback, and help by steps."""
+        hint = not page.get("unit-hint")
+        page["unit-hint"] = True  # the hint is under the page's first unit box only
+        return _value_boxes(base, part, label, hint) + feedback_html(base) + _help_html(label)
+
+    def print_lines(self, label: str, marks: int, paper) -> list:
+        """A dotted line for the value (and its direction), drawn by the question sheet from its data."""
+        line = f"{label}{self.prompt} = " + "." * 28
+        if self.direction == "choice":
+            line += " direction: " + "." * 16
+        # the question sheet draws its own line from this data (book/_latex/latex_question_sheets.py)
+        return [paper.line(line + f" [{marks}]", classes=["q-answer-line"], prompt=f"{label}{self.prompt}",
+                           marks=marks, direction=self.direction == "choice")]
+
+    def working_cm(self, marks: int, sheet) -> float:
+        """The working space a sheet leaves above the answer line."""
+        return sheet.WORKING_CM_PER_MARK * marks
+
+    def latex_sheet(self, question, index: int, marks: int, sheet) -> str:
+        tex = sheet.tex
+        space = self.working_cm(marks, sheet)
+        line = f"{tex(question.label(index) + self.prompt)} = \\answerline{{4.2cm}}\\ {tex(unit_text(self.unit))}"
+        if self.direction == "choice":
+            line += "\\par\\nopagebreak\\vspace{6pt}\\hfill direction: \\answerline{4.2cm}\\hspace{2.5em}"
+        return (f"\\par\\needspace{{{format_number(space + 1.2, decimals=1)}cm}}"
+                f"\\vspace{{{format_number(space, decimals=1)}cm}}\n"
+                f"\\needspace{{3\\baselineskip}}{line}\\partmarks{{{marks}}}\\par")
+
+    def latex_key(self, question, index: int, marks: int, sheet) -> list[str]:
+        tex = sheet.tex
+        label = question.label(index) or "Answer "
+        out = [(f"\\textbf{{{tex(label)}{tex(self.prompt)} = {tex(self.answer_text)}}}{tex(sheet.accept_note(self))} "
+                f"\\hfill [{marks}]")]
+        if self.working:
+            out.append(tex(sheet.working_text(self)))
+        note = sheet.ecf_note(question, index)
+        if note:
+            out.append("\\emph{" + tex(note) + "}")
+        rows = sheet.wrong_answers(question, index)
+        if rows:
+            items = "\n".join(f"\\item \\textbf{{{tex(row.written)}}}: \\emph{{{tex(row.name)}}} "
+                              f"(\\textbf{{{tex(row.marks)}}}). {tex(row.feedback)}" for row in rows)
+            out.append("\\textbf{Common wrong answers} (the mistake each shows, and what it scores)\n"
+                       "{\\small\\begin{itemize}[leftmargin=1.5em,itemsep=1pt,topsep=2pt]\n"
+                       + items + "\n\\end{itemize}}")
+        return out
+
+    def html_sheet(self, question, index: int, marks: int, sheet) -> str:
+        marks_html = sheet.marks_html
+        prompt = prompt_html(question.label(index) + self.prompt)
+        direction = ('<p class="sb-answer">direction: <span class="sb-blank"></span></p>'
+                     if self.direction == "choice" else "")
+        return (f'<div class="sb-part"><div class="sb-working" style="height: {self.working_cm(marks, sheet):g}cm"></div>'
+                f'<p class="sb-answer">{prompt} = <span class="sb-blank"></span> {prompt_html(unit_text(self.unit))} '
+                f"{marks_html(marks)}</p>{direction}</div>")
+
+    def html_key(self, question, index: int, marks: int, sheet) -> str:
+        marks_html = sheet.marks_html
+        label = question.label(index) or "Answer "
+        out = [(f'<p class="sb-key-answer"><strong>{prompt_html(label + self.prompt)} = '
+                f"{prompt_html(self.answer_text)}</strong>{prompt_html(sheet.accept_note(self))} {marks_html(marks)}</p>")]
+        if self.working:
+            out.append(f"<p>{prompt_html(sheet.working_text(self))}</p>")
+        note = sheet.ecf_note(question, index)
+        if note:
+            out.append(f"<p><em>{prompt_html(note)}</em></p>")
+        rows = sheet.wrong_answers(question, index)
+        if rows:
+            items = "".join(f"<li><strong>{prompt_html(row.written)}</strong>: <em>{prompt_html(row.name)}</em> "
+                            f'(<strong class="sb-kept">{prompt_html(row.marks)}</strong>). '
+                            f"{prompt_html(row.feedback)}</li>" for row in rows)
+            out.append("<p><strong>Common wrong answers</strong> (the mistake each shows, and what it scores)</p>"
+                       f'<ul class="sb-wrong">{items}</ul>')
+        return "".join(out)
+
+    def moodle(self, out, item, question, index: int) -> None:
+        """A numerical question; with a direction to choose, a Cloze question (size and direction)."""
+        unit = escape(unit_text(self.unit), quote=False)  # Moodle's text: no tie between number and unit
+        if self.direction == "choice":
+            out.cloze(item.name, item.idnumber, item.stem + item.ask + f"{self.moodle_how}. Type the size as a "
+                      f"number in {unit} and choose the direction.</p>", item.marks, item.general, item.files,
+                      question, index)
+            return
+        sign = f" Give a signed value: positive is {escape(self.positive, quote=False)}." if self.direction == "signed" else ""
+        typing = f"Type the number and its unit ({unit})" if self.unit else "Type the number as a decimal (it has no unit)"
+        out.numerical(item.name, item.idnumber, item.stem + item.ask + f"{self.moodle_how}.{sign} {typing}.</p>",
+                      item.marks, item.general, item.files, question, index)
+
+
+def _value_boxes(base: str, part: dict, label: str, hint: bool) -> str:
+    feedback, html = f"{base}-feedback", []
+    if part["direction"] == "signed":
+        # the span is what question-relabel.js rewrites with another variant's words
+        html.append(f'<p class="q-note" id="{base}-note">Give a signed value: positive is '
+                    f'<span class="q-positive">{prompt_html(part["positive"])}</span>.</p>')
+        feedback += f" {base}-note"
+    html.append('<div class="q-fields">')
+    html.append(input_html("q-value", f"{base}-value", escape(field_label(label, "Value")), feedback))
+    html.append(input_html("q-unit", f"{base}-unit", escape(field_label(label, "Unit")),
+                           f"{base}-unit-hint {feedback}" if hint else feedback))
+    if part["direction"] == "choice":
+        options = "".join(f'<option value="{escape(c)}">{escape(c)}</option>' for c in part["choices"])
+        html.append(f'<label class="q-field" for="{base}-direction"><span>'
+                    f'{escape(field_label(label, "Direction"))}</span>'
+                    f'<select class="q-direction" id="{base}-direction" aria-describedby="{feedback}">'
+                    f'<option value="">Choose…</option>{options}</select></label>')
+    html.append("</div>")
+    if hint:
+        html.append(f'<p class="q-unit-hint" id="{base}-unit-hint">{escape(UNIT_HINT)}</p>')
+    return "".join(html)
+
+
+def _help_html(label: str) -> str:
+    """Help before the answer (static/help-steps.js): the steps of the working shown so far,
+    read out as each comes (a polite live region), and the button that shows the next; the
+    script fills both from the question's data, and New numbers changes them."""
+    name = escape(field_label(label, "Steps of the working"))
+    return (f'<div class="q-help"><ol class="q-steps" aria-live="polite" aria-label="{name}"></ol>'
+            '<button type="button" class="q-step">Show a step</button></div>')

@@ -25,7 +25,7 @@ from html import escape
 from typing import ClassVar
 
 from .. import textformat
-from .common import NoValue, _require
+from .common import SCRIPTS, NoValue, _require, feedback_html, prompt_html
 
 #: The codes a text point carries: an independent B1, or an M1 and the A1 that depends on it.
 TEXT_CODES = ("B1", "M1", "A1")
@@ -108,6 +108,11 @@ class TextPart(NoValue):
     kind: ClassVar[str] = "text"
     asks: ClassVar[str] = "state"
     revisit: ClassVar[str] = ""
+    #: Its lines count when ticked: by the marker (the points it finds), or by the student where
+    #: the marker could not decide (text.js; a dependent A1 needs its M1).
+    self_marked: ClassVar[bool] = True
+    answered_in_words: ClassVar[bool] = True
+    browser_script: ClassVar[str] = str(SCRIPTS / "text.js")
 
     def __post_init__(self):
         textformat.parse(self.model_answer)
@@ -149,3 +154,61 @@ class TextPart(NoValue):
             lines.extend(("reject", f"“{print_wording(n.wording)}”: {n.why} ({n.source})") for n in point.reject)
             lines.extend(("ignore", note) for note in point.ignore)
         return lines
+
+    # ------------------------------------------------------- the kind's hooks (parts/__init__.py)
+
+    @classmethod
+    def form_html(cls, part: dict, question: dict, *, base: str, label: str, page: dict) -> str:
+        """The one textarea for the student's words; after Check, each marking point with what the
+        marker found (text.js, show), a box to tick only where it could not decide. A tick's value
+        is its line's index in the question's marks, as an explain part's."""
+        lines = [i for i, mark in enumerate(question["marks"]) if mark["part"] == part["id"]]
+        points = "".join(
+            f'<label class="q-point"><input type="checkbox" class="q-tick" value="{line}" disabled> '
+            f'<span class="q-point-text">{escape(point["text"])}</span> <strong>{point["code"]}</strong></label>'
+            for line, point in zip(lines, part["points"], strict=True))
+        return (f'<label class="q-field q-field-wide" for="{base}-text"><span>Your answer</span>'
+                f'<textarea class="q-explain" id="{base}-text" rows="4" aria-describedby="{base}-feedback">'
+                f'</textarea></label>'
+                f'<div class="q-points" hidden><p>The marking points (tick one only where the marker could not '
+                f'decide and your answer makes it):</p>{points}'
+                f'<div class="q-model"><p><strong>A full answer:</strong></p>'
+                f'<div class="q-model-text">{part["model"]}</div></div></div>' + feedback_html(base))
+
+    def print_lines(self, label: str, marks: int, paper) -> list:
+        """Dotted lines to write on, the marks after the last (as an explain part)."""
+        return [paper.line(f"{label}{self.prompt}")] + [
+            paper.line("." * 70 + (f" [{marks}]" if last else "")) for last in (False, False, False, True)]
+
+    def latex_sheet(self, question, index: int, marks: int, sheet) -> str:
+        tex = sheet.tex
+        return (f"\\par\\vspace{{4pt}}\\needspace{{4\\baselineskip}}{tex(question.label(index) + self.prompt)}"
+                f"\\writinglines{{{sheet.LINES_PER_MARK * marks}}}\\vspace{{2pt}}\\partmarks{{{marks}}}\\par")
+
+    def latex_key(self, question, index: int, marks: int, sheet) -> list[str]:
+        """The model answer, then per point what an examiner accepts, rejects (why, the paper) and ignores."""
+        rich, tex = sheet.rich, sheet.tex
+        words = {"accept": "Accept", "reject": "Reject", "ignore": "Ignore"}
+        items = [f"\\item[] \\textbf{{{tex(text)}}}" if kind == "point" else f"\\item {words[kind]}: {tex(text)}"
+                 for kind, text in self.key_lines()]
+        return [(f"\\textbf{{{tex(question.label(index))}Model answer}} \\hfill [{marks}]\\par "
+                 f"{rich(self.model_answer)}"),
+                "\\begin{itemize}[leftmargin=1.5em,itemsep=0pt,topsep=2pt]\n" + "\n".join(items) + "\n\\end{itemize}"]
+
+    def html_sheet(self, question, index: int, marks: int, sheet) -> str:
+        lines = '<span class="sb-line"></span>' * (sheet.LINES_PER_MARK * marks)
+        return (f'<div class="sb-part"><p>{prompt_html(question.label(index) + self.prompt)}</p>'
+                f'<div class="sb-lines">{lines}</div><p class="sb-answer">{sheet.marks_html(marks)}</p></div>')
+
+    def html_key(self, question, index: int, marks: int, sheet) -> str:
+        return (f'<p class="sb-key-answer"><strong>{prompt_html(question.label(index))}Model answer</strong> '
+                f"{sheet.marks_html(marks)}</p><p>{textformat.to_html(self.model_answer, paragraphs=False)}</p>"
+                + self.key_html())
+
+    def moodle(self, out, item, question, index: int) -> None:
+        """An essay (Moodle has no core type that reads the words: CLARIFICATIONS, Papers), with the
+        model answer, the mark scheme and the points' accepted and rejected wordings for the grader."""
+        grader = (f"<p><strong>Model answer</strong></p>{textformat.to_html(self.model_answer)}" + item.scheme
+                  + "<p><strong>The marking points</strong></p>" + self.key_html() + item.how_marked)
+        out.essay(item.name, item.idnumber, item.stem + item.ask + f" [{item.marks}]</p>", item.marks, item.general,
+                  item.files, grader)

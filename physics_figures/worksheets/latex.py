@@ -15,6 +15,7 @@ number from physics_figures, written by physics_figures.notation.format_number.
 from __future__ import annotations
 
 import re
+from types import SimpleNamespace
 from typing import NamedTuple
 
 import sympy
@@ -137,7 +138,7 @@ def graphs(version: Version) -> dict[str, bytes]:
 def _cover(sheet: Sheet, version: Version) -> str:
     numbers = range(1, len(version.items) + 1)
     choices = [(number, item) for number, item in zip(numbers, version.items, strict=True)
-               if any(part.kind == "mcq" for part in item.question.parts)]
+               if any(part.answer_grid for part in item.question.parts)]
     rows = "\n".join(f"{number} & {item.question.marks} & \\\\ \\hline"
                      for number, item in zip(numbers, version.items, strict=True))
     out = [
@@ -200,48 +201,9 @@ def _cover(sheet: Sheet, version: Version) -> str:
     return "\n".join(line for line in out if line)
 
 
-def _answer_line(label: str, part, marks: int) -> str:
-    prompt = tex(f"{label}{part.prompt}")
-    if part.kind == "mcq":
-        return f"{prompt}\\par\\nopagebreak Answer (A, B, C or D): \\gridbox \\partmarks{{{marks}}}"
-    line = f"{prompt} = \\answerline{{4.2cm}}\\ {_unit(part.unit)}"
-    if part.direction == "choice":
-        line += "\\par\\nopagebreak\\vspace{6pt}\\hfill direction: \\answerline{4.2cm}\\hspace{2.5em}"
-    return f"\\needspace{{3\\baselineskip}}{line}\\partmarks{{{marks}}}"
-
-
 def _part(question: Question, index: int, marks: int) -> str:
-    part = question.parts[index]
-    if part.kind == "mcq" and index:  # the first is kept with its question's text (question_sheet)
-        return "\\begin{keeptogether}" + _part_body(question, index, marks) + "\\end{keeptogether}"
-    return _part_body(question, index, marks)
-
-
-def _part_body(question: Question, index: int, marks: int) -> str:
-    part, label = question.parts[index], question.label(index)
-    if part.kind == "mcq" and part.sketches:
-        return ("\\par\\vspace{4pt}" + tex(f"{label}{part.prompt}") + "\n" + sketch_row(part)
-                + r"Answer (A, B, C or D): \gridbox \partmarks{" + str(marks) + "}\\par")
-    if part.kind == "mcq":
-        options = "\n".join(f"\\item {rich(option.text)}" for option in part.options)
-        return ("\\par\\vspace{4pt}" + tex(f"{label}{part.prompt}") + "\n"
-                "\\begin{enumerate}[label=\\textbf{\\Alph*}, itemsep=1pt, topsep=4pt]\n"
-                + options + "\n\\end{enumerate}\n" + r"Answer (A, B, C or D): \gridbox \partmarks{"
-                + str(marks) + "}\\par")
-    if part.kind in ("explain", "text"):
-        return (f"\\par\\vspace{{4pt}}\\needspace{{4\\baselineskip}}{tex(label + part.prompt)}"
-                f"\\writinglines{{{LINES_PER_MARK * marks}}}\\vspace{{2pt}}\\partmarks{{{marks}}}\\par")
-    space = 0.6 if part.kind == "graph" else WORKING_CM_PER_MARK * marks
-    return (f"\\par\\needspace{{{format_number(space + 1.2, decimals=1)}cm}}\\vspace{{{format_number(space, decimals=1)}cm}}\n"
-            + _answer_line(label, part, marks) + "\\par")
-
-
-def _text_rules(part) -> str:
-    """A text part's rules in the key: per point, what an examiner accepts, rejects and ignores."""
-    words = {"accept": "Accept", "reject": "Reject", "ignore": "Ignore"}
-    items = [f"\\item[] \\textbf{{{tex(text)}}}" if kind == "point" else f"\\item {words[kind]}: {tex(text)}"
-             for kind, text in part.key_lines()]
-    return "\\begin{itemize}[leftmargin=1.5em,itemsep=0pt,topsep=2pt]\n" + "\n".join(items) + "\n\\end{itemize}"
+    """The part on the sheet, as its kind prints it (parts/__init__.py)."""
+    return question.parts[index].latex_sheet(question, index, marks, writer())
 
 
 def sketch_row(part) -> str:
@@ -260,7 +222,7 @@ def question_sheet(sheet: Sheet, version: Version) -> str:
     for number, item in enumerate(version.items, start=1):
         question = item.question
         # a choice question: its text, graph and first part (the options) on one page
-        keep = question.parts[0].kind == "mcq"
+        keep = question.parts[0].keeps_with_question_text
         start = [f"\\question{{{number}}}{rich(question.text)}"]
         if question.graph is not None or question.diagram is not None:
             # a graph to read is wide; a diagram (Before above After) needs less than half the line
@@ -386,7 +348,7 @@ def wrong_answers(question: Question, index: int) -> list[WrongAnswer]:
 def accept_note(part) -> str:
     """What the key accepts beside a numeric or graph part's answer (plain text, the PDF key's
     and the sheet builder's): " (accept 2 or more significant figures)", or a reading's band."""
-    if part.kind == "graph":
+    if part.reads_graph:
         return f" (read from the graph: accept {part.band_text()})"
     if part.readings:  # worked from readings: what readings within half a small square give
         low, high = part.band
@@ -404,39 +366,17 @@ def working_text(part) -> str:
 
 
 def _key_part(question: Question, index: int, marks: int) -> list[str]:
-    part, label = question.parts[index], question.label(index) or "Answer "
-    out = []
-    if part.kind == "mcq":
-        right = part.options[OPTION_LETTERS.index(part.answer)]
-        out.append(f"\\textbf{{{tex(label)}{part.answer}: {rich(right.text)}}} \\hfill [{marks}]")
-        wrong = [(letter, option) for letter, option in zip(OPTION_LETTERS, part.options, strict=True)
-                 if letter != part.answer]
-        out.append("\\begin{itemize}[leftmargin=1.5em,itemsep=0pt,topsep=2pt]\n" + "\n".join(
-            f"\\item {letter} ({rich(option.text)}): \\emph{{{tex(option.mistake)}}} "
-            f"(\\textbf{{{tex(option_marks(question, index))}}}). {tex(option.feedback)}"
-            for letter, option in wrong) + "\n\\end{itemize}")
-        return out
-    if part.kind in ("explain", "text"):  # "Model answer", not "Answer Model answer", for a part alone
-        out.append(f"\\textbf{{{tex(question.label(index))}Model answer}} \\hfill [{marks}]\\par "
-                   f"{rich(part.model_answer)}")
-        if part.kind == "text":  # the wordings accepted and rejected, each with its paper
-            out.append(_text_rules(part))
-        return out
-    answer = tex(part.answer_text)
-    out.append(f"\\textbf{{{tex(label)}{tex(part.prompt)} = {answer}}}{tex(accept_note(part))} \\hfill [{marks}]")
-    if part.working:
-        out.append(tex(working_text(part)))
-    note = ecf_note(question, index)
-    if note:
-        out.append("\\emph{" + tex(note) + "}")
-    rows = wrong_answers(question, index)
-    if rows:
-        items = "\n".join(f"\\item \\textbf{{{tex(row.written)}}}: \\emph{{{tex(row.name)}}} "
-                          f"(\\textbf{{{tex(row.marks)}}}). {tex(row.feedback)}" for row in rows)
-        out.append("\\textbf{Common wrong answers} (the mistake each shows, and what it scores)\n"
-                   "{\\small\\begin{itemize}[leftmargin=1.5em,itemsep=1pt,topsep=2pt]\n"
-                   + items + "\n\\end{itemize}}")
-    return out
+    """The part in the key, as its kind writes it (parts/__init__.py)."""
+    return question.parts[index].latex_key(question, index, marks, writer())
+
+
+def writer() -> SimpleNamespace:
+    """What a part kind writes its LaTeX sheet and key with (its ``latex_sheet`` and
+    ``latex_key`` hooks, physics_figures/parts/__init__.py): the text helpers, the sizes, and the
+    numeric and choice parts' key helpers."""
+    return SimpleNamespace(tex=tex, rich=rich, WORKING_CM_PER_MARK=WORKING_CM_PER_MARK, LINES_PER_MARK=LINES_PER_MARK,
+                           sketch_row=sketch_row, accept_note=accept_note, ecf_note=ecf_note, working_text=working_text,
+                           wrong_answers=wrong_answers, option_marks=option_marks)
 
 
 def _mark_line(label: str, text: str, code: str) -> str:

@@ -49,12 +49,13 @@ import sys
 import xml.etree.ElementTree as ET
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy
 
-from .. import marking, textformat, topics
+from .. import marking, topics
 from ..notation import format_number, plain_number
-from ..questions import OPTION_LETTERS, Question, unit_text
+from ..questions import KINDS, Question, unit_text
 from ..topics import Topic
 from ..variants import Template
 from . import DEFAULT_TOPIC, bank_templates, part_marks, topic_of
@@ -218,7 +219,24 @@ def _escape(text: str) -> str:
     return html.escape(text, quote=False)
 
 
-def _scheme_html(question: Question) -> str:
+class MoodleItem(NamedTuple):
+    """What a part kind's ``moodle`` hook writes its question from: its name and idnumber, the
+    question's text with its graph (stem), the part's own prompt ("<p><strong>(a) </strong>Find
+    ...", its </p> left to the kind), its marks, the general feedback, the files, the mark scheme (HTML) and how the
+    part is marked by error carried forward (HTML, or "")."""
+
+    name: str
+    idnumber: str
+    stem: str
+    ask: str
+    marks: int
+    general: str
+    files: dict[str, bytes]
+    scheme: str
+    how_marked: str
+
+
+def scheme_html(question: Question) -> str:
     return "<p><strong>Mark scheme</strong></p>" + question.mark_scheme_html()
 
 
@@ -290,7 +308,8 @@ def _drawn(job: tuple[str, int]) -> tuple[str, dict[str, bytes]]:
 
 def _draw_graphs(templates: list[Template]) -> dict[tuple[str, int], tuple[str, dict[str, bytes]]]:
     """Every variant's graph, drawn once, on every core (matplotlib takes most of the time)."""
-    jobs = [(t.key, index) for t in templates if "graph" in t.kinds for index in variant_indices(t)]
+    jobs = [(t.key, index) for t in templates if any(KINDS[kind].reads_graph for kind in t.kinds)
+            for index in variant_indices(t)]
     if not jobs:
         return {}
     _GRAPH_TEMPLATES.update({t.key: t for t in templates})
@@ -325,50 +344,9 @@ def _part(out: _Export, template: Template, index: int, question: Question, part
     # the student (the general feedback; an essay's grader information), never in the question
     note = ecf_note(question, part_index)
     how_marked = f"<p><em>How this part is marked: {_escape(note)}</em></p>" if note else ""
-    general = _scheme_html(question) + how_marked
-    if part.kind == "mcq":
-        shown, option_files = _option_texts(part, idnumber)
-        options = [(text, letter == part.answer,
-                    f"<p>{_escape(option.feedback)}</p>" if option.feedback
-                    else f"<p>Right: {_escape(part.answer_text)}.</p>")
-                   for letter, option, text in zip(OPTION_LETTERS, part.options, shown, strict=True)]
-        out.multichoice(name, idnumber, stem + ask + "</p>", marks, general, files, options,
-                        option_files=option_files)
-    elif part.kind in ("explain", "text"):
-        # a text part: the points with the wordings an examiner accepts and rejects (Moodle has no
-        # core type that reads them: an essay, CLARIFICATIONS, Papers)
-        rules = ("<p><strong>The marking points</strong></p>" + part.key_html()) if part.kind == "text" else ""
-        grader = (f"<p><strong>Model answer</strong></p>{textformat.to_html(part.model_answer)}"
-                  + _scheme_html(question) + rules + how_marked)
-        out.essay(name, idnumber, stem + ask + f" [{marks}]</p>", marks, general, files, grader)
-    else:
-        how = " (read from the graph)" if part.kind == "graph" else ""
-        sign = f" Give a signed value: positive is {_escape(part.positive)}." if part.direction == "signed" else ""
-        if part.direction == "choice":
-            out.cloze(name, idnumber, stem + ask + f"{how}. Type the size as a number in "
-                      f"{_escape(unit_text(part.unit))} and choose the direction.</p>",
-                      marks, general, files, question, part_index)
-        else:
-            typing = (f"Type the number and its unit ({_escape(unit_text(part.unit))})" if part.unit
-                      else "Type the number as a decimal (it has no unit)")
-            out.numerical(name, idnumber, stem + ask + f"{how}.{sign} {typing}.</p>", marks, general, files,
-                          question, part_index)
-
-
-def _option_texts(part, idnumber: str) -> tuple[list[str], list[dict[str, bytes]]]:
-    """Each option's HTML, and its files: a sketch graph is a small SVG file shown by an <img>
-    whose alt text is its shape in words (Moodle's HTML filter drops inline SVG)."""
-    if not part.sketches:
-        return [textformat.to_html(o.text, paragraphs=False) for o in part.options], []
-    from ..figures.sketches import HEIGHT, WIDTH, sketch_svg  # SVG text only: no matplotlib
-
-    texts, files = [], []
-    for letter, option in zip(OPTION_LETTERS, part.options, strict=True):
-        filename = f"{idnumber}-{letter}.svg"
-        texts.append(f'<img src="@@PLUGINFILE@@/{filename}" alt="{html.escape(option.text)}" '
-                     f'width="{WIDTH}" height="{HEIGHT}">')
-        files.append({filename: sketch_svg(option.sketch).encode()})
-    return texts, files
+    general = scheme_html(question) + how_marked
+    item = MoodleItem(name, idnumber, stem, ask, marks, general, files, scheme_html(question), how_marked)
+    part.moodle(out, item, question, part_index)
 
 
 def _decimal(value: float) -> str:

@@ -56,7 +56,7 @@ def right_forms(question: Question, index: int) -> list[tuple[float, float]]:
     the scheme also accepts at 3 s.f., and what readings within half a small square give; a reading
     from a graph within its tolerance."""
     part = question.parts[index]
-    if part.kind == "graph":
+    if part.reads_graph:
         return [(part.value, part.tolerance)]
     two = _exact(float(round_number(part.value, RIGHT_SIG_FIGS[0])))
     three = _band(part.value, RIGHT_SIG_FIGS[1])
@@ -146,7 +146,7 @@ def graded_answers(question: Question, index: int, *, direction_box: int = 0) ->
         if not _overlaps(centre, width, taken):
             rows.append((points, centre, width, feedback))
             taken.append((centre, width))
-    if part.kind != "graph" and part.value != 0:  # right only to 1 s.f.: all but the A1
+    if not part.reads_graph and part.value != 0:  # right only to 1 s.f.: all but the A1
         one = _exact(float(round_number(part.value, 1)))
         if not _overlaps(*one, taken):
             rows.append((kept(losses["too-few-sf"]), *one, marking.too_few_sf_feedback(1)))

@@ -133,26 +133,39 @@ class QuestionDirective(SphinxDirective):
         })
 
 
-def answer_lines(label: str, part, marks: int) -> list[nodes.Node]:
-    """What a part prints on paper: its options and a box for the letter, lines for an
-    explanation, or a line for a value (and its direction); each ends with the part's
-    marks, [2], as on a Cambridge paper."""
-    tail = f" [{marks}]"
-    if part.kind == "mcq":
+class Paper:
+    """What a part kind's ``print_lines`` builds its printed lines with (docutils nodes): the
+    part on paper and on the page without JavaScript (physics_figures/parts/__init__.py)."""
+
+    @staticmethod
+    def line(text: str, **attributes) -> nodes.paragraph:
+        """A line of plain text; attributes (classes, data) for the question sheet to read."""
+        return nodes.paragraph(text=text, **attributes)
+
+    @staticmethod
+    def options(items: list[list[nodes.Node]]) -> nodes.enumerated_list:
+        """Options lettered A, B, C, ..., each from its nodes."""
         options = nodes.enumerated_list(enumtype="upperalpha", classes=["q-options-print"])
-        for option in part.options:
-            options += nodes.list_item("", *(sketch_nodes(option.sketch) if option.sketch else text_nodes(option.text)))
-        return [nodes.paragraph(text=f"{label}{part.prompt}"), options,
-                nodes.paragraph(text="Answer (A, B, C or D): " + "." * 8 + tail)]
-    if part.kind in ("explain", "text"):
-        return [nodes.paragraph(text=f"{label}{part.prompt}")] + [
-            nodes.paragraph(text="." * 70 + (tail if last else "")) for last in (False, False, False, True)]
-    line = f"{label}{part.prompt} = " + "." * 28
-    if part.direction == "choice":
-        line += " direction: " + "." * 16
-    # the question sheet draws its own line from this data (book/_latex/latex_question_sheets.py)
-    return [nodes.paragraph(text=line + tail, classes=["q-answer-line"], prompt=f"{label}{part.prompt}",
-                            marks=marks, direction=part.direction == "choice")]
+        for item in items:
+            options += nodes.list_item("", *item)
+        return options
+
+    @staticmethod
+    def rich(source: str) -> list[nodes.Node]:
+        """Text in the bank's text format."""
+        return text_nodes(source)
+
+    @staticmethod
+    def sketch(sketch) -> list[nodes.Node]:
+        """A sketch graph (SVG on the page, TikZ in the PDF)."""
+        return sketch_nodes(sketch)
+
+
+def answer_lines(label: str, part, marks: int) -> list[nodes.Node]:
+    """What a part prints on paper, as its kind prints it (its options and a box for the
+    letter, lines for an explanation, a line for a value...); each ends with the part's
+    marks, [2], as on a Cambridge paper."""
+    return part.print_lines(label, marks, Paper)
 
 
 def sketch_nodes(sketch) -> list[nodes.Node]:

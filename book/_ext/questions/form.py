@@ -7,7 +7,9 @@ that ask a question load. The worked answer is hidden until a first attempt.
 from __future__ import annotations
 
 import json
+import shutil
 from html import escape
+from pathlib import Path
 
 from docutils import nodes
 from notation import add_notation_script  # book/_ext/notation: the browser's number writer
@@ -15,14 +17,13 @@ from sphinx.util import logging
 
 from physics_figures import marking  # the rule table the browser's engine reads
 from physics_figures.notation import join_units  # a number never parts from its unit
+from physics_figures.parts import KINDS
+from physics_figures.parts.common import SCRIPTS, UNIT_HINT  # noqa: F401 (the mock test's page shows the hint)
 
 from . import schedule, store
 from .directive import question
 
 logger = logging.getLogger(__name__)
-#: The part kinds' markers (static/question-kinds/), each the browser twin of a part class of
-#: physics_figures/parts; marking.js finds them by the kinds they register.
-KIND_SCRIPTS = ("numeric", "choice", "explain", "text")
 
 
 PRINT_CHOICE = ('<p class="q-print"><button type="button" class="q-print-answers">Print with answers'
@@ -56,12 +57,6 @@ def visit_question(self, node):
 
 def depart_question(self, node):
     self.body.append("</section>\n")
-
-
-def _input(cls: str, ident: str, label: str, described_by: str) -> str:
-    return (f'<label class="q-field" for="{ident}"><span>{label}</span>'
-            f'<input class="{cls}" id="{ident}" type="text" autocomplete="off" autocapitalize="off" '
-            f'spellcheck="false" aria-describedby="{described_by}"></label>')
 
 
 def _section_anchor(env, docname: str, title: str) -> str | None:
@@ -101,90 +96,6 @@ def section_links(translator) -> dict[str, dict]:
     return links
 
 
-#: Under the first unit box of a page: how to type units and powers, before any mistake.
-UNIT_HINT = ("Type a unit with its symbols, a space between them and ^ for a power: N s, "
-             "kg m s^-1 or kg m/s, m s^-2. Units are case-sensitive: kg, not Kg.")
-
-
-def _field_label(label: str, name: str) -> str:
-    """A field's name: "(a) value" for part (a) of several, "Value" for a question of one part."""
-    return f"{label.strip()} {name.lower()}" if label.strip() else name
-
-
-def _numeric_html(base: str, part: dict, label: str = "", hint: bool = False) -> str:
-    feedback, html = f"{base}-feedback", []
-    if part["direction"] == "signed":
-        # the span is what question-relabel.js rewrites with another variant's words
-        html.append(f'<p class="q-note" id="{base}-note">Give a signed value: positive is '
-                    f'<span class="q-positive">{escape(join_units(part["positive"]))}</span>.</p>')
-        feedback += f" {base}-note"
-    html.append('<div class="q-fields">')
-    html.append(_input("q-value", f"{base}-value", escape(_field_label(label, "Value")), feedback))
-    html.append(_input("q-unit", f"{base}-unit", escape(_field_label(label, "Unit")),
-                       f"{base}-unit-hint {feedback}" if hint else feedback))
-    if part["direction"] == "choice":
-        options = "".join(f'<option value="{escape(c)}">{escape(c)}</option>' for c in part["choices"])
-        html.append(f'<label class="q-field" for="{base}-direction"><span>'
-                    f'{escape(_field_label(label, "Direction"))}</span>'
-                    f'<select class="q-direction" id="{base}-direction" aria-describedby="{feedback}">'
-                    f'<option value="">Choose…</option>{options}</select></label>')
-    html.append("</div>")
-    if hint:
-        html.append(f'<p class="q-unit-hint" id="{base}-unit-hint">{escape(UNIT_HINT)}</p>')
-    return "".join(html)
-
-
-def _help_html(label: str) -> str:
-    """Help before the answer (static/help-steps.js): the steps of the working shown so far,
-    read out as each comes (a polite live region), and the button that shows the next; the
-    script fills both from the question's data, and New numbers changes them."""
-    name = escape(_field_label(label, "Steps of the working"))
-    return (f'<div class="q-help"><ol class="q-steps" aria-live="polite" aria-label="{name}"></ol>'
-            '<button type="button" class="q-step">Show a step</button></div>')
-
-
-def _options_html(base: str, part: dict) -> str:
-    """Radio buttons A to D (values A-D: the interface outside tests use)."""
-    items = "".join(
-        f'<label class="q-option" for="{base}-{o["letter"]}"><input type="radio" class="q-choice" '
-        f'name="{base}" id="{base}-{o["letter"]}" value="{o["letter"]}" aria-describedby="{base}-feedback">'
-        f'<span class="q-letter">{o["letter"]}</span> <span class="q-option-text">{o["html"]}</span></label>'
-        for o in part["options"])
-    # four sketch graphs sit side by side, two by two on a phone (questions.css)
-    sketches = " q-sketches" if any(o.get("sketch") for o in part["options"]) else ""
-    return f'<div class="q-options{sketches}">{items}</div>'
-
-
-def _explain_html(base: str, part: dict, data: dict) -> str:
-    """A box for the student's own words; after Check, the marking points to tick."""
-    points = "".join(
-        f'<label class="q-point"><input type="checkbox" class="q-tick" value="{i}"> '
-        f'<span class="q-point-text">{mark["html"]}</span> <strong>{mark["code"]}</strong></label>'
-        for i, mark in enumerate(data["marks"]) if mark["part"] == part["id"])
-    return (f'<label class="q-field q-field-wide" for="{base}-text"><span>Your answer</span>'
-            f'<textarea class="q-explain" id="{base}-text" rows="4" aria-describedby="{base}-feedback">'
-            f'</textarea></label>'
-            f'<div class="q-points" hidden><p>Tick each marking point your answer makes:</p>{points}'
-            f'<div class="q-model"><p><strong>A full answer:</strong></p>'
-            f'<div class="q-model-text">{part["model"]}</div></div></div>')
-
-
-def _text_html(base: str, part: dict) -> str:
-    """A box for the student's words (the one textarea of a text part); after Check, each marking
-    point with what the marker found, a box to tick only where it could not decide."""
-    points = "".join(
-        f'<label class="q-point"><input type="checkbox" class="q-tick" value="{i}" disabled> '
-        f'<span class="q-point-text">{escape(point["text"])}</span> <strong>{point["code"]}</strong></label>'
-        for i, point in enumerate(part["points"]))
-    return (f'<label class="q-field q-field-wide" for="{base}-text"><span>Your answer</span>'
-            f'<textarea class="q-explain" id="{base}-text" rows="4" aria-describedby="{base}-feedback">'
-            f'</textarea></label>'
-            f'<div class="q-points" hidden><p>The marking points (tick one only where the marker could not '
-            f'decide and your answer makes it):</p>{points}'
-            f'<div class="q-model"><p><strong>A full answer:</strong></p>'
-            f'<div class="q-model-text">{part["model"]}</div></div></div>')
-
-
 def rules_script() -> str:
     """The rule table the marking engine reads (physics_figures/marking_rules.json), once a page."""
     table = json.dumps({"outcomes": marking.outcome_losses(), "sigFigs": marking.sig_figs(),
@@ -206,24 +117,14 @@ def visit_question_form(self, node):
         html.insert(0, f'<script type="application/json" class="q-sections">{links}</script>')
         html.insert(0, rules_script())
     labels = node.get("labels") or [""] * len(data["parts"])
+    if not hasattr(self, "_q_page"):
+        self._q_page = {}  # the translator is one page's: the kinds' once-a-page flags
     for part, legend, label in zip(data["parts"], node["legends"], labels, strict=True):
         base = f"q-{data['id']}-{part['id']}"
-        kind = part.get("kind", "numeric")
-        html.append(f'<fieldset class="q-part" data-part="{part["id"]}" data-kind="{kind}">'
+        kind = KINDS[part["kind"]]
+        html.append(f'<fieldset class="q-part" data-part="{part["id"]}" data-kind="{part["kind"]}">'
                     f"<legend>{escape(join_units(legend))}</legend>")
-        if kind == "mcq":
-            html.append(_options_html(base, part))
-        elif kind == "explain":
-            html.append(_explain_html(base, part, data))
-        elif kind == "text":
-            html.append(_text_html(base, part))
-        else:
-            hint = not getattr(self, "_q_unit_hint_written", False)
-            self._q_unit_hint_written = True  # the translator is one page's: once a page
-            html.append(_numeric_html(base, part, label, hint))
-        html.append(f'<p class="q-feedback" id="{base}-feedback" role="status"></p><p class="q-part-marks"></p>')
-        if kind not in ("mcq", "explain", "text"):
-            html.append(_help_html(label))
+        html.append(kind.form_html(part, data, base=base, label=label, page=self._q_page))
         html.append("</fieldset>")
     new = ('<button type="button" class="q-new">New numbers</button>'
            if template and template["variants"] > 1 else "")
@@ -261,13 +162,33 @@ def depart_worked_answer(self, node):
     self.body.append("</details>\n")
 
 
+def kind_scripts(app) -> list[str]:
+    """Each part kind's browser twin (kinds may share one), in KINDS' order, as a path under
+    _static: the book's own from static/question-kinds/; a topic's own kind's (registered as
+    its bank loads) copied there."""
+    store.topics(app.config)  # a topic's bank registers its own kinds as it loads
+    out: list[str] = []
+    for kind in KINDS.values():
+        script = Path(kind.browser_script)
+        if script.parent != SCRIPTS and app.builder.format == "html":
+            target = Path(app.outdir) / "_static" / "question-kinds" / script.name
+            if not target.is_file() or target.read_bytes() != script.read_bytes():
+                target.parent.mkdir(parents=True, exist_ok=True)
+                shutil.copyfile(script, target)
+        name = f"question-kinds/{script.name}"
+        if name not in out:
+            out.append(name)
+    return out
+
+
 def add_engine_scripts(app) -> None:
     """What marks and records an answer, for every page that asks questions: the number writer,
     the answer reader, each part kind's marker, the engine, and the store of attempts."""
     add_notation_script(app)  # the engine and the page write numbers with it
     app.add_js_file("answer-reading.js", loading_method="defer", priority=440)
-    for kind in KIND_SCRIPTS:  # each part kind's marker, before the engine that finds them
-        app.add_js_file(f"question-kinds/{kind}.js", loading_method="defer", priority=450)
+    app.add_js_file("question-kinds.js", loading_method="defer", priority=445)  # the kinds' registry
+    for script in kind_scripts(app):  # each part kind's marker, before the engine that finds them
+        app.add_js_file(script, loading_method="defer", priority=450)
     app.add_js_file("marking.js", loading_method="defer", priority=460)
     schedule.add_store_script(app)  # questions.js and the mock test record each attempt in it
 

@@ -188,7 +188,14 @@
   function readingOffered(opener, state) {
     if (state.revealed) return true;
     var question = opener.closest("section.q");
-    var typed = question ? question.querySelectorAll('fieldset.q-part[data-kind="graph"] input.q-value') : [];
+    var parts = question ? question.querySelectorAll("fieldset.q-part[data-kind]") : [];
+    var typed = Array.prototype.filter
+      .call(parts, function (part) {
+        return !!root.QuestionKinds.get(part.getAttribute("data-kind")).readsGraph;
+      })
+      .map(function (part) {
+        return part.querySelector("input.q-value");
+      });
     return (
       typed.length > 0 &&
       Array.prototype.every.call(typed, function (box) {

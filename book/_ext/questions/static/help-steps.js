@@ -10,7 +10,8 @@
   "use strict";
 
   var Reading = root.AnswerReading || require("./answer-reading.js");
-  var KINDS = ["numeric", "graph"];
+  // a part's kind says whether it offers steps (static/question-kinds.js: helpSteps)
+  var Kinds = root.QuestionKinds || require("./question-kinds.js");
 
   // A mark line's words: a power in a unit ("s<sup>−2</sup>") kept apart from the numbers.
   function plain(html) {
@@ -123,7 +124,7 @@
   /* A part's steps, in order: [{text}] for its revisit hint, [{html}] for a mark line. A part
    * that is not numeric (or a graph's reading) has none. */
   function steps(data, part) {
-    if (KINDS.indexOf(part.kind || "numeric") < 0) return [];
+    if (!Kinds.of(part).helpSteps) return [];
     var lines = data.marks.filter(function (m) {
       return m.part === part.id;
     });
@@ -141,7 +142,7 @@
       return p.id;
     });
     var earlier = data.parts.slice(0, before.indexOf(part.id)).filter(function (p) {
-      return KINDS.indexOf(p.kind || "numeric") >= 0 && typeof p.value === "number" && p.value !== 0;
+      return !!Kinds.of(p).helpSteps && typeof p.value === "number" && p.value !== 0;
     });
     var out = part.revisit ? [{ text: part.revisit }] : [];
     lines.forEach(function (m, i) {

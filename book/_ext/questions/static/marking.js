@@ -31,30 +31,14 @@
     return rulesCache;
   }
 
-  /* The part kinds, each its own script (static/question-kinds/): under Node the engine loads
-   * them; in a page each registers itself in QuestionKinds before this script runs. A new kind
-   * is one script here and one class in physics_figures/questions.py. */
-  var KINDS =
-    root.QuestionKinds ||
-    (function () {
-      var found = {};
-      ["numeric", "choice", "explain", "text"].forEach(function (file) {
-        var kind = require("./question-kinds/" + file + ".js");
-        kind.kinds.forEach(function (name) {
-          found[name] = kind;
-        });
-      });
-      return found;
-    })();
-
-  // An outcome as the markers give it (code, message and what else they say).
-  var outcome = KINDS.numeric.outcome;
+  /* The part kinds, each its own script (static/question-kinds/), registered in QuestionKinds
+   * (static/question-kinds.js: in a page before this script runs; under Node it loads them). */
+  var Kinds = root.QuestionKinds || require("./question-kinds.js");
 
   /* Mark one answer to one part: its kind's marker gives the outcome (code, message). The
    * marker gets the rule table's figures too: its feedback on too few figures is the table's. */
   function mark(part, answer) {
-    var kind = KINDS[part.kind || "numeric"];
-    if (!kind) throw new Error("no marker for the part kind " + JSON.stringify(part.kind));
+    var kind = Kinds.of(part);
     var figures = rules().sigFigs; // the rule table's, where a part does not say otherwise
     if (part.minSf === undefined || part.checkSf === undefined) {
       part = Object.assign({ minSf: figures.min, checkSf: figures.check }, part);
@@ -87,14 +71,11 @@
         return p.id === line.part;
       })[0];
       var result = results[line.part] || { code: "wrong" };
-      var ok =
-        part.kind === "explain"
-          ? ticked(data, result, index)
-          : part.kind === "text"
-            ? !!(result.earned || [])[byPart[line.part][1]] // its points in the order of its lines
-            : !line.roles.some(function (role) {
-                return lostRoles(result).indexOf(role) >= 0;
-              });
+      var ok = Kinds.of(part).selfMarked
+        ? ticked(data, result, index)
+        : !line.roles.some(function (role) {
+            return lostRoles(result).indexOf(role) >= 0;
+          });
       byPart[line.part][1] += 1;
       if (ok) {
         byPart[line.part][0] += 1;
@@ -258,7 +239,7 @@
     // later part is then worked from the student's own reading, and is simply right.
     var fromReadings = uses.some(function (id) {
       return data.parts.some(function (p) {
-        return p.id === id && p.kind === "graph";
+        return p.id === id && !!Kinds.of(p).readsGraph;
       });
     });
     var allRight = uses.every(function (id) {
@@ -283,6 +264,7 @@
     own.alternatives = [];
     own.band = null; // marked against the student's own earlier answers, not the graph's
     var result = mark(own, answer);
+    var outcome = Kinds.of(part).outcome; // the part's kind builds its outcomes (a kind with ecf)
     if (result.code === "correct" && allRight) {
       return outcome("correct", "Correct: it follows from your readings of the graph.", {
         si: result.si,

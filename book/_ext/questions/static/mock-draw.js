@@ -7,18 +7,18 @@
   "use strict";
 
   var Draw = typeof module !== "undefined" && module.exports ? require("./question-draw.js") : root.QuestionDraw;
+  // each part kind names the paper that asks it (static/question-kinds.js: mockPaper)
+  var Kinds = typeof module !== "undefined" && module.exports ? require("./question-kinds.js") : root.QuestionKinds;
 
   /* 9702's pace: Paper 1, 1.875 minutes a multiple-choice question (40 in 75 minutes); Paper 2,
    * 1.25 minutes a mark (60 in 75 minutes). Paper 1's sizes count questions, Paper 2's marks. */
   var PAPERS = {
-    1: { name: "Paper 1", minutesEach: 1.875, sizes: [10, 20], unit: ["question", "questions"], kinds: ["mcq"] },
+    1: { name: "Paper 1", minutesEach: 1.875, sizes: [10, 20], unit: ["question", "questions"] },
     2: {
       name: "Paper 2",
       minutesEach: 1.25,
       sizes: [15, 20, 30],
       unit: ["mark", "marks"],
-      // an explanation is self-marked by its ticks: no score a test can count on
-      kinds: ["numeric", "graph"],
     },
   };
 
@@ -31,10 +31,10 @@
   /* A template a paper asks: Paper 1 its multiple-choice ones, Paper 2 those whose every part
    * is a value (or read from a graph). */
   function asks(paper, template) {
-    var kinds = paperOf(paper).kinds;
-    if (paper === "1") return template.kinds.length === 1 && template.kinds[0] === "mcq";
+    paperOf(paper);
+    // an explanation is self-marked by its ticks: no paper asks it (no score a test can count on)
     return template.kinds.every(function (kind) {
-      return kinds.indexOf(kind) >= 0;
+      return Kinds.get(kind).mockPaper === paper;
     });
   }
 

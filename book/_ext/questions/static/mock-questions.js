@@ -6,7 +6,8 @@
   "use strict";
 
   var engine = root.QuestionMarking,
-    Notation = root.Notation;
+    Notation = root.Notation,
+    Kinds = root.QuestionKinds; // each part's kind reads and fills its own fieldset
 
   function contentRoot() {
     return document.documentElement.getAttribute("data-content_root") || "";
@@ -106,47 +107,25 @@
   function answersOf(form, variant) {
     var out = {};
     variant.parts.forEach(function (part) {
-      var partBoxEl = partBox(form, part);
-      if (part.kind === "mcq") {
-        var chosen = partBoxEl.querySelector(".q-choice:checked");
-        out[part.id] = { choice: chosen ? chosen.value : "" };
-      } else {
-        var direction = partBoxEl.querySelector(".q-direction");
-        out[part.id] = {
-          value: partBoxEl.querySelector(".q-value").value,
-          unit: partBoxEl.querySelector(".q-unit").value,
-          direction: direction ? direction.value : "",
-        };
-      }
+      out[part.id] = Kinds.of(part).read(partBox(form, part), part);
     });
     return out;
   }
 
   function fill(form, variant, answers) {
     variant.parts.forEach(function (part) {
-      var partBoxEl = partBox(form, part),
-        a = answers[part.id] || {};
-      if (part.kind === "mcq") {
-        Array.prototype.forEach.call(partBoxEl.querySelectorAll(".q-choice"), function (choice) {
-          choice.checked = choice.value === a.choice;
-        });
-      } else {
-        partBoxEl.querySelector(".q-value").value = a.value || "";
-        partBoxEl.querySelector(".q-unit").value = a.unit || "";
-        var direction = partBoxEl.querySelector(".q-direction");
-        if (direction) direction.value = a.direction || "";
-      }
+      Kinds.of(part).fill(partBox(form, part), part, answers[part.id] || {});
     });
   }
 
-  // A part's answer has something in it (a choice, a value or a unit).
-  function partAnswered(a) {
-    return !!(a && (a.choice || (a.value || "").trim() || (a.unit || "").trim()));
+  // A part's answer has something in it (a choice, a value or a unit: as its kind says).
+  function partAnswered(part, a) {
+    return Kinds.of(part).answered(a || {});
   }
 
-  function answered(answers) {
-    return Object.keys(answers).some(function (id) {
-      return partAnswered(answers[id]);
+  function answered(variant, answers) {
+    return variant.parts.some(function (part) {
+      return partAnswered(part, answers[part.id]);
     });
   }
 
@@ -156,11 +135,12 @@
    * letter, as the worked answer would. */
   function feedbackText(m, part, right) {
     var r = m.marked.results[part.id];
-    var blank = !partAnswered(m.answers[part.id]);
+    var blank = !partAnswered(part, m.answers[part.id]);
     var lost = blank ? "" : engine.lostText(m.variant, m.marked.marks, part.id);
     var text = (right ? "✓ " : "✗ ") + (blank ? "Not answered." : Notation.joinUnits(r.message));
     if (lost) text += " " + lost;
-    if (part.kind === "mcq" && !right) text += " The answer is " + part.answer + ".";
+    var missed = Kinds.of(part).missedNote;
+    if (missed && !right) text += missed(part); // e.g. the right letter, as the worked answer would
     return text;
   }
 

@@ -257,7 +257,7 @@
       if (!store) return;
       var now = Date.now();
       marked.forEach(function (m) {
-        if (!Questions.answered(m.answers)) return; // as on a question's page, nothing written is no attempt
+        if (!Questions.answered(m.variant, m.answers)) return; // as on a question's page, nothing written is no attempt
         store.recordAttempt({
           question: m.question.question,
           type: m.question.type,

@@ -1,8 +1,7 @@
 /* A question's form with another variant's words: its prompts (the time a graph is read at,
  * say), options and marking points change with its numbers. The form is the one form.py
- * writes; questions.js (New numbers) and the mock test (mock-test.js) both relabel it. A
- * signed part's note names the positive direction with the variant's own numbers ("the 0.80 kg
- * ball"): its .q-positive span (form.py) takes the variant's words. */
+ * writes; questions.js (New numbers) and the mock test (mock-test.js) both relabel it: the
+ * legend here, the rest by each part's kind (static/question-kinds.js, relabel). */
 (function (root) {
   "use strict";
 
@@ -12,28 +11,8 @@
       var legend = box.querySelector("legend");
       var prompt = part.prompt.charAt(0).toUpperCase() + part.prompt.slice(1);
       legend.textContent = root.Notation.joinUnits((data.parts.length > 1 ? "(" + part.id + ") " : "") + prompt);
-      var positive = box.querySelector(".q-note .q-positive");
-      if (positive && part.direction === "signed") positive.textContent = root.Notation.joinUnits(part.positive);
-      if (part.kind === "mcq") {
-        var choices = box.querySelectorAll(".q-choice");
-        part.options.forEach(function (option, i) {
-          choices[i].parentNode.querySelector(".q-option-text").innerHTML = option.html;
-        });
-      } else if (part.kind === "explain") {
-        var lines = data.marks.filter(function (m) {
-          return m.part === part.id;
-        });
-        Array.prototype.forEach.call(box.querySelectorAll(".q-tick"), function (tick, i) {
-          tick.value = String(data.marks.indexOf(lines[i]));
-          tick.parentNode.querySelector(".q-point-text").innerHTML = lines[i].html;
-        });
-        box.querySelector(".q-points .q-model-text").innerHTML = part.model;
-      } else if (part.kind === "text") {
-        Array.prototype.forEach.call(box.querySelectorAll(".q-point-text"), function (text, i) {
-          text.textContent = part.points[i].text;
-        });
-        box.querySelector(".q-points .q-model-text").innerHTML = part.model;
-      }
+      // the rest (options, marking points, a signed part's note) is the part's kind's own
+      root.QuestionKinds.of(part).relabel(box, part, data);
     });
   }
 

@@ -8,6 +8,7 @@
     markQuestion = engine.markQuestion,
     marksText = engine.marksText;
   var Notation = root.Notation;
+  var Kinds = root.QuestionKinds; // each part's kind reads, fills and relabels its own fieldset
 
   var STORE = "dynamics-questions:";
 
@@ -127,39 +128,15 @@
       var box = form.querySelector('[data-part="' + part.id + '"]');
       return {
         box: box,
-        value: box.querySelector(".q-value"),
-        unit: box.querySelector(".q-unit"),
-        direction: box.querySelector(".q-direction"),
         feedback: box.querySelector(".q-feedback"),
         marks: box.querySelector(".q-part-marks"),
-        choices: box.querySelectorAll(".q-choice"),
-        text: box.querySelector(".q-explain"),
-        ticks: box.querySelectorAll(".q-tick"),
         points: box.querySelector(".q-points"),
       };
     }
 
+    // each part's kind reads its own fieldset (static/question-kinds.js)
     function answerOf(part) {
-      var f = fields(part);
-      if (part.kind === "mcq") {
-        var chosen = Array.prototype.filter.call(f.choices, function (c) {
-          return c.checked;
-        })[0];
-        return { choice: chosen ? chosen.value : "" };
-      }
-      if (part.kind === "explain" || part.kind === "text") {
-        return {
-          text: f.text.value,
-          ticked: Array.prototype.filter
-            .call(f.ticks, function (t) {
-              return t.checked;
-            })
-            .map(function (t) {
-              return Number(t.value);
-            }),
-        };
-      }
-      return { value: f.value.value, unit: f.unit.value, direction: f.direction ? f.direction.value : "" };
+      return Kinds.of(part).read(fields(part).box, part);
     }
 
     function answers() {
@@ -171,30 +148,16 @@
     }
 
     function fill(part, a) {
-      var f = fields(part);
-      if (part.kind === "mcq") {
-        Array.prototype.forEach.call(f.choices, function (c) {
-          c.checked = c.value === a.choice;
-        });
-      } else if (part.kind === "explain" || part.kind === "text") {
-        f.text.value = a.text || "";
-        Array.prototype.forEach.call(f.ticks, function (t) {
-          t.checked = (a.ticked || []).indexOf(Number(t.value)) >= 0;
-        });
-      } else {
-        f.value.value = a.value || "";
-        f.unit.value = a.unit || "";
-        if (f.direction) f.direction.value = a.direction || "";
-      }
+      Kinds.of(part).fill(fields(part).box, part, a);
     }
 
-    /* On a Check, a kind may show more in its part: the text kind what it found of each point,
-     * the explain kind the points it found, ticked to confirm (true when it ticked any). */
+    /* On a Check, a kind may tick in its part what its marker found, for the student to confirm
+     * (an explain part with rules: preTick, true when it ticked any). */
     function preTick(marked) {
       var ticked = false;
       data.parts.forEach(function (part) {
-        var kind = (root.QuestionKinds || {})[part.kind];
-        if (kind && kind.preTick) ticked = kind.preTick(fields(part).box, marked.results[part.id]) || ticked;
+        var kind = Kinds.of(part);
+        if (kind.preTick) ticked = kind.preTick(fields(part).box, marked.results[part.id]) || ticked;
       });
       return ticked;
     }
@@ -210,10 +173,9 @@
           got = marked.marks.byPart[part.id];
         // ✓ only for a part that earned every one of its marks; a part that lost some says which
         var right = got[0] === got[1] && result.code !== "wrong";
-        var selfMarked = result.code === "self-marked" && part.kind === "explain";
+        var selfMarked = result.code === "self-marked";
         if (f.points && selfMarked) f.points.hidden = false;
-        var kind = (root.QuestionKinds || {})[part.kind];
-        if (kind && kind.show) kind.show(f.box, result);
+        if (Kinds.of(part).show) Kinds.of(part).show(f.box, result); // what the marker found (text)
         var lost = engine.lostText(data, marked.marks, part.id);
         // a value in the message stays on one line with its unit, as everywhere in the book
         f.feedback.textContent =
@@ -252,12 +214,7 @@
       save(storeId(), { answers: answers(), checked: true });
       // A Check with nothing written is no attempt: it is not kept.
       var tried = data.parts.some(function (part) {
-        var a = answerOf(part);
-        return part.kind === "mcq"
-          ? !!a.choice
-          : part.kind === "explain" || part.kind === "text"
-            ? !!a.text.trim()
-            : !!(a.value.trim() || a.unit.trim());
+        return Kinds.of(part).answered(answerOf(part));
       });
       if (record && key && tried) {
         var attempt = {
@@ -275,12 +232,8 @@
             })
             .filter(Boolean),
         };
-        // marks the student gave themselves: ticked points (explain), a point the text marker
-        // could not decide (text); and whether the marker's own ticks were there to confirm
-        var selfMarked = data.parts.some(function (p) {
-          return marked.results[p.id].code === "self-marked";
-        });
-        if (selfMarked) attempt.selfMarked = true;
+        // marks the student gave themselves (ticks), and whether the marker's ticks were there to confirm
+        if (data.parts.some((p) => marked.results[p.id].code === "self-marked")) attempt.selfMarked = true;
         if (confirmed || (record === "ticks" && load("confirm:" + storeId()))) attempt.selfConfirmed = true;
         if (record === true) save("confirm:" + storeId(), confirmed);
         // A tick re-scores its Check's attempt, which keeps the help, time and first try it had.

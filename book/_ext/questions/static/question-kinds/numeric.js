@@ -403,10 +403,52 @@
     return out("wrong", "Not right. " + (part.revisit || "Check your method and your arithmetic."));
   }
 
-  var kind = { kinds: ["numeric", "graph"], mark: mark, outcome: outcome };
-  if (typeof module === "object" && module.exports) module.exports = kind;
+  /* The part's fieldset: boxes .q-value and .q-unit, and a .q-direction select for a direction
+   * to choose (form: Part.form_html). */
+  function read(box) {
+    var direction = box.querySelector(".q-direction");
+    return {
+      value: box.querySelector(".q-value").value,
+      unit: box.querySelector(".q-unit").value,
+      direction: direction ? direction.value : "",
+    };
+  }
+
+  function fill(box, part, answer) {
+    box.querySelector(".q-value").value = answer.value || "";
+    box.querySelector(".q-unit").value = answer.unit || "";
+    var direction = box.querySelector(".q-direction");
+    if (direction) direction.value = answer.direction || "";
+  }
+
+  /* A signed part's note names the positive direction with the variant's own numbers ("the
+   * 0.80 kg ball"): its .q-positive span takes the variant's words. */
+  function relabel(box, part) {
+    var positive = box.querySelector(".q-note .q-positive");
+    if (positive && part.direction === "signed") positive.textContent = Notation.joinUnits(part.positive);
+  }
+
+  var numeric = {
+    kinds: ["numeric"],
+    mark: mark,
+    outcome: outcome,
+    read: read,
+    fill: fill,
+    answered: function (answer) {
+      return !!((answer.value || "").trim() || (answer.unit || "").trim());
+    },
+    relabel: relabel,
+    helpSteps: true,
+    mockPaper: "2",
+  };
+  // a value read off the question's graph: marked as a value, within the part's tolerance
+  var graph = Object.assign({}, numeric, { kinds: ["graph"], readsGraph: true });
+  var kinds = [numeric, graph];
+  if (typeof module === "object" && module.exports) module.exports = kinds;
   else
-    kind.kinds.forEach(function (name) {
-      (root.QuestionKinds = root.QuestionKinds || {})[name] = kind;
+    kinds.forEach(function (kind) {
+      kind.kinds.forEach(function (name) {
+        root.QuestionKinds.register(name, kind);
+      });
     });
 })(this);

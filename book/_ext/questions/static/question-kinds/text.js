@@ -1,64 +1,34 @@
-/* The text part kind: a define or state part marked from the typed words, by the rules the
- * part carries (its marking points, each with the wordings an examiner accepts and those the
- * schemes reject). Its Python twin is TextPart (physics_figures/parts/text.py), which documents
- * the rule syntax. Pure: it runs under Node for the tests.
- *
- * How an answer is read (CLARIFICATIONS, Papers):
- * - case, punctuation and the order of words within a point do not matter; a point's words must
- *   be said together, in one clause of the answer;
+/* The text part kind: a define or state part marked from the typed words, by the rules the part
+ * carries (its points, each with the wordings an examiner accepts and those the schemes reject).
+ * Its Python twin is TextPart (physics_figures/parts/text.py: the rule syntax). Pure: it runs
+ * under Node for the tests. How an answer is read (CLARIFICATIONS, Papers):
+ * - case, punctuation and word order within a point do not matter; a point's words must be said
+ *   together, in one clause of the answer;
  * - a word of 5 or more letters one edit away (a letter added, dropped, changed, or two swapped)
- *   counts as the word;
- * - "not" or "no" just before a key word negates it;
+ *   counts; "not" or "no" just before a key word negates it;
  * - a point contradicted elsewhere in the answer is lost (9702's "a contradiction loses the mark");
  * - an A1 counts only with the M1 it depends on;
- * - words of a point all present but in different clauses: the marker cannot decide, says so,
- *   and the student ticks that point (kept as self-marked). */
+ * - a point's words all there but in different clauses: the marker cannot decide, says so, and
+ *   the student ticks that point (kept as self-marked). */
 (function (root) {
   "use strict";
 
-  // One spelling for the words and symbols an answer may use for one idea.
-  var CANON = {
-    "*": "×",
-    x: "×",
-    times: "×",
-    multiplied: "×",
-    multiply: "×",
-    product: "×",
-    "÷": "/",
-    per: "/",
-    over: "/",
-    divided: "/",
-    equals: "=",
-    equal: "=",
-    "∆": "δ",
-    delta: "δ",
-    change: "δ",
-    changes: "δ",
-    changing: "δ",
-    p: "momentum",
-    momenta: "momentum",
-    f: "force",
-    forces: "force",
-    m: "mass",
-    v: "velocity",
-    velocities: "velocity",
-    t: "time",
-    bodies: "body",
-    object: "body",
-    objects: "body",
-    particle: "body",
-    particles: "body",
-    conserved: "constant",
-    unchanged: "constant",
-    preserved: "constant",
-    net: "resultant",
-    unbalanced: "resultant",
-    without: "no",
-    kilogram: "kg",
-    kilograms: "kg",
-    one: "1",
-    w: "weight",
-  };
+  // One spelling for the words and symbols an answer may use for one idea: "words > spelling".
+  var CANON = {};
+  (
+    "* x times multiplied multiply product > ×; ÷ per over divided > /; equals equal > =; " +
+    "∆ delta change changes changing > δ; p momenta > momentum; f forces > force; m > mass; " +
+    "v velocities > velocity; t > time; bodies object objects particle particles > body; " +
+    "conserved unchanged preserved > constant; net unbalanced > resultant; without > no; " +
+    "kilogram kilograms > kg; one > 1; w > weight"
+  )
+    .split("; ")
+    .forEach(function (rule) {
+      var sides = rule.split(" > ");
+      sides[0].split(" ").forEach(function (word) {
+        CANON[word] = sides[1];
+      });
+    });
   // Symbols that stand for several words.
   var EXPAND = {
     mv: ["mass", "×", "velocity"],
@@ -379,6 +349,14 @@
     return { state: "missing" };
   }
 
+  /* The student's ticks, the indices of the part's points: the page's ticks hold the lines'
+   * indices in the question's marks (answer.lines lists the part's lines in order). */
+  function tickedPoints(answer) {
+    var ticked = (answer && answer.ticked) || [],
+      lines = answer && answer.lines;
+    return lines ? ticked.map((line) => lines.indexOf(line)) : ticked;
+  }
+
   /* Mark a text part's answer: each point judged, then the marks: a point counts when made, or
    * when the marker could not decide and the student ticked it; an A1 (or any point with
    * `needs`) counts only with the point it needs. ticked: indices of the part's points. */
@@ -386,7 +364,7 @@
     var text = String((answer && answer.text) || "");
     if (!text.trim()) return { code: "no-answer", message: "Write your answer first." };
     var answerClauses = clauses(tokenise(text)),
-      ticked = (answer && answer.ticked) || [];
+      ticked = tickedPoints(answer);
     var points = (part.points || []).map(function (point) {
       return judgePoint(point, answerClauses);
     });
@@ -400,6 +378,8 @@
     var selfMarked = points.some(function (p, i) {
       return p.state === "undecided" && ticked.indexOf(i) >= 0;
     });
+    // the part's lines in the question's marks (the page's ticks say them; alone, its points')
+    var lines = (answer && answer.lines) || part.points.map((p, i) => i);
     return {
       code: selfMarked ? "self-marked" : "text-marked",
       message: feedback(part, points, earned),
@@ -413,6 +393,10 @@
           return i >= 0;
         }),
       selfMarked: selfMarked,
+      // the lines earned, as the engine counts a kind's ticked lines (marking.js, award)
+      ticked: lines.filter(function (line, i) {
+        return earned[i];
+      }),
     };
   }
 
@@ -450,9 +434,57 @@
     });
   }
 
+  /* The part's fieldset: its one textarea, and after Check its points' ticks, each the index of
+   * its line in the question's marks (form: TextPart.form_html). */
+  function read(box) {
+    var ticks = box.querySelectorAll(".q-tick");
+    function lines(only) {
+      return Array.prototype.filter.call(ticks, only).map(function (t) {
+        return Number(t.value);
+      });
+    }
+    return {
+      text: box.querySelector(".q-explain").value,
+      ticked: lines(function (t) {
+        return t.checked;
+      }),
+      lines: lines(function () {
+        return true;
+      }),
+    };
+  }
+
+  function fill(box, part, answer) {
+    box.querySelector(".q-explain").value = answer.text || "";
+    Array.prototype.forEach.call(box.querySelectorAll(".q-tick"), function (t) {
+      t.checked = (answer.ticked || []).indexOf(Number(t.value)) >= 0;
+    });
+  }
+
+  /* Another variant's points: each tick's line index and words, and the model answer. */
+  function relabel(box, part, data) {
+    var lines = [];
+    data.marks.forEach(function (m, i) {
+      if (m.part === part.id) lines.push(i);
+    });
+    Array.prototype.forEach.call(box.querySelectorAll(".q-tick"), function (tick, i) {
+      tick.value = String(lines[i]);
+      tick.parentNode.querySelector(".q-point-text").textContent = part.points[i].text;
+    });
+    box.querySelector(".q-points .q-model-text").innerHTML = part.model;
+  }
+
   var kind = {
     kinds: ["text"],
     mark: markText,
+    read: read,
+    fill: fill,
+    answered: function (answer) {
+      return !!String(answer.text || "").trim();
+    },
+    relabel: relabel,
+    // its lines count when ticked: by the marker, or by the student where it could not decide
+    selfMarked: true,
     show: show,
     tokenise: tokenise,
     editDistance: editDistance,
@@ -462,6 +494,6 @@
   if (typeof module === "object" && module.exports) module.exports = kind;
   else
     kind.kinds.forEach(function (name) {
-      (root.QuestionKinds = root.QuestionKinds || {})[name] = kind;
+      root.QuestionKinds.register(name, kind);
     });
 })(this);

@@ -52,6 +52,7 @@ from .parts import (  # the part kinds, one module each (physics_figures/parts/)
     Reading,
     Sketch,
     Step,
+    TextPart,
     choices_in_order,
     format_reading,
     reading_places,
@@ -128,7 +129,7 @@ class Question:
 
     key: str
     givens: tuple[Given, ...]
-    parts: tuple[Part | GraphPart | ChoicePart | ExplainPart, ...]
+    parts: tuple[Part | GraphPart | ChoicePart | ExplainPart | TextPart, ...]
     mark_scheme: tuple[Mark, ...]
     #: The question as the student reads it (physics_figures.textformat), for a template;
     #: empty when the page states it (worked examples' try-first parts).

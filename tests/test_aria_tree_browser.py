@@ -3,7 +3,7 @@
 Chromium's accessibility tree (Playwright's aria snapshot) is checked against the shapes in
 tests/aria_snapshots/, filled at test time from the data the page itself was built from:
 
-* one question of each kind (numeric, numeric with a direction, multiple choice, explain, graph):
+* one question of each kind (numeric, numeric with a direction, multiple choice, text, graph):
   the parts' groups by their legends, each box by its name, after a wrong Check (a named mistake,
   or a wrong option, or no point ticked) the status that announces that mistake's own feedback and
   the marks it keeps, then after a right Check "✓" and full marks; the graph's button named by its
@@ -38,7 +38,7 @@ KINDS = {
     "numeric": "practice-hose",
     "numeric with direction": "practice-wall-bounce",
     "mcq": "bounce-force-choice",
-    "explain": "state-second-law",
+    "text": "state-second-law",
     "graph": "graph-cyclist-momentum-time",
 }
 
@@ -123,9 +123,9 @@ def wrong_answer(asked: Asked, part: dict) -> tuple[int, str]:
         option = next(o for o in part["options"] if o["letter"] != part["answer"])
         asked.section.locator(f"#q-{asked.key}-{part['id']}-{option['letter']}").check()
         return 0, starts_with("✗ " + option["feedback"])
-    if kind == "explain":
+    if kind == "text":
         asked.field(part, "text").fill("It is about forces.")
-        return 0, ""
+        return 0, "/^✗ Missing/"
     mistake = next((m for m in part.get("mistakes", []) if m["unit"] is None and m["direction"] is None), None)
     value = mistake["value"] if mistake else part["value"] * 3
     asked.field(part, "value").fill(sig3(value))
@@ -142,9 +142,8 @@ def right_answer(asked: Asked, part: dict) -> None:
     kind = part.get("kind", "numeric")
     if kind == "mcq":
         asked.section.locator(f"#q-{asked.key}-{part['id']}-{part['answer']}").check()
-    elif kind == "explain":
-        for tick in asked.section.locator(f'[data-part="{part["id"]}"] input.q-tick').all():
-            tick.check()
+    elif kind == "text":  # the scheme's words (9702/21/M/J/16 Q3(b)(i)), marked from what is typed
+        asked.field(part, "text").fill("The resultant force is proportional to the rate of change of momentum.")
     else:
         asked.field(part, "value").fill(sig3(part["value"]))
 
@@ -160,11 +159,11 @@ def expected(asked: Asked, feedback: dict[str, str], earned: dict[str, int]) -> 
                 f'[data-part="{part["id"]}"] input.q-choice:checked').get_attribute("value"))
             block = shape("part-mcq", legend=names["legend"], chosen=name(f"{option['letter']} {plain(option['html'])}"),
                           feedback=feedback[part["id"]])
-        elif kind == "explain":
-            line = asked.lines(part)[0]
-            ticked = asked.section.locator(f'[data-part="{part["id"]}"] input.q-tick').first.is_checked()
-            block = shape("part-explain", legend=names["legend"], text=quoted("It is about forces."),
-                          point=name(f"{plain(line['html'])} {line['code']}"), ticked=" [checked]" if ticked else "")
+        elif kind == "text":  # each point says what the marker found of it (questions.css)
+            point = part["points"][0]
+            found = "✓ made: " if feedback[part["id"]].startswith("/^✓") else "✗ not made: "
+            block = shape("part-text", legend=names["legend"], text=quoted(asked.field(part, "text").input_value()),
+                          point=name(f"{found}{point['text']} {point['code']}"), feedback=feedback[part["id"]])
         else:
             values = {"value": quoted(asked.field(part, "value").input_value()), "unit": quoted(part["unit"]),
                       "feedback": feedback[part["id"]], **names}

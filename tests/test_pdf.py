@@ -252,7 +252,7 @@ def test_question_sheet_asks_each_question_with_space_to_answer(question):
             options = "".join(f"{letter}." + squash(textformat.to_plain(option.text))
                               for letter, option in zip("ABCD", part.options, strict=True))
             assert squash(part.prompt) + options + "Answer(A,B,CorD):" in sheet, question.key
-        elif part.kind == "explain":  # the prompt, then lines to write on
+        elif part.kind in ("explain", "text"):  # the prompt, then lines to write on
             assert squash(part.prompt) + "." * 70 in sheet, question.key
         else:
             assert squash(part.prompt) + "=" in sheet, f"{question.key}: no answer line for {part.prompt}"

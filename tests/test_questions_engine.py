@@ -75,7 +75,7 @@ def _question_cases(question: q.Question, name: str):
                 yield (where, letter, data, {"choice": letter},
                        ("mistake", option.mistake) if option.mistake else ("correct", None))
             continue
-        if part.kind == "explain":  # self-marked against its marking points: nothing to compute
+        if part.kind in ("explain", "text"):  # marked from words (tests/test_text_marking.py)
             continue
         if part.kind == "sketch":  # the model line earns every feature (each wrong line: test_sketches.py)
             yield where, "model line", data, {"line": [list(p) for p in part.model]}, ("correct", None)

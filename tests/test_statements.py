@@ -42,8 +42,9 @@ ROOT = Path(__file__).resolve().parents[1]
 #:   marks; 9702/21/M/J/15 Q3(c)); no scheme asks for "the same type of force";
 #: - state-second-law: "(resultant) force proportional/equal to rate of change of momentum"
 #:   (9702/21/M/J/16 Q3(b)(i), 9702/21/M/J/23 Q3(a));
-#: - state-momentum-conservation: "total momentum of a system remains constant" B1, "provided
-#:   there are no resultant external forces / isolated system" B1 (9702/23/M/J/13 Q3(a)(i));
+#: - state-momentum-conservation: "total momentum of a system remains constant" M1, "provided
+#:   there are no resultant external forces / isolated system" A1 (9702/22/F/M/26, 9702/23/M/J/25;
+#:   9702/23/M/J/13 Q3(a)(i) gave them B1 B1);
 #: - state-elastic-collision: "total kinetic energy is conserved" (9702/23/M/J/13 Q3(a)(ii)),
 #:   "relative speed of approach ... relative speed of separation" (9702/21/M/J/15 Q3(b));
 #: - state-terminal-velocity: constant velocity with zero resultant force, and the forces named
@@ -91,12 +92,14 @@ def test_the_bank_asks_at_least_eight_define_and_state_questions_each_of_its_typ
     assert {t.key: t.type for t in STATEMENTS} == TYPES
     assert set(KEY_WORDS) == set(TYPES)
     for template in STATEMENTS:
-        assert template.kinds == ("explain",)
+        assert template.kinds == ("text",)
         assert bank.TEMPLATES[template.key] is template
         for question in template.variants:
-            assert [part.kind for part in question.parts] == ["explain"]
-            # every line is a mark the student ticks: a B1 each, as schemes mark a definition
-            assert {mark.code for mark in question.mark_scheme} == {"B1"}
+            assert [part.kind for part in question.parts] == ["text"]
+            # a B1 each, as schemes mark a definition; the conservation principle M1 A1, as the
+            # newest schemes mark it (9702/22/F/M/26, 9702/23/M/J/25; CLARIFICATIONS, Papers)
+            codes = [mark.code for mark in question.mark_scheme]
+            assert codes == (["M1", "A1"] if template.key == "state-momentum-conservation" else ["B1"] * len(codes))
             assert question.marks == len(KEY_WORDS[template.key])
 
 
@@ -146,7 +149,7 @@ def test_the_practice_pages_place_each_statement_at_the_end_of_its_types_page():
 
 
 def _template(**change) -> Template:
-    fields = {"key": "define-x", "type": "definitions", "kinds": ("explain",), "title": "Define x",
+    fields = {"key": "define-x", "type": "definitions", "kinds": ("text",), "title": "Define x",
               "build": statements.define_force, "one_wording": statements._ONE_DEFINITION}
     return Template(**{**fields, **change})
 
@@ -243,7 +246,9 @@ def test_moodle_exports_a_statement_as_an_essay_with_its_marking_points_for_the_
             assert float(essay.findtext("defaultgrade")) == question.marks
             grader = essay.findtext("graderinfo/text")
             for mark in question.mark_scheme:
-                assert f"{textformat.to_html(mark.text, paragraphs=False)} <strong>B1</strong>" in grader
+                assert f"{textformat.to_html(mark.text, paragraphs=False)} <strong>{mark.code}</strong>" in grader
+            # the wordings accepted and rejected, for the grader (issue 38)
+            assert "<li>Accept: " in grader and "<li>Reject: " in grader
 
 
 def test_a_point_the_scheme_marks_either_way_takes_either_and_no_point_asks_more_than_its_scheme():

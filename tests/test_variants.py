@@ -60,7 +60,7 @@ def test_every_variant_is_sensible_and_tells_its_mistakes_apart(template, index)
         if part.kind == "mcq":  # four different options, one the key, each wrong one a named mistake
             assert sum(not option.mistake for option in part.options) == 1
             continue
-        if part.kind in ("explain", "sketch"):  # marked on its own marking points (a sketch: its features)
+        if part.kind in ("explain", "sketch", "text"):  # marked on its own marking points (a sketch: its features)
             assert any(question.parts_of(mark) == (question.part_ids[question.parts.index(part)],)
                        for mark in question.mark_scheme if mark.code)
             continue

@@ -29,6 +29,7 @@ from ..models import (
 )
 from ..notation import format_number as n
 from ..notation import round_number
+from ..parts.text import TextPoint
 from ..questions import (
     G_TEN,  # the g students use instead of the data's 9.81 m s^-2
     OPTION_LETTERS,
@@ -175,6 +176,29 @@ _FALLERS = (
 )
 
 
+#: The rules that find terminal-velocity-explained's points in a student's words, for the page to
+#: tick them for the student to confirm (issue 38; the explain part stays self-marked). The points
+#: are the notes' (Drag and terminal velocity; Common mistakes: "say why: the drag increases as
+#: the speed increases, so the resultant force decreases"); no published 9702 scheme for this
+#: wording was found in the search corpus.
+_FALLING_SOURCE = "the notes, Drag and terminal velocity, and Common mistakes"
+_DRAG_WORDS = "drag|resistance|friction|viscous|resistive"
+_LESS = "decreases|decrease|decreasing|smaller|less|reduces|reduced|falls"
+
+
+def _falling_points(upthrust: bool) -> tuple[TextPoint, ...]:
+    balance = f"{_DRAG_WORDS} upthrust =|balances|balance weight" if upthrust else f"{_DRAG_WORDS} =|balances|balance weight"
+    return (
+        TextPoint("the drag increases as the speed increases", "B1",
+                  accept=((f"{_DRAG_WORDS} increases|increase|increasing|grows|greater|larger|bigger|rises "
+                          "speed|velocity|faster"),), source=_FALLING_SOURCE),
+        TextPoint("so the resultant force decreases, and so the acceleration decreases", "M1",
+                  accept=(f"resultant {_LESS}", f"acceleration {_LESS}"), source=_FALLING_SOURCE),
+        TextPoint("when the forces balance, the resultant force is zero: constant velocity", "A1",
+                  accept=(balance, "resultant|acceleration zero|no|0"), source=_FALLING_SOURCE),
+    )
+
+
 def terminal_velocity_explained(situation: float = 0) -> Question:
     """Describe and explain: why a falling body reaches a terminal velocity (notes, Drag and
     terminal velocity: drag grows with speed until it balances the weight). The model answer
@@ -193,7 +217,7 @@ def terminal_velocity_explained(situation: float = 0) -> Question:
             f"{constant} {'stay' if upthrust else 'stays'} the same. So the resultant force decreases, "
             "and so does the acceleration. "
             f"When {balance} the weight of {body}, the resultant force is zero, the acceleration is "
-            "zero, and the velocity stays constant: this is the terminal velocity."),),
+            "zero, and the velocity stays constant: this is the terminal velocity.", _falling_points(upthrust)),),
         mark_scheme=(
             Mark(f"{drag_name[0].upper()}{drag_name[1:]} increases as the speed increases "
                  f"({constant} constant)", "B1", "a"),

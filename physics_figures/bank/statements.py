@@ -3,8 +3,9 @@
 
 15 of 40 real Paper 1 and Paper 2 Dynamics questions open with a part such as "define momentum",
 "state Newton's second law in terms of momentum" or "state the principle of conservation of
-momentum" (issue 25). Each template here is one self-marked ``ExplainPart``: the student writes
-the answer, then ticks the marking points it makes. The points are the published 9702 scheme's,
+momentum" (issue 25). Each template here is one ``TextPart`` (issue 38), marked from the typed
+words by its points' rules (statement_rules.py: the wordings an examiner accepts and those the
+schemes reject, each citing its paper). The points are the published 9702 scheme's,
 in the words an examiner looks for ("rate of change of momentum", "resultant force", "no resultant
 external force", "on different bodies", ...); the wording of each is the notes'
 (../shared/notes, "Mass, weight and the definitions" and "Understand it"), and each template's
@@ -19,8 +20,10 @@ right wording: it has one variant, and its ``one_wording`` says why (physics_fig
 
 from __future__ import annotations
 
-from ..questions import ExplainPart, Mark, Question
+from ..parts.text import TextPart, TextPoint
+from ..questions import Mark, Question
 from ..variants import Draw, Template
+from . import statement_rules as rules
 from ._common import PER_S2
 
 #: Why a definition has one variant (Template.one_wording).
@@ -30,15 +33,16 @@ _ONE_LAW = ("A law is stated the same way whatever the bodies: a situation put a
             "leaves the statement word for word the same, so a second variant would only repeat the first.")
 
 
-def _statement(key: str, text: str, prompt: str, points: tuple[str, ...], model: str) -> Question:
-    """One self-marked part whose mark lines are independent B1 points, as the schemes mark a
-    definition or a stated law (each point earns its mark on its own)."""
+def _statement(key: str, text: str, prompt: str, points: tuple[TextPoint, ...], model: str) -> Question:
+    """One text part, marked from the typed words by its points' rules (statement_rules), and its
+    mark lines, one a point with the point's code: independent B1 points, as the schemes mark a
+    definition or a stated law, or an M1 with its dependent A1 (the conservation principle)."""
     return Question(
         key=key,
         text=text,
         givens=(),
-        parts=(ExplainPart(prompt, model),),
-        mark_scheme=tuple(Mark(point, "B1", "a") for point in points),
+        parts=(TextPart(prompt, model, points),),
+        mark_scheme=tuple(Mark(point.text, point.code, "a") for point in points),
     )
 
 
@@ -46,8 +50,7 @@ def _statement(key: str, text: str, prompt: str, points: tuple[str, ...], model:
 
 #: Notes, Momentum and Newton's second law: "Linear momentum is mass × velocity ... Momentum is
 #: a vector, in the direction of the velocity"; How to do it 4: "the product of mass and velocity".
-MOMENTUM_POINTS = ("Momentum is the product of mass and velocity (p = mv)",
-                   "It is a vector, in the direction of the velocity")
+MOMENTUM_POINTS = rules.MOMENTUM_POINTS
 
 
 def define_momentum() -> Question:
@@ -66,7 +69,7 @@ def define_momentum() -> Question:
 
 #: Notes, How to do it 4: "Force: the rate of change of momentum. ('Mass × acceleration' is how
 #: to work out a resultant force for a constant mass, not the definition.)"
-FORCE_POINTS = ("Force is the rate of change of momentum",)
+FORCE_POINTS = rules.FORCE_POINTS
 
 
 def define_force() -> Question:
@@ -88,13 +91,7 @@ def define_force() -> Question:
 #: second and of the fourth line earns its B1 (issue 37), so each point says "either". Notes: "Mass is a
 #: scalar ... the same wherever the object is"; "Weight: the force on a mass due to a
 #: gravitational field; W = mg"; "weight depends on where you are".
-MASS_WEIGHT_POINTS = (
-    "Mass is the property of an object that resists a change in its motion",
-    "Either: mass is a scalar; or: mass is the same wherever the object is (constant)",
-    "Weight is the force on a mass due to a gravitational field, W = mg",
-    ("Either: weight is a vector (towards the centre of the planet); or: weight changes where the "
-    "gravitational field strength g changes (variable)"),
-)
+MASS_WEIGHT_POINTS = rules.MASS_WEIGHT_POINTS
 
 
 def mass_and_weight_defined() -> Question:
@@ -113,7 +110,7 @@ def mass_and_weight_defined() -> Question:
 
 #: Notes, Momentum and Newton's second law: "With SI units the constant is 1, which is how the
 #: newton is defined, so F = Δp / Δt"; with constant mass F = ma.
-NEWTON_POINTS = (f"One newton is the force that gives a mass of 1 kg an acceleration of 1 {PER_S2}",)
+NEWTON_POINTS = rules.NEWTON_POINTS
 
 
 def define_the_newton() -> Question:
@@ -133,8 +130,7 @@ def define_the_newton() -> Question:
 
 #: Notes, Mass and Newton's first law: "an object stays at rest, or keeps moving at a constant
 #: velocity, unless a resultant force acts on it".
-FIRST_LAW_POINTS = (("An object stays at rest, or keeps moving at constant velocity, unless a resultant "
-                    "force acts on it"),)
+FIRST_LAW_POINTS = rules.FIRST_LAW_POINTS
 
 
 def state_first_law() -> Question:
@@ -155,11 +151,7 @@ def state_first_law() -> Question:
 #: needs 'equal and opposite' and 'on different bodies'". The pair is also "the same type of
 #: force", which the model answer says; no mark needs it (9702/21/M/J/15 Q3(c) marks "force on X
 #: is equal and opposite to force on Y"; issue 37).
-THIRD_LAW_POINTS = (
-    ("If body A exerts a force on body B, then body B exerts a force on body A: the two forces act on "
-    "different bodies"),
-    "The two forces are equal and opposite: equal in magnitude and opposite in direction",
-)
+THIRD_LAW_POINTS = rules.THIRD_LAW_POINTS
 
 
 def state_third_law() -> Question:
@@ -181,8 +173,7 @@ def state_third_law() -> Question:
 
 #: Notes, Momentum and Newton's second law: "the resultant force on an object is proportional to
 #: its rate of change of momentum, and acts in the direction of that change".
-SECOND_LAW_POINTS = (("The resultant force on a body is proportional to (in SI units, equal to) the rate of "
-                     "change of momentum of the body"),)
+SECOND_LAW_POINTS = rules.SECOND_LAW_POINTS
 
 #: (situation, the body, what the law says there), each as a 9702 question sets the law before
 #: using it: a ball bouncing off a floor (9702/21/M/J/16 Q3), a block dragged while its
@@ -249,16 +240,16 @@ _CONSERVATION_SITUATIONS = (
 )
 
 
-def _conservation_points(system: str) -> tuple[str, str]:
-    return (f"The total momentum of a system (here {system}) stays constant",
-            f"provided no resultant external force acts on the system: {system} form an isolated system")
+_conservation_points = rules.conservation_points
 
 
 def state_momentum_conservation(situation: float = 0) -> Question:
     """State the principle of conservation of momentum [2], applied to a collision, an explosion, a
-    recoil. 9702/23/M/J/13 Q3(a)(i): "the total momentum of a system (of interacting bodies) remains
-    constant B1 provided there are no resultant external forces / isolated system B1 [2]";
-    9702/21/M/J/24 Q3(a) asks the same [2]. The notes' common mistake: "'Momentum before = momentum
+    recoil. Marked M1 A1 as the most recent schemes mark it, 9702/22/F/M/26 and 9702/23/M/J/25
+    (CLARIFICATIONS, Papers): "total momentum (of a system) constant" M1, "isolated system" or "no
+    external force" A1. The older 9702/23/M/J/13 Q3(a)(i) gave B1 B1 ("remains constant B1 provided
+    there are no resultant external forces / isolated system B1"); 9702/21/M/J/24 Q3(a) asks the
+    same [2]. The notes' common mistake: "'Momentum before = momentum
     after' earns only part of the marks"."""
     what, system, applied = _CONSERVATION_SITUATIONS[int(situation)]
     return _statement(
@@ -281,9 +272,7 @@ _ELASTIC_SITUATIONS = (
 )
 
 
-def _elastic_points(bodies: str) -> tuple[str, str]:
-    return (f"The total kinetic energy of {bodies} is conserved: the same after the collision as before it",
-            "The relative speed of approach equals the relative speed of separation")
+_elastic_points = rules.elastic_points
 
 
 def state_elastic_collision(situation: float = 0) -> Question:
@@ -321,10 +310,7 @@ _TERMINAL_SITUATIONS = (
 )
 
 
-def _terminal_points(body: str, balance: str) -> tuple[str, str]:
-    return ((f"Terminal velocity is the constant velocity {body} reaches when the resultant force is "
-            "zero, so the acceleration is zero"),
-            f"The condition: {balance}")
+_terminal_points = rules.terminal_points
 
 
 def state_terminal_velocity(situation: float = 0) -> Question:
@@ -338,7 +324,7 @@ def state_terminal_velocity(situation: float = 0) -> Question:
     return _statement(
         "state-terminal-velocity", what,
         f"State what is meant by terminal velocity, and state the condition for {body} to reach it.",
-        _terminal_points(body, balance),
+        _terminal_points(body, balance, in_liquid="upthrust" in balance),
         f"Terminal velocity is the constant velocity {body} reaches when the resultant force is zero, "
         f"so the acceleration is zero. That happens when {balance}: the drag grows with speed until it "
         "does.")
@@ -350,28 +336,28 @@ def _situations(situations: tuple) -> dict[str, Draw]:
 
 
 TEMPLATES = (
-    Template("define-momentum", "definitions", ("explain",), "Define momentum", define_momentum,
+    Template("define-momentum", "definitions", ("text",), "Define momentum", define_momentum,
              one_wording=_ONE_DEFINITION),
-    Template("define-force", "definitions", ("explain",), "Define force", define_force,
+    Template("define-force", "definitions", ("text",), "Define force", define_force,
              one_wording=_ONE_DEFINITION),
-    Template("mass-and-weight-defined", "definitions", ("explain",), "Mass and weight defined",
+    Template("mass-and-weight-defined", "definitions", ("text",), "Mass and weight defined",
              mass_and_weight_defined, one_wording=_ONE_DEFINITION),
-    Template("define-the-newton", "definitions", ("explain",), "Define the newton", define_the_newton,
+    Template("define-the-newton", "definitions", ("text",), "Define the newton", define_the_newton,
              one_wording=_ONE_DEFINITION),
-    Template("state-first-law", "newton", ("explain",), "Newton's first law", state_first_law,
+    Template("state-first-law", "newton", ("text",), "Newton's first law", state_first_law,
              one_wording=_ONE_LAW),
-    Template("state-third-law", "newton", ("explain",), "Newton's third law", state_third_law,
+    Template("state-third-law", "newton", ("text",), "Newton's third law", state_third_law,
              one_wording=_ONE_LAW),
-    Template("state-second-law", "force-momentum", ("explain",), "Newton's second law", state_second_law,
+    Template("state-second-law", "force-momentum", ("text",), "Newton's second law", state_second_law,
              _situations(_SECOND_LAW_SITUATIONS),
              variant_count=len(_SECOND_LAW_SITUATIONS)),
-    Template("state-momentum-conservation", "momentum-line", ("explain",), "The conservation principle",
+    Template("state-momentum-conservation", "momentum-line", ("text",), "The conservation principle",
              state_momentum_conservation, _situations(_CONSERVATION_SITUATIONS),
              variant_count=len(_CONSERVATION_SITUATIONS)),
-    Template("state-elastic-collision", "elastic", ("explain",), "What is an elastic collision?",
+    Template("state-elastic-collision", "elastic", ("text",), "What is an elastic collision?",
              state_elastic_collision, _situations(_ELASTIC_SITUATIONS),
              variant_count=len(_ELASTIC_SITUATIONS)),
-    Template("state-terminal-velocity", "drag", ("explain",), "What is terminal velocity?",
+    Template("state-terminal-velocity", "drag", ("text",), "What is terminal velocity?",
              state_terminal_velocity, _situations(_TERMINAL_SITUATIONS),
              variant_count=len(_TERMINAL_SITUATIONS)),
 )

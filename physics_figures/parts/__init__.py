@@ -55,6 +55,7 @@ from .explain import ExplainPart
 from .graph import Graph, GraphPart, format_reading, reading_places
 from .numeric import Alternative, Ecf, Mistake, Part, Reading, Step
 from .sketch import Feature, SketchAxes, SketchPart, SketchPoint, SketchTolerance, WrongSketch
+from .text import Note, TextPart, TextPoint
 
 #: Every part kind by its name: the data-kind of a question's part and the kind the browser's
 #: engine looks its marker up by.
@@ -73,7 +74,7 @@ def register_kind(cls: type[PartKind]) -> type[PartKind]:
     return cls
 
 
-for _kind in (Part, GraphPart, ChoicePart, ExplainPart, SketchPart):
+for _kind in (Part, GraphPart, ChoicePart, ExplainPart, SketchPart, TextPart):
     register_kind(_kind)
 
 __all__ = [
@@ -90,6 +91,7 @@ __all__ = [
     "Graph",
     "GraphPart",
     "Mistake",
+    "Note",
     "Option",
     "Part",
     "PartKind",
@@ -100,6 +102,8 @@ __all__ = [
     "SketchPoint",
     "SketchTolerance",
     "Step",
+    "TextPart",
+    "TextPoint",
     "WrongSketch",
     "choices_in_order",
     "format_reading",

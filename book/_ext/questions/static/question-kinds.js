@@ -26,6 +26,9 @@
  *   missedNote(part)                what the end of a mock test adds to a part not right ("The
  *                                   answer is B.")
  *   outcome(code, message, extra)   (a kind with ecf) how its marker builds an outcome
+ *   show(box, result)               after Check, show in the fieldset what the marker found (text)
+ *   preTick(box, result)            on a Check, tick the points the marker found for the student
+ *                                   to confirm (explain with rules); true when it ticked any
  */
 (function (root) {
   "use strict";

@@ -151,9 +151,22 @@
       Kinds.of(part).fill(fields(part).box, part, a);
     }
 
+    /* On a Check, a kind may tick in its part what its marker found, for the student to confirm
+     * (an explain part with rules: preTick, true when it ticked any). */
+    function preTick(marked) {
+      var ticked = false;
+      data.parts.forEach(function (part) {
+        var kind = Kinds.of(part);
+        if (kind.preTick) ticked = kind.preTick(fields(part).box, marked.results[part.id]) || ticked;
+      });
+      return ticked;
+    }
+
     /* record: a Check (a new attempt); "ticks": a marking point ticked (updates it). */
     function check(record) {
       var marked = markQuestion(data, answers());
+      var confirmed = record === true && preTick(marked);
+      if (confirmed) marked = markQuestion(data, answers());
       data.parts.forEach(function (part) {
         var f = fields(part),
           result = marked.results[part.id],
@@ -162,6 +175,7 @@
         var right = got[0] === got[1] && result.code !== "wrong";
         var selfMarked = result.code === "self-marked";
         if (f.points && selfMarked) f.points.hidden = false;
+        if (Kinds.of(part).show) Kinds.of(part).show(f.box, result); // what the marker found (text)
         var lost = engine.lostText(data, marked.marks, part.id);
         // a value in the message stays on one line with its unit, as everywhere in the book
         f.feedback.textContent =
@@ -218,6 +232,10 @@
             })
             .filter(Boolean),
         };
+        // marks the student gave themselves (ticks), and whether the marker's ticks were there to confirm
+        if (data.parts.some((p) => marked.results[p.id].code === "self-marked")) attempt.selfMarked = true;
+        if (confirmed || (record === "ticks" && load("confirm:" + storeId()))) attempt.selfConfirmed = true;
+        if (record === true) save("confirm:" + storeId(), confirmed);
         // A tick re-scores its Check's attempt, which keeps the help, time and first try it had.
         if (record !== "ticks") {
           attempt.help = help.used();

@@ -29,7 +29,8 @@ from physics_figures.questions import unit_text
 pytestmark = [pytest.mark.site]
 
 ROOT = Path(__file__).resolve().parents[1]
-PDF_DIR = Path(os.environ.get("PDF_DIR", ROOT / "_build" / "latex"))
+# the LaTeX build has its own folder (the Makefile's LATEX_BUILD), so its own Sphinx environment
+PDF_DIR = Path(os.environ.get("PDF_DIR", ROOT / "_build" / "latex-build" / "_build" / "latex"))
 BOOK, SHEET, KEY = "dynamics.pdf", "dynamics-questions.pdf", "dynamics-answers.pdf"
 ALL_PDFS = (BOOK, SHEET, KEY)
 MARK_CODE = re.compile(r"\b[CMAB]1\b")

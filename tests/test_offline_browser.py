@@ -278,13 +278,19 @@ def test_the_zip_opens_from_disk_with_figures_questions_and_search(browser, unzi
 
 
 def test_a_browser_test_s_context_blocks_the_worker_unless_it_allows_it(browser, site_dir):
-    """tests/browser.py: other tests' fresh contexts must not download the whole book behind
+    """scripts/browser.py: other tests' fresh contexts must not download the whole book behind
     their page; the tests above, which allow the worker, get it."""
     with serve_site(site_dir) as base_url:
         blocked = browser.new_context()
+        # offline.js registers the worker after "load": the test waits for that call to settle
+        blocked.add_init_script("""if ('serviceWorker' in navigator) {
+            const register = navigator.serviceWorker.register.bind(navigator.serviceWorker);
+            navigator.serviceWorker.register = (...args) =>
+                register(...args).finally(() => { window.__registerSettled = true; });
+        }""")
         page = blocked.new_page()
         page.goto(f"{base_url}/{INTRO}", wait_until="load")
-        page.wait_for_timeout(1_000)  # offline.js registers the worker after "load"
+        page.wait_for_function("!('serviceWorker' in navigator) || window.__registerSettled === true")
         assert page.evaluate("'serviceWorker' in navigator ? navigator.serviceWorker.getRegistrations()"
                              ".then(r => r.length) : 0") == 0, "a default context registered the worker"
         blocked.close()

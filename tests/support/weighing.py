@@ -18,6 +18,7 @@ class PageReport:
     path: str
     total_bytes: int = 0
     layout_shift: float = 0.0  # what Lighthouse calls CLS, while it loads: the worst of its loads
+    layout_shift_load: str = ""  # which load shifted most ("first visit", "desktop", "mobile")
     foreign: list[str] = field(default_factory=list)
     failed: list[str] = field(default_factory=list)
     console: list[str] = field(default_factory=list)
@@ -25,6 +26,11 @@ class PageReport:
     overflow: dict[str, int] = field(default_factory=dict)  # mode -> pixels too wide
     facts: dict = field(default_factory=dict)  # PAGE_FACTS and the keyboard walk (desktop/light)
     dark_images: dict[str, list[dict]] = field(default_factory=dict)  # viewport -> images
+
+    def shifted(self, shift: float, load: str) -> None:
+        """One load's layout shift: the page is judged by the worst of its loads."""
+        if shift > self.layout_shift or not self.layout_shift_load:
+            self.layout_shift, self.layout_shift_load = shift, load
 
 
 # Runs in the page: headings, images, maths, keyboard focus and dark-mode figures.
@@ -62,7 +68,7 @@ async def weigh(browser, base: str, pages: list[str], reports) -> None:
         await context.close()
         report = reports[path]
         report.total_bytes = load.total_bytes
-        report.layout_shift = max(report.layout_shift, shift)  # the worst of the page's loads
+        report.shifted(shift, "first visit")
         report.failed += [f"first visit: {failure}" for failure in load.failed]
         report.console += [f"first visit: {message}" for message in load.console_errors]
         report.foreign += [f"first visit: {url}" for url in load.foreign]

@@ -163,14 +163,27 @@ jslint: node_modules/.package-lock.json
 # writes all three .tex files (book/_latex/); xelatex typesets them. Needs TeX Live
 # from Debian (about 360 MB, no texlive-fonts-extra). The PDFs are copied into the
 # site too, so the intro page's download links work.
-PDF := _build/latex
+# The LaTeX build keeps its own Sphinx environment (its doctrees, under $(LATEX_BUILD)):
+# sphinx-jupyterbook-latex sets numfig_secnum_depth for LaTeX, and in an environment shared
+# with the HTML build that change made the next make html read every page again. It shares
+# the HTML build's cache of executed pages (a link), so no page is executed twice.
+# make latex writes the .tex files only (tests/test_noop_build.py uses it).
+LATEX_BUILD := _build/latex-build
+PDF := $(LATEX_BUILD)/_build/latex
 PDF_FILES := dynamics.pdf dynamics-questions.pdf dynamics-answers.pdf
+LATEX_ENV := mkdir -p _build/.jupyter_cache $(LATEX_BUILD)/_build && \
+  ln -sfn ../../.jupyter_cache $(LATEX_BUILD)/_build/.jupyter_cache
 
-.PHONY: pdf
+.PHONY: pdf latex
+latex: venv
+	@$(LATEX_ENV)
+	$(JB_BUILD) --builder latex --path-output $(LATEX_BUILD)
+
 pdf: venv
 	@scripts/ensure-debian-packages pdf
 	@echo ">>> building the PDFs with xelatex (pages are executed; cached pages are reused)"
-	$(JB_BUILD) --builder pdflatex
+	@$(LATEX_ENV)
+	$(JB_BUILD) --builder pdflatex --path-output $(LATEX_BUILD)
 	@mkdir -p $(SITE)/pdf
 	cp $(addprefix $(PDF)/,$(PDF_FILES)) $(SITE)/pdf/
 	@echo ">>> done: $(addprefix $(PDF)/,$(PDF_FILES)) (copied to $(SITE)/pdf/)"

@@ -13,6 +13,10 @@ matplotlib.use("Agg")
 # The book's own Sphinx extensions (site_assets, offline, ...) are importable in tests, as
 # they are in the build (_config.yml's local_extensions).
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "book" / "_ext"))
+# scripts/browser.py (serve the built site, open it in Chromium) is shared with scripts/bench.py,
+# which imports nothing from tests/.
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "scripts"))
+import browser  # from scripts/, just put on the path
 
 # One profile for every Hypothesis test: no deadline (a loaded CI machine is slow, and a
 # timing failure says nothing about the physics), and the same examples on every CI run.
@@ -71,7 +75,7 @@ def pytest_runtest_setup(item):
 
 @pytest.fixture(autouse=True)
 def _remember_test(request):
-    """Lets require_marker see which test is running (browser.py has no request)."""
+    """Lets require_marker see which test is running (scripts/browser.py has no request)."""
     global _current_test
     _current_test = request.node
     yield
@@ -83,6 +87,9 @@ def require_marker(marker: str) -> None:
     split between `make check` and `make test` cannot drift."""
     if _current_test is not None and _current_test.get_closest_marker(marker) is None:
         pytest.fail(f"{_current_test.nodeid} needs {NEEDS[marker]}: mark it @pytest.mark.{marker}")
+
+
+browser.BEFORE_CHROMIUM.append(lambda: require_marker("browser"))
 
 ROOT = Path(__file__).resolve().parents[1]
 # SITE_DIR lets a test run point at a site built elsewhere (e.g. --path-output builds).
@@ -109,7 +116,7 @@ def _fresh_matplotlib():
 
 @pytest.fixture(scope="module")
 def base_url(site_dir):
-    """The built site, served as a static host serves it (tests/browser.py), for a module."""
+    """The built site, served as a static host serves it (scripts/browser.py), for a module."""
     from browser import serve_site
 
     with serve_site(site_dir) as base:
@@ -118,7 +125,7 @@ def base_url(site_dir):
 
 @pytest.fixture(scope="module")
 def browser():
-    """Headless Chromium for a module's tests (tests/browser.py)."""
+    """Headless Chromium for a module's tests (scripts/browser.py)."""
     from browser import open_browser
 
     with open_browser() as chromium:

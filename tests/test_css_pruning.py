@@ -58,26 +58,34 @@ def _shot(browser, base_url: str, page_path: str, width: int, mode: str, *, menu
                                ".every(li => li.querySelector('.context'))")
     if menu:
         page.locator("button.primary-toggle:visible, label.sidebar-toggle.primary-toggle:visible").first.click()
-        page.wait_for_timeout(600)  # the panel slides in
+    # every transition and animation run to its end (the phone menu's panel slides in)
+    page.evaluate("Promise.all(document.getAnimations().map(a => a.finished.catch(() => null)))")
     image = Image.open(BytesIO(page.screenshot(full_page=not menu, animations="disabled", caret="hide")))
     context.close()
     return image.convert("RGB")
 
 
+#: Chromium's software raster sometimes draws a figure's rounded corner 2 px apart from one
+#: shot to the next (both bundles alike, about one shot in three on the drag page at 390 px,
+#: dark): a few dozen pixels. A rule pruned that a page uses moves or recolours a whole
+#: element: thousands. Two shots are the same when at most this many pixels differ.
+NOISE_PIXELS = 200
+
+
 def _same(first: Image.Image, second: Image.Image) -> bool:
-    return first.size == second.size and ImageChops.difference(first, second).getbbox() is None
+    if first.size != second.size:
+        return False
+    changed = ImageChops.difference(first, second).convert("L").point(lambda value: 255 if value else 0)
+    return changed.histogram()[255] <= NOISE_PIXELS
 
 
 @pytest.mark.parametrize("mode", MODES)
 @pytest.mark.parametrize("width", WIDTHS.values(), ids=list(WIDTHS))
 def test_pruned_css_draws_every_page_as_the_full_css_does(browser, site_dir, unpruned, width, mode):
     with serve_site(site_dir) as pruned_url, serve_site(unpruned) as full_url:
-        # a page whose explorable is still drawing may differ once, and Chromium's software raster
-        # sometimes draws a figure's rounded corner 2 px apart (both bundles alike, about one shot
-        # in three on the drag page at 390 px, dark): a CSS difference stays in every try
+        # one shot each, compared within NOISE_PIXELS
         changed = [path for path in PAGES
-                   if not any(_same(_shot(browser, pruned_url, path, width, mode),
-                                    _shot(browser, full_url, path, width, mode)) for _ in range(4))]
+                   if not _same(_shot(browser, pruned_url, path, width, mode), _shot(browser, full_url, path, width, mode))]
     assert not changed, f"pruning the CSS changed {changed} at {width} px, {mode}"
 
 

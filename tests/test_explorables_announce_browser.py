@@ -30,7 +30,6 @@ ANNOUNCE_GAP_MS = 500  # at most one announcement per 500 ms: so at most 2 in an
 # milliseconds in between (a CI run heard 497 ms and 502 ms, 999 ms for three). Unthrottled
 # announcements come with every key press, 60 ms apart, far inside this allowance.
 HEARING_JITTER_MS = 50
-SETTLED_MS = 1500  # the region has been quiet this long after the last key: the slider has stopped
 
 
 def explorable_page(site_dir, name: str) -> str:
@@ -55,14 +54,16 @@ def open_explorable(context, base_url, site_dir, name: str) -> tuple[Page, objec
 
 # Records every change of the live region's text with its time, and the time of the last key
 # as the page saw it (a press's round trip back to the test can end after the announcement
-# it caused).
+# it caused), and when the announcer last said the control was still (announce.js's event).
 RECORD = """box => {
   const region = box.querySelector('[aria-live="polite"]');
   window.__heard = [];
   window.__lastKey = 0;
+  window.__settled = 0;
   if (!window.__keys) {
     window.__keys = true;
     box.addEventListener('keydown', () => { window.__lastKey = performance.now(); }, true);
+    region.addEventListener('announcer-settled', () => { window.__settled = performance.now(); });
   }
   window.__observer && window.__observer.disconnect();
   window.__observer = new MutationObserver(() => window.__heard.push([performance.now(), region.textContent]));
@@ -121,13 +122,8 @@ def test_holding_an_arrow_key_is_announced_at_most_twice_a_second_then_the_final
             slider.press("ArrowRight")
         last_key = page.evaluate("window.__lastKey")
         assert last_key > first_key, f"the page saw no key press on {slider_name!r}"
-        # wait until the region has said something after the last key and then kept quiet
-        page.wait_for_function(
-            """([lastKey, settled]) => {
-                const heard = window.__heard;
-                return heard.length && heard[heard.length - 1][0] >= lastKey
-                    && performance.now() - heard[heard.length - 1][0] > settled;
-            }""", arg=[last_key, SETTLED_MS], timeout=30_000)
+        # wait for the announcer to say the slider is still, after the last key (its last word said)
+        page.wait_for_function("lastKey => window.__settled > lastKey", arg=last_key)
         heard = page.evaluate("window.__heard")
         times = [t for t, _ in heard]
         where = f"{name}, {slider_name!r}: heard {[(round(t - first_key), s[:60]) for t, s in heard]}"

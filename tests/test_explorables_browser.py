@@ -1,7 +1,7 @@
 """The explorables in a real browser: Debian's Chromium, driven by playwright, on the built site.
 
 The site (the `site_dir` fixture; SITE_DIR points it at a site built elsewhere) is served
-as a static host serves it (tests/browser.py). Each test works the page as a reader would, with
+as a static host serves it (scripts/browser.py). Each test works the page as a reader would, with
 the keyboard or the pointer, and checks the read-outs against physics_figures.
 """
 

@@ -216,7 +216,8 @@ def test_back_to_top_never_covers_text_or_controls(site_dir, base_url, browser, 
         for _ in range(1500, height, 700):
             page.mouse.wheel(0, 700 + 300)  # down, then a little up: the theme shows it on the way up
             page.mouse.wheel(0, -300)
-            page.wait_for_timeout(150)  # the theme shows the button from a scroll event
+            # the theme shows the button from a scroll event: two frames on, it has been handled
+            page.evaluate("new Promise(done => requestAnimationFrame(() => requestAnimationFrame(done)))")
             scrolled += page.evaluate("window.scrollY > 0")
             found = page.evaluate(COVERED)
             if found:

@@ -71,10 +71,10 @@ def _project(project: Path) -> None:
     (project / "book" / "question.md").write_text(QUESTION_PAGE)
 
 
-def _build(project: Path) -> str:
+def _build(project: Path, target: str = "html") -> str:
     result = subprocess.run(
         ["make", "--no-print-directory", "-o", f"{VENV}/.installed",
-         "-o", "node_modules/.package-lock.json", "html", f"VENV={VENV}"],
+         "-o", "node_modules/.package-lock.json", target, f"VENV={VENV}"],
         cwd=project, check=False, capture_output=True, text=True, timeout=600,
         # The copy's physics_figures comes first, for the build and for the kernels.
         env={**os.environ, "PYTHONPATH": str(project)},

@@ -250,10 +250,10 @@ def answer_by_keys(page, section, key: str, answers: dict) -> str:
         page.keyboard.type(unit)
         if way:
             tab_to(page, f"#{base}-{part}-direction")
-            for _ in range(4):  # down the options until the direction shows
-                if section.locator(f"#{base}-{part}-direction").input_value() == way[0]:
-                    break
-                page.keyboard.press("ArrowDown")
+            direction = section.locator(f"#{base}-{part}-direction")
+            options = direction.evaluate("select => [...select.options].map(o => o.value)")
+            for _ in range(options.index(way[0]) - options.index(direction.input_value())):
+                page.keyboard.press("ArrowDown")  # down the options to the direction
             assert section.locator(f"#{base}-{part}-direction").input_value() == way[0]
     tab_to(page, f'section.q[data-q="{key}"] button.q-check')
     page.keyboard.press("Enter")

@@ -6,7 +6,9 @@ book/_ext/offline: the search texts and the service worker, which read and hash 
 site). One small book (a copy of the project with its own physics_figures, as
 tests/test_fresh_figures_build.py makes) with a question that has a graph, built cold, then
 without a change, then after an edit to the graph's drawing code, to the question's
-numbers in the bank, and to a page's text: each must reach the site.
+numbers in the bank, and to a page's text: each must reach the site. And the LaTeX build
+(make latex, the first half of make pdf) between two HTML builds leaves the second one
+nothing to do: it keeps its own Sphinx environment.
 """
 
 from __future__ import annotations
@@ -88,3 +90,25 @@ def test_a_no_op_rebuild_rewrites_nothing_and_every_edit_reaches_the_site(tmp_pa
     _build(tmp_path)
     texts = (tmp_path / "_build" / "html" / "_static" / "search-texts.js").read_text()
     assert re.search(r"zebrafish", texts), "the search texts are stale after a page edit"
+
+
+def test_the_latex_build_leaves_the_html_build_its_environment(tmp_path):
+    _project(tmp_path)
+    # parts, as the book's table of contents has: sphinx-jupyterbook-latex then numbers
+    # LaTeX's figures by chapter (numfig_secnum_depth), a setting the HTML build does not share
+    (tmp_path / "book" / "answers.md").write_text("# Answers\n\n```{answer-key}\n```\n")
+    (tmp_path / "_toc.yml").write_text(
+        "format: jb-book\nroot: book/intro\nparts:\n"
+        "  - caption: One\n    chapters:\n      - file: book/question\n"
+        "  - caption: Two\n    chapters:\n      - file: book/answers\n")
+    _build(tmp_path)
+    # an edit, so that the LaTeX build reads a page and saves its environment
+    with (tmp_path / "book" / "intro.md").open("a") as page:
+        page.write("\nA sentence about zebrafish.\n")
+    assert "build succeeded" in _build(tmp_path, "latex")
+
+    log = _build(tmp_path)
+    assert "config changed" not in log, "the LaTeX build changed the HTML build's environment:\n" + log[-2000:]
+    read = re.findall(r"reading sources\.\.\. \S*\[\s*\d+%\]\S* \S*book/(\w+)", log)
+    assert "question" not in read, f"the HTML build after the LaTeX build read an unchanged page again: {read}"
+    assert "intro" in read, f"the edited page was not read again: {read}"

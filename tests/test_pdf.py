@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import os
 import re
-import subprocess
 import unicodedata
 from functools import cache
 from html import unescape
@@ -21,6 +20,7 @@ from pathlib import Path
 
 import pytest
 import yaml
+from support.pdf import poppler
 
 from physics_figures import answers, textformat
 from physics_figures.bank import all_questions
@@ -29,17 +29,14 @@ from physics_figures.questions import unit_text
 pytestmark = [pytest.mark.site]
 
 ROOT = Path(__file__).resolve().parents[1]
-PDF_DIR = Path(os.environ.get("PDF_DIR", ROOT / "_build" / "latex"))
+# the LaTeX build has its own folder (the Makefile's LATEX_BUILD), so its own Sphinx environment
+PDF_DIR = Path(os.environ.get("PDF_DIR", ROOT / "_build" / "latex-build" / "_build" / "latex"))
 BOOK, SHEET, KEY = "dynamics.pdf", "dynamics-questions.pdf", "dynamics-answers.pdf"
 ALL_PDFS = (BOOK, SHEET, KEY)
 MARK_CODE = re.compile(r"\b[CMAB]1\b")
 
 
 # ----------------------------------------------------------------- reading PDFs
-
-
-def _poppler(*command: str) -> str:
-    return subprocess.run(command, check=True, capture_output=True, text=True).stdout
 
 
 def pdf_path(name: str) -> Path:
@@ -51,7 +48,7 @@ def pdf_path(name: str) -> Path:
 
 @cache
 def pdf_text(name: str) -> str:
-    return _poppler("pdftotext", "-enc", "UTF-8", str(pdf_path(name)), "-")
+    return poppler("pdftotext", "-enc", "UTF-8", str(pdf_path(name)), "-")
 
 
 def squash(text: str) -> str:
@@ -71,7 +68,7 @@ def squashed(name: str) -> str:
 
 
 def page_count(name: str) -> int:
-    return int(re.search(r"^Pages:\s+(\d+)", _poppler("pdfinfo", str(pdf_path(name))), re.MULTILINE)[1])
+    return int(re.search(r"^Pages:\s+(\d+)", poppler("pdfinfo", str(pdf_path(name))), re.MULTILINE)[1])
 
 
 # ------------------------------------------------------------ reading the site
@@ -308,14 +305,14 @@ def test_pdf_has_no_code_html_or_raw_tex(name):
 
 
 def test_book_figures_are_vectors_not_raster_images():
-    listing = _poppler("pdfimages", "-list", str(pdf_path(BOOK))).splitlines()
+    listing = poppler("pdfimages", "-list", str(pdf_path(BOOK))).splitlines()
     images = listing[2:]  # two header lines
     assert not images, "raster images in the book (figures should be vector PDF):\n" + "\n".join(images)
 
 
 @pytest.mark.parametrize("name", ALL_PDFS)
 def test_every_font_is_embedded(name):
-    rows = _poppler("pdffonts", str(pdf_path(name))).splitlines()[2:]
+    rows = poppler("pdffonts", str(pdf_path(name))).splitlines()[2:]
     assert rows, f"{name} uses no font?"
     not_embedded = [row for row in rows if row.split()[-5] != "yes"]
     assert not not_embedded, f"{name}: fonts not embedded:\n" + "\n".join(not_embedded)
@@ -384,7 +381,7 @@ def _version_and_date() -> tuple[str, str]:
 @pytest.mark.parametrize("name", ALL_PDFS)
 def test_every_pdf_shows_its_version_and_date_from_the_commit(name):
     version, date = _version_and_date()
-    first_page = _poppler("pdftotext", "-enc", "UTF-8", "-f", "1", "-l", "2", str(pdf_path(name)), "-")
+    first_page = poppler("pdftotext", "-enc", "UTF-8", "-f", "1", "-l", "2", str(pdf_path(name)), "-")
     shown = squash(version.replace("version", "Version") if version.startswith("version") else "Unversioned")
     assert shown in squash(first_page), f"{name} does not show {version!r} on its first pages"
     assert date in first_page, f"{name} does not show the date {date} on its first pages"
@@ -405,7 +402,7 @@ def test_version_and_date_without_git_come_from_source_date_epoch(tmp_path):
 
 @pytest.mark.parametrize("name", ALL_PDFS)
 def test_pdf_author_names_an_open_textbook_not_cambridge(name):
-    info = _poppler("pdfinfo", str(pdf_path(name)))
+    info = poppler("pdfinfo", str(pdf_path(name)))
     author = re.search(r"^Author:\s+(.*)$", info, re.MULTILINE)[1]
     assert "open textbook" in author and "9702" in author, author
     assert "not produced or endorsed by Cambridge" in author, author
@@ -416,7 +413,7 @@ def test_answer_key_leaves_no_heading_at_the_foot_of_a_page():
     pages = page_count(KEY)
     titles = {squash(line) for line in pdf_text(SHEET).splitlines() if line.strip()}
     for number in range(1, pages):  # the last page may end anywhere
-        text = _poppler("pdftotext", "-enc", "UTF-8", "-layout", "-f", str(number), "-l", str(number),
+        text = poppler("pdftotext", "-enc", "UTF-8", "-layout", "-f", str(number), "-l", str(number),
                         str(pdf_path(KEY)), "-")
         lines = [line.strip() for line in text.splitlines() if line.strip() and not line.strip().isdigit()]
         last = lines[-1]

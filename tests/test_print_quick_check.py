@@ -9,11 +9,11 @@ when one was opened on screen ("Print with answers" prints them: tests/test_firs
 from __future__ import annotations
 
 import re
-import subprocess
 from pathlib import Path
 
 import pytest
 from browser import serve_site
+from support.pdf import poppler
 
 from physics_figures import bank
 
@@ -25,10 +25,6 @@ PAGE = "book/exam/quick-check"
 #: and the worked answer's heading and mark lines. Case matters: "Quick check" is the title.
 WEB_ONLY = [r"\bCheck\b", r"\bpress", r"Type each answer", "New numbers", "Clear my answers", "Print with answers",
             "Worked answer", r"\bValue\b", r"\bUnit\b", "Type a unit", r"\b[ABCM]1\b", "kept in this browser"]
-
-
-def _poppler(*command: str) -> str:
-    return subprocess.run(command, check=True, capture_output=True, text=True).stdout
 
 
 def _asked() -> list:
@@ -57,7 +53,7 @@ def printed(browser, site_dir, tmp_path_factory) -> Path:
 
 
 def test_the_quick_check_prints_on_at_most_two_a4_pages(printed):
-    info = _poppler("pdfinfo", str(printed))
+    info = poppler("pdfinfo", str(printed))
     pages = int(re.search(r"^Pages:\s+(\d+)", info, re.MULTILINE)[1])
     width, height = map(float, re.search(r"^Page size:\s+([\d.]+) x ([\d.]+) pts", info, re.MULTILINE).groups())
     assert abs(width - 595.3) < 2 and abs(height - 841.9) < 2, f"not A4: {width} x {height} pt"
@@ -65,7 +61,7 @@ def test_the_quick_check_prints_on_at_most_two_a4_pages(printed):
 
 
 def test_paper_shows_every_part_s_marks_each_question_s_total_and_the_page_s(printed):
-    text = _poppler("pdftotext", "-enc", "UTF-8", str(printed), "-")
+    text = poppler("pdftotext", "-enc", "UTF-8", str(printed), "-")
     asked = _asked()
     parts = [marks for question in asked for marks in question.part_marks()]
     assert [int(n) for n in re.findall(r"\[(\d+)\]", text)] == parts, text
@@ -77,6 +73,6 @@ def test_paper_shows_every_part_s_marks_each_question_s_total_and_the_page_s(pri
 
 
 def test_paper_has_no_web_instruction_control_or_worked_answer(printed):
-    text = _poppler("pdftotext", "-enc", "UTF-8", str(printed), "-")
+    text = poppler("pdftotext", "-enc", "UTF-8", str(printed), "-")
     found = [pattern for pattern in WEB_ONLY if re.search(pattern, text)]
     assert not found, f"printed: {found}\n{text}"

@@ -51,16 +51,19 @@ def _first_word(node: ast.AST) -> str | None:
     return None
 
 
-def programs_run_by(source: Path) -> set[str]:
-    """Programs a Python file runs: subprocess calls (and this file's own wrappers around
-    them) whose command starts with a literal, shutil.which("x"), and absolute paths of
-    programs ("/usr/bin/x") it names."""
+def wrappers_in(source: Path) -> set[str]:
+    """The functions a file defines around a subprocess call: def poppler(*command): subprocess.run(command)."""
     tree = ast.parse(source.read_text(), filename=str(source))
-    runners = set(SUBPROCESS_CALLS)
-    for function in ast.walk(tree):  # def _poppler(*command): subprocess.run(command)
-        if isinstance(function, ast.FunctionDef) and any(
-                isinstance(n, ast.Call) and _call_name(n) in SUBPROCESS_CALLS for n in ast.walk(function)):
-            runners.add(function.name)
+    return {function.name for function in ast.walk(tree) if isinstance(function, ast.FunctionDef) and any(
+        isinstance(n, ast.Call) and _call_name(n) in SUBPROCESS_CALLS for n in ast.walk(function))}
+
+
+def programs_run_by(source: Path, wrappers: frozenset[str] = frozenset()) -> set[str]:
+    """Programs a Python file runs: subprocess calls (and wrappers around them, its own or
+    `wrappers`, tests/support's) whose command starts with a literal, shutil.which("x"), and
+    absolute paths of programs ("/usr/bin/x") it names."""
+    tree = ast.parse(source.read_text(), filename=str(source))
+    runners = set(SUBPROCESS_CALLS) | wrappers_in(source) | wrappers
     found = set()
     for node in ast.walk(tree):
         if isinstance(node, ast.Call) and node.args:
@@ -78,11 +81,12 @@ def programs_run_by(source: Path) -> set[str]:
 def all_programs() -> dict[str, set[str]]:
     """program -> the files that run it."""
     runs: dict[str, set[str]] = {}
+    shared = frozenset().union(*(wrappers_in(source) for source in (ROOT / "tests" / "support").glob("*.py")))
     for folder in SOURCES:
         for source in sorted((ROOT / folder).rglob("*.py")):
             if ".venv" in source.parts:
                 continue
-            for program in programs_run_by(source):
+            for program in programs_run_by(source, shared):
                 runs.setdefault(program, set()).add(source.relative_to(ROOT).as_posix())
     return runs
 
@@ -95,9 +99,9 @@ def venv_programs() -> set[str]:
 def test_the_scan_sees_the_programs_the_code_is_known_to_run():
     # Guards the scanner itself: these calls exist today, in these shapes.
     runs = all_programs()
-    assert "tests/test_pdf.py" in runs["pdftotext"]  # a wrapper: _poppler("pdftotext", ...)
+    assert "tests/test_pdf.py" in runs["pdftotext"]  # a shared wrapper: poppler("pdftotext", ...)
     assert "book/_ext/site_assets/stylesheets.py" in runs["node"]  # shutil.which("node")
-    assert {"chromium", "chromium-headless-shell"} <= set(runs)  # tests/browser.py
+    assert {"chromium", "chromium-headless-shell"} <= set(runs)  # scripts/browser.py
 
 
 def test_every_program_the_code_runs_is_in_the_table():

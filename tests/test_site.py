@@ -16,10 +16,8 @@ every page and records the scores in BENCHMARKS.md.
 from __future__ import annotations
 
 import asyncio
-import hashlib
 import json
 import re
-from dataclasses import dataclass, field
 from pathlib import Path
 
 import pytest
@@ -31,6 +29,14 @@ from browser import (
     open_browser_async,
     serve_site,
     site_pages,
+)
+from support.weighing import (
+    LAYOUT_SHIFTS,
+    SWEEP_TIMEOUT_MS,
+    PageReport,
+    site_version,
+    weigh,
+    weights_file,
 )
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
@@ -52,23 +58,6 @@ USELESS_ALT = re.compile(
 )
 
 
-@dataclass
-class PageReport:
-    """What one page did in the browser."""
-
-    path: str
-    total_bytes: int = 0
-    layout_shift: float = 0.0  # what Lighthouse calls CLS, while the page loads (first visit, phone)
-    foreign: list[str] = field(default_factory=list)
-    failed: list[str] = field(default_factory=list)
-    console: list[str] = field(default_factory=list)
-    axe: dict[str, list[dict]] = field(default_factory=dict)  # "mobile/dark" -> violations
-    overflow: dict[str, int] = field(default_factory=dict)  # mode -> pixels too wide
-    facts: dict = field(default_factory=dict)  # PAGE_FACTS and the keyboard walk (desktop/light)
-    dark_images: dict[str, list[dict]] = field(default_factory=dict)  # viewport -> images
-
-
-# Runs in the page: headings, images, maths, keyboard focus and dark-mode figures.
 PAGE_FACTS = """() => {
   const main = document.querySelector('main') || document.body;
   const visible = (el) => { const r = el.getBoundingClientRect(); return r.width > 0 && r.height > 0; };
@@ -114,11 +103,6 @@ async def _keyboard(page) -> dict:
     return {"first": first, "jumped": jumped, "stops": stops}
 
 
-# Three tabs load pages side by side: on a busy 2-core machine one load can pass playwright's
-# 30 s default (speed is judged by the weighing and Lighthouse, not by this timeout).
-SWEEP_TIMEOUT_MS = 120_000
-
-
 async def _sweep_viewport(browser, base: str, pages: list[str], viewport: str, reports) -> None:
     """Every page at one width: loaded light, checked, then switched to dark in place (as the
     system's setting switches a reader's open page; the theme follows it) and checked again.
@@ -129,6 +113,7 @@ async def _sweep_viewport(browser, base: str, pages: list[str], viewport: str, r
     context.set_default_timeout(SWEEP_TIMEOUT_MS)
     # Offline: anything not on the site's own host is blocked (and reported as foreign).
     await context.route(re.compile(r"^(?!http://127\.0\.0\.1:)"), lambda route: route.abort("internetdisconnected"))
+    await context.add_init_script(LAYOUT_SHIFTS)  # each load's shift counts: the page's worst is judged
     # no bytes counted here: the weighing counts a first visit's, in a fresh context
     visitor = PageVisitor(await context.new_page(), measure=False)
     page = visitor.page
@@ -139,6 +124,7 @@ async def _sweep_viewport(browser, base: str, pages: list[str], viewport: str, r
         # not scrolled: the weighing's first visit scrolls, loads every figure and reports
         # what failed (axe and the facts read the page's elements, loaded or not)
         load = await visitor.visit(f"{base}/{path}")
+        report.shifted(await page.evaluate("window.__loadShift"), viewport)
         # Judge the styles' end state (colours, focus rings), not a frame of a transition.
         await page.add_style_tag(content=NO_TRANSITIONS)
         if first:
@@ -163,44 +149,6 @@ async def _sweep_viewport(browser, base: str, pages: list[str], viewport: str, r
     await context.close()
 
 
-# Sums the page's layout shifts until the first scroll (the visit scrolls to the bottom to
-# load every figure; Lighthouse, whose CLS this is, does not scroll).
-LAYOUT_SHIFTS = """
-window.__loadShift = 0;
-addEventListener('scroll', () => { window.__scrolled = true; }, {once: true});
-new PerformanceObserver((list) => {
-  for (const shift of list.getEntries())
-    if (!shift.hadRecentInput && !window.__scrolled) window.__loadShift += shift.value;
-}).observe({type: 'layout-shift', buffered: true});
-"""
-
-
-async def _weigh(browser, base: str, pages: list[str], reports) -> None:
-    """Each page's first visit: a fresh context (nothing cached from another page), service
-    workers blocked, as `make bench` weighs it. Its layout shift while it loads, too, and what
-    failed or was sent off the site (scrolled: the lazy figures load too)."""
-    for path in pages:
-        # A page that shifts is loaded once more: on a busy machine a late script can move the
-        # header once; a shift the page itself makes comes back (the lesser of the two counts).
-        for _ in range(2):
-            context = await browser.new_context(viewport=VIEWPORTS["mobile"], service_workers="block")
-            context.set_default_timeout(SWEEP_TIMEOUT_MS)
-            await context.route(re.compile(r"^(?!http://127\.0\.0\.1:)"), lambda route: route.abort())
-            await context.add_init_script(LAYOUT_SHIFTS)
-            visitor = PageVisitor(await context.new_page())
-            load = await visitor.visit(f"{base}/{path}", scroll=True)
-            shift = await visitor.page.evaluate("window.__loadShift")
-            await context.close()
-            if not reports[path].total_bytes:  # the first visit: scrolled, so every figure loaded
-                reports[path].failed += [f"first visit: {failure}" for failure in load.failed]
-                reports[path].console += [f"first visit: {message}" for message in load.console_errors]
-                reports[path].foreign += [f"first visit: {url}" for url in load.foreign]
-            if not reports[path].total_bytes or shift < reports[path].layout_shift:
-                reports[path].total_bytes, reports[path].layout_shift = load.total_bytes, shift
-            if shift <= LAYOUT_SHIFT_MAXIMUM:
-                break
-
-
 async def _sweep(site: Path) -> dict[str, PageReport]:
     pages = site_pages(site)
     reports = {path: PageReport(path) for path in pages}
@@ -209,19 +157,8 @@ async def _sweep(site: Path) -> dict[str, PageReport]:
             # The two widths and the weighing run side by side (the weighing mostly waits for
             # the network to be idle).
             await asyncio.gather(*(_sweep_viewport(browser, base, pages, v, reports) for v in VIEWPORTS),
-                                 _weigh(browser, base, pages, reports))
+                                 weigh(browser, base, pages, reports))
     return reports
-
-
-def weights_file(site: Path) -> Path:
-    """Where the sweep leaves each page's first-visit bytes, for test_lighthouse.py (which runs
-    later, alone, and need not weigh the pages again): beside the site, in _build."""
-    return site.parent / "page-weights.json"
-
-
-def site_version(site: Path) -> str:
-    """The build's fingerprint: its service worker names a cache for the digest of every file."""
-    return hashlib.sha256((site / "sw.js").read_bytes()).hexdigest()
 
 
 @pytest.fixture(scope="session")
@@ -367,7 +304,7 @@ def test_nothing_shifts_while_a_page_loads(sweep):
     the first paint, shifting the page by 0.21 and costing it 10 points of performance."""
     _fail_pages(
         f"steady (layout shift while loading at most {LAYOUT_SHIFT_MAXIMUM})",
-        {p: f"shift {r.layout_shift:.3f}" for p, r in sweep.items() if r.layout_shift > LAYOUT_SHIFT_MAXIMUM},
+        {p: f"shift {r.layout_shift:.3f} ({r.layout_shift_load} load)" for p, r in sweep.items() if r.layout_shift > LAYOUT_SHIFT_MAXIMUM},
     )
 
 

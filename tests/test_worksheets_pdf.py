@@ -13,6 +13,7 @@ from pathlib import Path
 
 import pytest
 from moodle_format import check_file
+from support.pdf import poppler
 from test_pdf import squash
 
 from physics_figures.notation import format_number
@@ -25,10 +26,6 @@ SHEETS = site_sheets()
 MARK = re.compile(r"\[(\d+)\]")
 
 
-def _poppler(*command: str) -> str:
-    return subprocess.run(command, check=True, capture_output=True, text=True).stdout
-
-
 @pytest.fixture(scope="module")
 def teachers(site_dir) -> Path:
     return site_dir / "teachers"
@@ -36,7 +33,7 @@ def teachers(site_dir) -> Path:
 
 @cache
 def _text(path: Path) -> str:
-    return _poppler("pdftotext", "-enc", "UTF-8", "-layout", str(path), "-")
+    return poppler("pdftotext", "-enc", "UTF-8", "-layout", str(path), "-")
 
 
 def text(folder: Path, name: str) -> str:
@@ -128,7 +125,7 @@ def test_the_cover_and_its_answer_grid_are_one_page(teachers, sheet):
     has_choice = any(p.kind == "mcq" for i in sheet.versions[0].items for p in i.question.parts)
     for version in sheet.versions:
         path = str(teachers / f"{sheet.name}-{version.letter}.pdf")
-        first, second = (_poppler("pdftotext", "-enc", "UTF-8", "-f", n, "-l", n, path, "-") for n in "12")
+        first, second = (poppler("pdftotext", "-enc", "UTF-8", "-f", n, "-l", n, path, "-") for n in "12")
         assert f"Total: {sheet.marks} marks" in first
         assert ("Shade one circle" in first) == has_choice, f"{path}: the answer grid is not on the cover"
         assert "Shade one circle" not in second
@@ -140,11 +137,11 @@ def test_print_quality_a4_embedded_fonts_vector_graphs(teachers, sheet):
     for version in sheet.versions:
         for name in (f"{sheet.name}-{version.letter}.pdf", f"{sheet.name}-key-{version.letter}.pdf"):
             path = teachers / name
-            info = _poppler("pdfinfo", str(path))
+            info = poppler("pdfinfo", str(path))
             assert re.search(r"Page size:\s+595\.\d* x 841\.\d* pts \(A4\)", info), name
-            fonts = _poppler("pdffonts", str(path)).splitlines()[2:]
+            fonts = poppler("pdffonts", str(path)).splitlines()[2:]
             assert fonts and all(row.split()[-5] == "yes" for row in fonts), f"{name}: a font not embedded"
-            images = _poppler("pdfimages", "-list", str(path)).splitlines()[2:]
+            images = poppler("pdfimages", "-list", str(path)).splitlines()[2:]
             assert not images, f"{name}: raster images (graphs must be vectors)"
     log_free = [p for p in (teachers.parent.parent / "teachers-tex").glob(f"{sheet.name}-*/*.log")
                 if re.search(r"Overfull \\hbox \((\d{2,}|[5-9])\.", p.read_text(errors="replace"))]

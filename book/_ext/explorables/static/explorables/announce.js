@@ -105,6 +105,8 @@
       this.moved = false;
       if (text && text !== this.element.textContent) this.speak(text);
       else this.said = readState(this.container); // heard already, in the last announcement
+      // the control is still and its last word said (what a test of the announcements waits for)
+      this.element.dispatchEvent(new CustomEvent("announcer-settled"));
       return;
     }
     if (this.moved) this.say(this.said);

@@ -23,6 +23,7 @@ import io
 import json
 import re
 import shutil
+import statistics
 import sys
 import threading
 import time
@@ -58,11 +59,15 @@ def require_tool(path: Path, fix: str) -> Path:
     return path
 
 
+#: Called before Chromium is looked up: tests/conftest.py adds its check that the running test
+#: is marked `browser` (a browser test must say so, for `make check`); scripts add none.
+BEFORE_CHROMIUM: list = []
+
+
 def chromium_path(*, whole_browser: bool = False) -> str:
     """The headless shell the tests drive, or (`whole_browser`) Chromium itself."""
-    from conftest import require_marker  # a browser test must say so, for `make check`
-
-    require_marker("browser")
+    for check in BEFORE_CHROMIUM:
+        check()
     path = Path(CHROMIUM if whole_browser else CHROMIUM_HEADLESS_SHELL)
     return str(require_tool(path, f"run `scripts/ensure-debian-packages test` (as root), or apt-get install {path.name}"))
 
@@ -438,3 +443,19 @@ def shipped_variants(script: Path) -> list[dict]:
     statement, `(window.QuestionVariants ...)[KEY] = [...];` (its form follows on the next line)."""
     first = script.read_text(encoding="utf-8").split("\n", 1)[0]
     return json.loads(first.split("] = ", 1)[1].rstrip().removesuffix(";").replace("<\\/", "</"))
+
+
+#: Lighthouse's categories as the book judges them, and how many runs a page's score is the
+#: median of (CLARIFICATIONS, House: as Lighthouse CI aggregates its runs).
+LIGHTHOUSE_CATEGORIES = ("performance", "accessibility", "best-practices", "seo")
+LIGHTHOUSE_RUNS = 3
+
+
+def median_scores(runs: list[dict[str, float | None]]) -> dict[str, float]:
+    """Each category's median over a page's Lighthouse runs (a category Lighthouse could not
+    score counts 0): never the best of them, so a page that scores low in one run of three
+    shows it when it does so twice."""
+    if len(runs) != LIGHTHOUSE_RUNS:
+        raise ValueError(f"runs: {len(runs)} Lighthouse runs given; the median is taken over {LIGHTHOUSE_RUNS}")
+    return {category: statistics.median(run.get(category) or 0.0 for run in runs)
+            for category in LIGHTHOUSE_CATEGORIES}

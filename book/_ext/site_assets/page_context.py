@@ -14,6 +14,7 @@ from sphinx.util import logging
 logger = logging.getLogger(__name__)
 
 from .icons import theme_dirs
+from .image_sizes import sized_images
 from .stylesheets import THEME_CSS, bundle_name
 
 
@@ -106,6 +107,7 @@ def add_page_context(app: Sphinx, pagename: str, templatename: str, context: dic
     # that hides the visible text (axe: label-content-name-mismatch). The text is the name.
     if "body" in context:
         context["body"] = context["body"].replace('<summary aria-label="Toggle hidden content">', "<summary>")
+        context["body"] = sized_images(context["body"], getattr(app.builder, "images", {}), Path(app.srcdir))
     if "generate_toctree_html" in context:
         generate = context["generate_toctree_html"]
         context["generate_toctree_html"] = lambda *args, **kwargs: _name_toggles(generate(*args, **kwargs))

@@ -102,10 +102,6 @@ def rich(source: str) -> str:
     return _subscripts(textformat.to_latex(source))
 
 
-def _unit(unit: str) -> str:
-    return tex(unit_text(unit))
-
-
 def _value_with_unit(value: float, sig_figs: int, unit: str) -> str:
     space = "" if unit in ("°", "") else " "  # a ratio ("") has no unit
     return f"{format_number(value, sig_figs)}{space}{unit_text(unit)}"

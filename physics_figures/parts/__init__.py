@@ -17,7 +17,8 @@ What a kind's Python class provides (physics_figures.parts.common.PartKind has t
   dependent A1 needs its M1), ``answered_in_words`` (a define/state template may ask it with one
   wording), ``sketches`` (its options are sketch graphs: the question shows its graph),
   ``mock_paper`` ("1", "2" or "": the mock test's paper that asks templates made of it),
-  ``browser_script`` (the path of its JS twin; kinds may share one), ``page_assets`` (scripts
+  ``browser_script`` (the path of its JS twin; kinds may share one), ``uses_kinds`` (kinds whose
+  twin its own calls: a page asking it loads them too), ``page_assets`` (scripts
   and styles under _static that only the pages asking such a part load), ``drawn_from_graph``
   (its question may print a graph that no part reads a value off: a sketch drawn from it).
 * The part's data for the page, ``answer_text`` (plain text of its answer) and ``marks``-related

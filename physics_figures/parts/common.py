@@ -106,6 +106,8 @@ class PartKind:
     #: Its browser twin (a script that registers itself in QuestionKinds), a path the build
     #: copies and loads; several kinds may share one script.
     browser_script: ClassVar[str] = ""
+    #: Other kinds whose browser twin this kind's calls (a page that asks it loads them too).
+    uses_kinds: ClassVar[tuple[str, ...]] = ()
     #: Scripts and styles (paths under _static) that only the pages asking such a part load,
     #: after its browser_script: a sketch's drawing pad and its CSS.
     page_assets: ClassVar[tuple[str, ...]] = ()

@@ -28,6 +28,7 @@ class ExplainPart(NoValue):
     self_marked: ClassVar[bool] = True
     answered_in_words: ClassVar[bool] = True
     browser_script: ClassVar[str] = str(SCRIPTS / "explain.js")
+    uses_kinds: ClassVar[tuple[str, ...]] = ("text",)  # its points' pre-ticks are the text marker's
 
     def __post_init__(self):
         textformat.parse(self.model_answer)

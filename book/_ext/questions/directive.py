@@ -128,6 +128,7 @@ class QuestionDirective(SphinxDirective):
         store.questions(self.env).setdefault(self.env.docname, []).append({
             "key": data.key, "title": title, "marks": data.marks, "try_first": node["template"]["tryFirst"],
             "graph": data.graph is not None,  # the page loads the enlarged graph view
+            "kinds": sorted({part.kind for part in data.parts}),  # the page loads these kinds' markers
             "assets": sorted({asset for part in data.parts for asset in part.page_assets}),  # its kinds' own
             "answers": [data.label(i) + f"{p.prompt}: {p.answer_text}" for i, p in enumerate(data.parts)],
             "scheme": [child.deepcopy() for child in worked.children],

@@ -162,13 +162,17 @@ def depart_worked_answer(self, node):
     self.body.append("</details>\n")
 
 
-def kind_scripts(app) -> list[str]:
+def kind_scripts(app, kinds: set[str] | None = None) -> list[str]:
     """Each part kind's browser twin (kinds may share one), in KINDS' order, as a path under
     _static: the book's own from static/question-kinds/; a topic's own kind's (registered as
-    its bank loads) copied there."""
+    its bank loads) copied there. Only `kinds`' and those they use, if given (a page's own)."""
     store.topics(app.config)  # a topic's bank registers its own kinds as it loads
+    if kinds is not None:
+        kinds = kinds | {used for name in kinds for used in KINDS[name].uses_kinds}
     out: list[str] = []
     for kind in KINDS.values():
+        if kinds is not None and kind.kind not in kinds:
+            continue
         script = Path(kind.browser_script)
         if script.parent != SCRIPTS and app.builder.format == "html":
             target = Path(app.outdir) / "_static" / "question-kinds" / script.name
@@ -181,13 +185,14 @@ def kind_scripts(app) -> list[str]:
     return out
 
 
-def add_engine_scripts(app) -> None:
+def add_engine_scripts(app, kinds: set[str] | None = None) -> None:
     """What marks and records an answer, for every page that asks questions: the number writer,
-    the answer reader, each part kind's marker, the engine, and the store of attempts."""
+    the answer reader, each part kind's marker (only the page's kinds', if given: a page
+    without a sketch never loads the sketch marker), the engine, and the store of attempts."""
     add_notation_script(app)  # the engine and the page write numbers with it
     app.add_js_file("answer-reading.js", loading_method="defer", priority=440)
     app.add_js_file("question-kinds.js", loading_method="defer", priority=445)  # the kinds' registry
-    for script in kind_scripts(app):  # each part kind's marker, before the engine that finds them
+    for script in kind_scripts(app, kinds):  # each part kind's marker, before the engine that finds them
         app.add_js_file(script, loading_method="defer", priority=450)
     app.add_js_file("marking.js", loading_method="defer", priority=460)
     schedule.add_store_script(app)  # questions.js and the mock test record each attempt in it
@@ -197,7 +202,9 @@ def add_assets(app, pagename, templatename, context, doctree):
     """Only pages that ask a question (or hold the key) load the scripts and styles."""
     if pagename in store.questions(app.env) or pagename in store.docs(app.env, "answer-key"):
         app.add_css_file("questions.css")
-        add_engine_scripts(app)
+        asked = store.questions(app.env).get(pagename)
+        # the key's page and a page that asks nothing of its own (a worked example's) load every kind
+        add_engine_scripts(app, {k for item in asked for k in item["kinds"]} if asked else None)
         app.add_js_file("help-steps.js", loading_method="defer", priority=470)  # before questions.js (500)
         app.add_js_file("question-relabel.js", loading_method="defer")  # New numbers' words, shared
         app.add_js_file("questions.js", loading_method="defer")

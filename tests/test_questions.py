@@ -24,8 +24,8 @@ import yaml
 from conftest import variant_param
 
 from physics_figures import bank, textformat
-from physics_figures.bank import sketches as sketch_bank
 from physics_figures import questions as q
+from physics_figures.bank import sketches as sketch_bank
 from physics_figures.notation import round_number
 from physics_figures.parts.numeric import G_TEN_SLIP
 

@@ -76,15 +76,32 @@ def test_each_posed_part_is_built_from_the_papers_own_numbers(case):
     assert question.part_marks()[part_index] == case["template_marks"], case["id"]
 
 
+def _what_was_typed(typed: dict) -> str:
+    """A numeric part's value, a text part's words (question-kinds/text.js marks those), a sketch's line named."""
+    return typed.get("text") or typed.get("drawn") or typed["value"]
+
+
+def _answer(part, typed: dict) -> dict:
+    """What the page sends: a sketch's line is the template's model or one of its named wrong lines
+    (computed by physics_figures), drawn on the axes; the other kinds as typed."""
+    if "drawn" not in typed:
+        return typed
+    lines = {"the model line": part.model, **{wrong.name: wrong.line for wrong in part.wrong}}
+    return {"line": [list(point) for point in lines[typed["drawn"]]]}
+
+
 def test_the_schemes_answers_and_partial_credit_earn_the_schemes_marks():
-    """One Node run marks every answer of every posed case as the site does."""
+    """One Node run marks every answer of every posed case as the site does: the numeric parts by
+    the engine's rules, the define/state parts by the text kind's marker (question-kinds/text.js),
+    the sketches by the sketch kind's (question-kinds/sketch.js)."""
     runs, expected = [], []
     for case in POSED:
-        data = _question(case).browser_data()
+        question = _question(case)
+        data, part = question.browser_data(), question.parts[question.part_ids.index(case["template_part"])]
         for answer in case["answers"]:
-            runs.append((data, {case["template_part"]: answer["typed"]}))
+            runs.append((data, {case["template_part"]: _answer(part, answer["typed"])}))
             earns = case["template_marks"] if answer["earns"] == "all" else answer["earns"]
-            expected.append((case["id"], answer["typed"]["value"], [earns, case["template_marks"]]))
+            expected.append((case["id"], _what_was_typed(answer["typed"]), [earns, case["template_marks"]]))
     marked = mark_questions(runs)
     got = [(case_id, typed, result["marks"]["byPart"][part])
            for (case_id, typed, _), result, (_, answers) in zip(expected, marked, runs, strict=True)

@@ -301,7 +301,9 @@
   else {
     // every sketch part's pad is ready for the pen from the start
     var ready = function () {
-      Array.prototype.forEach.call(document.querySelectorAll('fieldset.q-part[data-kind="sketch"]'), padOf);
+      Array.prototype.forEach.call(document.querySelectorAll(".q-sketch-pad"), function (pad) {
+        padOf(pad.closest("fieldset.q-part"));
+      });
     };
     if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", ready);
     else ready();

@@ -32,7 +32,9 @@ from physics_figures.parts.graph import reading_places
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
 SHAPES = Path(__file__).with_name("aria_snapshots")
-PAGE = "book/exam/practice-force-momentum.html"  # it asks a question of every kind
+PAGE = "book/exam/practice-force-momentum.html"  # it asks a question of every kind but text
+#: The kinds asked on a page of their own (the define and state questions).
+PAGE_OF = {"text": "book/exam/practice-statements.html"}
 #: One question of each kind on that page, by the template's key.
 KINDS = {
     "numeric": "practice-hose",
@@ -183,7 +185,7 @@ def expected(asked: Asked, feedback: dict[str, str], earned: dict[str, int]) -> 
 def test_a_question_s_tree_names_its_boxes_and_announces_wrong_then_right(browser, base_url, kind):
     context = browser.new_context()
     page = context.new_page()
-    page.goto(f"{base_url}/{PAGE}", wait_until="load")
+    page.goto(f"{base_url}/{PAGE_OF.get(kind, PAGE)}", wait_until="load")
     asked = Asked(page, KINDS[kind])
     form = asked.section.locator("form.q-form")
 

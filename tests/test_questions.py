@@ -26,6 +26,7 @@ from conftest import variant_param
 from physics_figures import bank, textformat
 from physics_figures import questions as q
 from physics_figures.bank import sketches as sketch_bank
+from physics_figures.bank import statements as statement_bank
 from physics_figures.notation import round_number
 from physics_figures.parts.numeric import G_TEN_SLIP
 
@@ -607,6 +608,7 @@ PRACTICE_PAGES = {"newton": "practice-newtons-laws", "drag": "practice-drag",
                   "elastic": "practice-collisions",
                   "two-d": "practice-two-dimensions"}
 SKETCH_PAGE = "practice-sketches"
+STATEMENT_PAGE = "practice-statements"
 PLACED = re.compile(r"```\{question\}[ ]*([^\n]*)\n(.*?)```", re.DOTALL)
 
 
@@ -623,18 +625,21 @@ def test_the_books_question_pages_place_every_question_once_in_book_order():
     exam = next(part for part in toc["parts"] if part["caption"] == "Exam skills")["chapters"]
     practice = next(chapter for chapter in exam if chapter["file"] == "book/exam/practice")
     pages = [section["file"].rpartition("/")[2] for section in practice["sections"]]
-    # the notes' order of the types, then the sketches of every type on a page of their own
-    # (their pad and marker would push a type's page past its first-visit budget)
-    assert pages == [*PRACTICE_PAGES.values(), SKETCH_PAGE]
+    # the notes' order of the types, then the statements and the sketches of every type on a
+    # page each (their markers would push a type's page past its first-visit budget)
+    assert pages == [*PRACTICE_PAGES.values(), STATEMENT_PAGE, SKETCH_PAGE]
     assert _placed("quick-check") == list(bank.QUICK_CHECK)
     assert _placed("practice") == []  # the index only
     asked = _placed("quick-check") + [key for page in pages for key in _placed(page)]
     assert sorted(asked) == sorted(question.key for question in ALL)  # each once, none left out
     assert len(set(asked)) == len(asked)
     sketches = [t.key for t in sketch_bank.TEMPLATES]
+    stated = [t.key for t in statement_bank.TEMPLATES]
     assert _placed(SKETCH_PAGE) == sketches
+    assert _placed(STATEMENT_PAGE) == stated
     for kind, page in PRACTICE_PAGES.items():  # in book order
-        assert _placed(page) == [t.key for t in bank.by_type(kind) if t.key not in {*bank.QUICK_CHECK, *sketches}]
+        assert _placed(page) == [t.key for t in bank.by_type(kind)
+                                 if t.key not in {*bank.QUICK_CHECK, *sketches, *stated}]
     index = (ROOT / "book" / "exam" / "practice.md").read_text()
     for kind in bank.TOPIC.type_keys:
         if kind in PRACTICE_PAGES:

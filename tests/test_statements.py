@@ -138,11 +138,14 @@ def test_one_wording_or_a_situation_per_variant_whose_answer_changes(template):
     assert len({q.parts[0].model_answer for q in questions}) == len(questions)
 
 
-def test_the_practice_pages_place_each_statement_at_the_end_of_its_types_page():
-    for question_type, page in PAGES.items():
-        placed = re.findall(r"```\{question\} ([a-z0-9-]+)", (ROOT / "book" / "exam" / f"{page}.md").read_text())
-        mine = [t.key for t in STATEMENTS if t.type == question_type]
-        assert placed[-len(mine):] == mine, page
+def test_the_statements_page_places_every_statement_in_the_banks_order():
+    """Every define and state question on one page (their marker loads there only; a type's
+    page stays light), none on its type's page."""
+    placed = re.findall(r"```\{question\} ([a-z0-9-]+)", (ROOT / "book" / "exam" / "practice-statements.md").read_text())
+    assert placed == [t.key for t in STATEMENTS]
+    for page in PAGES.values():
+        on_page = re.findall(r"```\{question\} ([a-z0-9-]+)", (ROOT / "book" / "exam" / f"{page}.md").read_text())
+        assert not set(on_page) & set(placed), page
 
 
 # ---------------------------------------------------------------- the one-variant rule

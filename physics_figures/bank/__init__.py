@@ -81,8 +81,11 @@ QUICK_CHECK = tuple(f"quick-check-{number}" for number in range(1, 6))
 
 def all_questions() -> tuple[Question, ...]:
     """Every question of the quick check and the practice pages, with the printed numbers
-    (variant 0), in book order: the quick check's five, then the practice pages, one a type
-    in the notes' order (tests/test_questions.py checks the pages place them so)."""
-    # type by type: a statement (bank.statements) is asked on its type's page, after the others
-    practice = [t for t in TOPIC.practice_templates() if t.key not in QUICK_CHECK]
-    return tuple(t.variant(0) for t in [TEMPLATES[key] for key in QUICK_CHECK] + practice)
+    (variant 0), in book order: the quick check's five, then each type's practice page in the
+    notes' order, then the statements' page and the sketches' page (_toc.yml's order;
+    tests/test_questions.py checks the pages place them so)."""
+    # statements and sketches are asked on pages of their own, after every type's page
+    apart = [*statements.TEMPLATES, *sketches.TEMPLATES]
+    left_out = {*QUICK_CHECK, *(t.key for t in apart)}
+    practice = [t for t in TOPIC.practice_templates() if t.key not in left_out]
+    return tuple(t.variant(0) for t in [TEMPLATES[key] for key in QUICK_CHECK] + practice + apart)

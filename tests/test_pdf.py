@@ -240,19 +240,24 @@ def test_book_and_answer_key_give_each_answer_with_its_unit(question):
 
 @pytest.mark.parametrize("question", all_questions(), ids=lambda q: q.key)
 def test_question_sheet_asks_each_question_with_space_to_answer(question):
+    """Each part's answer space, as the part says it prints it (its kind's hooks, no kind's name)."""
     sheet = squashed(SHEET)
     for part in question.parts:
-        if part.kind == "mcq" and part.sketches:  # four drawings (TikZ) under A to D, then the box
+        if part.has_value:  # the prompt, then "=" and the line for the number
+            assert squash(part.prompt) + "=" in sheet, f"{question.key}: no answer line for {part.prompt}"
+        elif part.sketches:  # four drawings (TikZ) under A to D, then the box
             start = sheet.index(squash(part.prompt))
             assert sheet.index("Answer(A,B,CorD):", start) > start, question.key
-        elif part.kind == "mcq":  # the options, then a box for the letter
+        elif part.answer_grid:  # the options, then a box for the letter
             options = "".join(f"{letter}." + squash(textformat.to_plain(option.text))
                               for letter, option in zip("ABCD", part.options, strict=True))
             assert squash(part.prompt) + options + "Answer(A,B,CorD):" in sheet, question.key
-        elif part.kind in ("explain", "text"):  # the prompt, then lines to write on
+        elif part.answered_in_words:  # the prompt, then lines to write on
             assert squash(part.prompt) + "." * 70 in sheet, question.key
-        else:
-            assert squash(part.prompt) + "=" in sheet, f"{question.key}: no answer line for {part.prompt}"
+        else:  # a sketch: the prompt, then blank axes (their tick numbers, then the time axis's label)
+            start = sheet.index(squash(part.prompt)) + len(squash(part.prompt))
+            assert squash("t / s") in sheet[start:start + 200], f"{question.key}: no axes for {part.prompt}"
+            assert "=" not in sheet[start:start + 3], question.key
 
 
 @pytest.mark.parametrize("question", [q for q in all_questions() if q.graph], ids=lambda q: q.key)
@@ -262,8 +267,8 @@ def test_question_sheet_draws_the_graph_a_question_reads_from(question):
     its question and options)."""
     sheet = squashed(SHEET)
     start = sheet.index(squash(textformat.to_plain(question.text))[:60])
-    chooses = question.parts[0].kind == "mcq"
-    first_line = sheet.index(squash(question.parts[0].prompt) + ("" if chooses else "="), start)
+    first = question.parts[0]  # a number's prompt ends in its answer line's "="
+    first_line = sheet.index(squash(first.prompt) + ("=" if first.has_value else ""), start)
     drawn = sheet[start:first_line]
     assert squash(f"{question.graph.quantity} / {question.graph.unit}") in drawn, question.key
     assert squash("time / s") in drawn, question.key

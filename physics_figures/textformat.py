@@ -115,6 +115,8 @@ def to_latex(source: str) -> str:
     return "\n\n".join(out)
 
 
-def to_plain(source: str) -> str:
-    """The words alone (for search, names and tests)."""
-    return "\n\n".join("".join(span.text for span in spans) for spans in parse(source))
+def to_plain(source: str, *, joined: bool = False) -> str:
+    """The words alone (for search, names and tests). joined: numbers tied to their units by
+    no-break spaces, as to_html does, for words a page shows as text."""
+    return "\n\n".join("".join(span.text for span in (_joined(spans) if joined else spans))
+                       for spans in parse(source))

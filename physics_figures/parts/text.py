@@ -85,7 +85,8 @@ class TextPoint:
         textformat.parse(self.text)
 
     def data(self, needs: int | None) -> dict:
-        return {"text": textformat.to_plain(self.text), "code": self.code, "needs": needs,
+        # the page shows the point's words (text.py form_html, text.js): a value keeps its unit
+        return {"text": textformat.to_plain(self.text, joined=True), "code": self.code, "needs": needs,
                 "accept": list(self.accept), "source": self.source,
                 "reject": [{"wording": n.wording, "why": n.why, "source": n.source, "contradicts": n.contradicts}
                            for n in self.reject]}

@@ -8,7 +8,8 @@ import re
 import struct
 from pathlib import Path
 
-_IMG = re.compile(r'<img\b(?![^>]*\swidth=)([^>]*?)\ssrc="([^"]*_images/([^"/]+))"')
+# the whole tag: the size goes at its end, after the attributes Sphinx writes (alt, class, src)
+_IMG = re.compile(r'<img\b(?![^>]*\swidth=)([^>]*?\ssrc="[^"]*_images/([^"/]+)"[^>]*?)(\s*/?>)')
 _SVG_SIZE = re.compile(r'<svg\b[^>]*?\swidth="([\d.]+)(pt|px)?"[^>]*?\sheight="([\d.]+)(pt|px)?"', re.DOTALL)
 _PX_PER = {"pt": 4 / 3, "px": 1.0, None: 1.0}  # CSS: 1pt = 4/3 px
 
@@ -33,10 +34,10 @@ def sized_images(body: str, images: dict[str, str], srcdir: Path) -> str:
     sources = {name: source for source, name in images.items()}
 
     def size(match: re.Match) -> str:
-        source = sources.get(match[3])
+        source = sources.get(match[2])
         found = source and intrinsic_size(srcdir / source)
         if not found:
             return match[0]
-        return f'<img width="{found[0]}" height="{found[1]}"{match[1]} src="{match[2]}"'
+        return f'<img{match[1]} width="{found[0]}" height="{found[1]}"{match[3]}'
 
     return _IMG.sub(size, body)

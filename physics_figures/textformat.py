@@ -95,9 +95,16 @@ _LATEX_TAG = {"sup": r"\textsuperscript{%s}", "sub": r"\textsubscript{%s}", "em"
               "strong": r"\textbf{%s}"}
 
 
+#: A slash inside a word ("9702/22/M/J/21", "kg/m"): a line may break after it, so a paper's
+#: code at a line's end does not run into the margin.
+_SLASH_IN_WORD = re.compile(r"(?<=\S)/(?=\S)")
+
+
 def latex_escape(text: str) -> str:
-    """Plain text for LaTeX: its special characters escaped, no-break spaces as ties."""
-    return "".join(_LATEX_SPECIAL.get(char, char) for char in text)
+    """Plain text for LaTeX: its special characters escaped, no-break spaces as ties, and a
+    break allowed after a slash inside a word."""
+    escaped = "".join(_LATEX_SPECIAL.get(char, char) for char in text)
+    return _SLASH_IN_WORD.sub(r"/\\allowbreak{}", escaped)
 
 
 def to_latex(source: str) -> str:

@@ -36,8 +36,9 @@ from ..variants import Draw, Template
 from ._common import PER_S
 
 #: Sketch templates vary their numbers (the axes and the levels move); they count as
-#: situations (variants.MIN_SITUATIONS), split between the site and the teachers' reserve.
-_VARIANTS = 8
+#: situations (variants.MIN_SITUATIONS), split between the site and the teachers' reserve:
+#: 10 and 10, as the choice templates, so the Moodle file has MOODLE_MIN_VARIANTS unseen ones.
+_VARIANTS = 20
 
 
 def nice_axis(high: float, most: int = 10) -> tuple[float, float]:

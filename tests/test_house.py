@@ -22,9 +22,16 @@ def _imported(source: Path) -> set[str]:
             found |= {alias.name.split(".")[0] for alias in node.names}
         elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
             found.add(node.module.split(".")[0])
-        elif isinstance(node, ast.Constant) and node.value == "tests":
-            found.add("tests")  # ROOT / "tests" (onto sys.path)
+        elif _puts_on_path(node) and any(isinstance(inner, ast.Constant) and inner.value == "tests"
+                                         for arg in node.args for inner in ast.walk(arg)):
+            found.add("tests")  # sys.path.insert(0, str(ROOT / "tests")); a data file's path is no import
     return found
+
+
+def _puts_on_path(node: ast.AST) -> bool:
+    """node is a call of sys.path.insert or sys.path.append."""
+    return (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+            and node.func.attr in ("insert", "append") and ast.unparse(node.func.value) == "sys.path")
 
 
 def test_no_script_imports_a_test():

@@ -66,12 +66,36 @@ def test_the_import_graph_has_no_circle():
     list(graphlib.TopologicalSorter(graph).static_order())  # CycleError names the circle
 
 
+def _folder(module: str) -> str:
+    """The folder a module lives in, as a node of the graph between folders: a sub-package of
+    physics_figures (physics_figures.figures.drag -> physics_figures.figures), a module at its
+    top (physics_figures.questions stays itself: its folder holds every layer), an extension
+    (questions.form -> questions)."""
+    names = module.split(".")
+    return ".".join(names[:2]) if names[0] == "physics_figures" else names[0]
+
+
+def test_no_circle_runs_between_folders():
+    """No circle between folders either (issue 39): figures/ -> questions.py -> parts/ -> figures/
+    was one, though no two files imported each other. Each folder is one node, with an arrow
+    wherever one of its modules imports another folder's module."""
+    folders: dict[str, set[str]] = {}
+    for name, imports in import_graph().items():
+        folders.setdefault(_folder(name), set()).update(_folder(i) for i in imports if _folder(i) != _folder(name))
+    assert {"physics_figures.figures", "physics_figures.parts", "physics_figures.questions"} <= set(folders)
+    list(graphlib.TopologicalSorter(folders).static_order())  # CycleError names the circle
+
+
 #: Arrows run one way: models -> figures and questions -> the site. Each layer may not import these.
 NEVER = {
     "physics_figures.models": ("physics_figures.figures", "physics_figures.bank", "physics_figures.parts",
                                "physics_figures.questions", "physics_figures.worksheets", "matplotlib"),
-    # a figure may draw a question's graph from its data (questions.Graph), never from the bank
-    "physics_figures.figures": ("physics_figures.bank", "physics_figures.topics", "physics_figures.worksheets"),
+    # a figure draws a question's graph and diagram from their data (physics_figures.pictures),
+    # never from the part kinds or the questions that use them (issue 39: that ran in a circle)
+    "physics_figures.figures": ("physics_figures.bank", "physics_figures.topics", "physics_figures.worksheets",
+                                "physics_figures.parts", "physics_figures.questions"),
+    "physics_figures.pictures": ("physics_figures.figures", "physics_figures.parts", "physics_figures.questions",
+                                 "physics_figures.bank", "matplotlib"),
     "physics_figures.parts": ("physics_figures.bank", "physics_figures.worksheets", "physics_figures.topics"),
     "physics_figures.marking": ("physics_figures.bank", "physics_figures.parts", "physics_figures.questions"),
     "physics_figures.topics": ("physics_figures.bank", "physics_figures.worksheets"),

@@ -13,7 +13,7 @@ import math
 import pytest
 
 from physics_figures.figures.question_graph import cursor_data, question_graph, small_square
-from physics_figures.parts.graph import Graph
+from physics_figures.pictures import Graph
 from physics_figures.topics import load
 
 

@@ -29,8 +29,9 @@ from ..models import (
     weight,
 )
 from ..notation import format_number as n
-from ..parts.graph import Graph, value_axis
+from ..parts.graph import value_axis
 from ..parts.sketch import Feature, SketchAxes, SketchPart, SketchPoint, WrongSketch
+from ..pictures import Graph
 from ..questions import Given, Mark, Question
 from ..variants import Draw, Template
 from ._common import PER_S

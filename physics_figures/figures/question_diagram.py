@@ -1,6 +1,6 @@
 """The diagram a question prints (issue 37): its bodies before and after, each with its mass and
 its velocities as arrows labelled as the text states them, drawn from one variant's
-:class:`physics_figures.questions.Diagram`. The arrows are vectors.py's; the bodies are the
+:class:`physics_figures.pictures.Diagram`. The arrows are vectors.py's; the bodies are the
 collision diagram's (collisions.py) outlined shapes, round in a plane. Nothing is computed
 here: every number is the question's, as the bank wrote it."""
 
@@ -12,7 +12,7 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Arc, Circle, Rectangle
 
 from ..notation import format_number
-from ..questions import Body, Diagram
+from ..pictures import Body, Diagram
 from ._text import plain
 from .book_figure import BookFigure
 from .style import GUIDE, INK, MAIN, PAPER, SECOND, SMALL_TEXT, book_style, styled

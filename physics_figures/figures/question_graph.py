@@ -1,6 +1,6 @@
 # ruff: noqa: RUF002  (typeset text: en dashes in graph names)
 """The graph a question prints (a momentum–time, force–time or velocity–time graph), drawn
-from one variant's :class:`physics_figures.questions.Graph`: straight lines through its
+from one variant's :class:`physics_figures.pictures.Graph`: straight lines through its
 points on a grid of small squares, as an exam paper prints a graph to read from. The
 numbers are the question's; nothing is computed here.
 """
@@ -24,7 +24,7 @@ from matplotlib.textpath import text_to_path
 from matplotlib.ticker import FixedLocator, FuncFormatter
 
 from ..notation import LARGEST_PLAIN, axis_power, format_number, power_text, round_number
-from ..questions import Graph
+from ..pictures import Graph
 from ..style import colour
 from ._text import plain
 from .book_figure import BookFigure

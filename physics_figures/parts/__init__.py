@@ -49,11 +49,11 @@ What a kind's Python class provides (physics_figures.parts.common.PartKind has t
 
 from __future__ import annotations
 
+from ..pictures import Arrow, Body, Diagram, Graph  # what a question prints: data the figures draw
 from .choice import OPTION_LETTERS, ChoicePart, Option, Sketch, choices_in_order
 from .common import PartKind
-from .diagram import Arrow, Body, Diagram
 from .explain import ExplainPart
-from .graph import Graph, GraphPart, format_reading, reading_places
+from .graph import GraphPart, format_reading, reading_places
 from .numeric import Alternative, Ecf, Mistake, Part, Reading, Step
 from .sketch import Feature, SketchAxes, SketchPart, SketchPoint, SketchTolerance, WrongSketch
 from .text import Note, TextPart, TextPoint

@@ -11,6 +11,7 @@ from typing import ClassVar
 
 from .. import marking
 from ..notation import format_number, join_units
+from ..refusals import require
 
 #: How a part treats direction: a size only, a signed value along a stated positive
 #: direction, or a size plus a direction chosen from a list.
@@ -32,6 +33,10 @@ G_TEN, G_NINE_EIGHT = 10.0, 9.8
 _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
+#: How a part kind refuses an impossible value (physics_figures.refusals, which the data a
+#: question prints share: physics_figures.pictures).
+_require = require
+
 #: A question's parts are (a), (b), ...; an ecf formula names earlier answers by these ids.
 PART_IDS = tuple("abcdefghij")
 
@@ -44,11 +49,6 @@ def number(value: float, sig_figs: int) -> str:
 def unit_text(unit: str) -> str:
     """A unit for plain text: "m s^-1" -> "m s⁻¹"."""
     return re.sub(r"\^(-?\d+)", lambda m: m.group(1).translate(_SUPERSCRIPT), unit)
-
-
-def _require(ok: bool, name: str, value, rule: str) -> None:
-    if not ok:
-        raise ValueError(f"{name} {rule} (got {name}={value!r})")
 
 
 #: Where the product kinds' browser twins live (the questions extension's static folder).

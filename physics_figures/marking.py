@@ -1,3 +1,5 @@
+# ruff: noqa: RUF001, RUF003  (a number as students type it: the times sign)
+
 """How marks are earned: the rule table (``marking_rules.json``), read once.
 
 A part's marks are its mark lines. Each line plays a role: "method" (C1, M1: a step of the
@@ -12,8 +14,13 @@ browser (which gets its ``outcomes`` from the build) read the same rules: the en
 from __future__ import annotations
 
 import json
+import math
+import re
+from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
+
+from .notation import format_number, plain_number
 
 RULES_FILE = Path(__file__).with_name("marking_rules.json")
 #: The roles a mark line can play, in the order feedback names them.
@@ -46,10 +53,14 @@ def outcome_slips() -> dict[str, str]:
 
 
 def sig_figs() -> dict:
-    """{"min": figures the A1 needs, "check": figures the key is trusted to, "feedback" and
-    "feedback_padded": what a too-few-figures answer reads (too_few_sf_feedback)}."""
+    """The s.f. rule, as the browser's engine gets it: {"min": figures the A1 needs, "check":
+    figures the key is trusted to, "fewest": the fewest figures a too-few answer is judged at,
+    "whole_number_zeros": how a whole number's trailing zeros count, "part_way": the figures
+    that rounding part-way rounds to, "feedback" and "feedback_padded": what a too-few-figures
+    answer reads (too_few_sf_feedback)}."""
     table = rules()["sig_figs"]
-    return {key: table[key] for key in ("min", "check", "feedback", "feedback_padded")}
+    return {key: table[key] for key in ("min", "check", "fewest", "whole_number_zeros", "part_way",
+                                        "feedback", "feedback_padded")}
 
 
 def too_few_sf_feedback(few: int, *, min_sf: int | None = None, check_sf: int | None = None,
@@ -61,8 +72,8 @@ def too_few_sf_feedback(few: int, *, min_sf: int | None = None, check_sf: int | 
     table = sig_figs()
     min_sf = table["min"] if min_sf is None else min_sf
     check_sf = table["check"] if check_sf is None else check_sf
-    if not 1 <= few < min_sf:
-        raise ValueError(f"few must be at least 1 and fewer than min_sf={min_sf} (got few={few!r})")
+    if not table["fewest"] <= few < min_sf:
+        raise ValueError(f"few must be at least {table['fewest']} and fewer than min_sf={min_sf} (got few={few!r})")
     text = table["feedback_padded" if padded else "feedback"]
     return text.format(few=few, min=min_sf, work=max(check_sf, min_sf + 1))
 
@@ -109,3 +120,138 @@ def lines_kept(lines: list[tuple[str, tuple[str, ...]]], lost) -> int:
     a line is kept unless it plays a lost role (the table's one reading, for what cannot run
     the browser's engine: the sheets and Moodle)."""
     return sum(1 for _, roles in lines if not set(roles) & set(lost))
+
+
+# ------------------------------------------------------------------ the s.f. judge
+
+#: A number as students write it (the browser's reader, answer-reading.js, reads the same):
+#: 4.5, -.25, 1.5e3, 1.5 x 10^3, 1.5 × 10^(3), 4.5×10 (10 to the 1).
+_NUMBER = re.compile(r"^([+-]?)([0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE]([+-]?[0-9]+)|\s*[x×X*·]\s*10"
+                     r"(?:\s*\^\s*(?:\(\s*([+-]?[0-9]+)\s*\)|([+-]?[0-9]+)))?)?$")
+_POWER_ONLY = re.compile(r"^([+-]?)10\s*\^\s*\(?\s*([+-]?[0-9]+)\s*\)?$")
+_SUPERSCRIPT_DIGITS = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺", "0123456789-+")
+
+
+@dataclass(frozen=True)
+class Written:
+    """A number as written: its value, the significant figures it may have (sf_min to sf_max:
+    a whole number's trailing zeros may or may not count) and lead, the power of ten of its
+    first significant figure (its last figure is at lead - sf + 1)."""
+
+    value: float
+    sf_min: int
+    sf_max: int
+    lead: int
+
+
+def read_written(written: str) -> Written:
+    """The number a student wrote, with its figures counted as the rule table says (leading
+    zeros never, zeros after a point always, a whole number's trailing zeros as its
+    "whole_number_zeros"). ValueError for what is no number (1,500; 10-3; a word)."""
+    text = re.sub(r"[\u2212\u2012\u2013\u2014]", "-", str(written))
+    text = re.sub(r"[⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺]+", lambda run: "^" + run[0].translate(_SUPERSCRIPT_DIGITS), text)
+    text = re.sub(r"^([+-])\s+(?=[0-9.])", r"\1", text.replace("**", "^").strip())
+    if "," in text or re.search(r"(^|[x×X*·\s])10\s*-\s*[0-9]+$", text):
+        raise ValueError(f"written must be a number with a decimal point and a power as 10^-3 or e-3 "
+                         f"(got written={written!r})")
+    if match := _NUMBER.match(text):
+        sign, mantissa = match[1], match[2]
+        powers = [int(p) for p in match.groups()[2:] if p is not None]
+        exponent = powers[0] if powers else int(bool(re.search("[x×X*·]", text[len(sign) + len(mantissa):])))
+    elif match := _POWER_ONLY.match(text):
+        sign, mantissa, exponent = match[1], "1", int(match[2])
+    else:
+        raise ValueError(f"written must be a number such as 7.5, -0.25, 1.5e3 or 1.5 × 10^3 (got written={written!r})")
+    whole, _, fraction = mantissa.partition(".")
+    digits = (whole + fraction).lstrip("0")
+    value = float(f"{sign}{mantissa}e{exponent}")
+    if not digits:  # zero: only the decimal places written say anything
+        figures = max(1, len(fraction))
+        return Written(value, figures, figures, -len(fraction) + figures - 1 + exponent)
+    sf_max = len(digits)
+    sf_min = sf_max if "." in mantissa or _whole_number_zeros_count() else max(1, len(digits.rstrip("0")))
+    leading = len(whole.lstrip("0")) - 1 if whole.lstrip("0") else -(len(fraction) - len(fraction.lstrip("0")) + 1)
+    return Written(value, sf_min, sf_max, leading + exponent)
+
+
+def _whole_number_zeros_count() -> bool:
+    """Whether a whole number's trailing zeros are significant (the rule table's
+    "whole_number_zeros": "significant"), rather than ambiguous ("ambiguous": 4500 has 2 to 4)."""
+    rule = sig_figs()["whole_number_zeros"]
+    if rule not in ("ambiguous", "significant"):
+        raise ValueError(f"whole_number_zeros must be 'ambiguous' or 'significant' (got whole_number_zeros={rule!r})")
+    return rule == "significant"
+
+
+@dataclass(frozen=True)
+class SigFigJudgement:
+    """What the judge makes of a written value against a key: ``code`` the rule table's outcome
+    ("correct": the key to min or more figures; "too-few-sf": the key to fewer, however many
+    zeros follow it; "wrong"), and for "too-few-sf" the figures its feedback names (``few``) and
+    whether zeros written after it make it look like more (``padded``: 60. or 6.0e1 for 64);
+    min_sf and check_sf: the figures it was judged with."""
+
+    code: str
+    min_sf: int
+    check_sf: int
+    few: int | None = None
+    padded: bool = False
+
+    @property
+    def feedback(self) -> str:
+        """The rule table's feedback on a too-few answer ("" for the others)."""
+        if self.code != "too-few-sf":
+            return ""
+        return too_few_sf_feedback(self.few, min_sf=self.min_sf, check_sf=self.check_sf, padded=self.padded)
+
+
+def _steps(x: float, place: int) -> list[int]:
+    """Whole numbers of steps of 10^place nearest x; both neighbours on a tie."""
+    q = x / 10.0**place
+    n = math.floor(q)
+    if abs(q - n - 0.5) < 1e-7:
+        return [n, n + 1]
+    return [n if q - n < 0.5 else n + 1]
+
+
+def _rounds_to(value: float, key: float, figures: int) -> bool:
+    """Whether value is the key rounded to ``figures`` s.f. (60 for 56.0 at 1 s.f.; not 10 for 7.5)."""
+    place = math.floor(math.log10(abs(key)) + 1e-12) - figures + 1
+    scaled = value / 10.0**place
+    return (any(abs(abs(scaled) - n) < 1e-7 * max(1, n) for n in _steps(abs(key), place))
+            and (value < 0) == (key < 0))
+
+
+def judge_sig_figs(written: str, key: float, *, min_sf: int | None = None,
+                   check_sf: int | None = None) -> SigFigJudgement:
+    """The one judge of a written answer's significant figures against a (signed) key, as the
+    browser's numeric kind marks it (question-kinds/numeric.js, compare; the shared case table
+    tests/fixtures/sig_fig_cases.json runs through both). The answer is compared with the key
+    at its own last figure, at each count of figures it may have, but never finer than the
+    key's check_sf-th figure (the key is trusted that far); right at min_sf or more figures is
+    "correct", the key rounded to fewer (from the table's "fewest") is "too-few-sf". min_sf and
+    check_sf are the rule table's unless a part says otherwise."""
+    table = sig_figs()
+    min_sf = table["min"] if min_sf is None else min_sf
+    check_sf = table["check"] if check_sf is None else check_sf
+    if not 1 <= min_sf <= check_sf:
+        raise ValueError(f"min_sf must be between 1 and check_sf={check_sf} (got min_sf={min_sf!r})")
+    number = read_written(written)
+    if key == 0:  # zero has no significant figures
+        return SigFigJudgement("correct" if number.value == 0 else "wrong", min_sf, check_sf)
+    check_place = math.floor(math.log10(abs(key)) + 1e-12) - check_sf + 1
+    for figures in range(max(number.sf_min, min_sf), number.sf_max + 1):
+        place = max(number.lead - figures + 1, check_place)
+        if any(a == b for a in _steps(number.value, place) for b in _steps(key, place)):
+            return SigFigJudgement("correct", min_sf, check_sf)
+    few = max((f for f in range(table["fewest"], min_sf) if _rounds_to(number.value, key, f)), default=None)
+    if few is None:
+        return SigFigJudgement("wrong", min_sf, check_sf)
+    few = min(number.sf_max, few)
+    return SigFigJudgement("too-few-sf", min_sf, check_sf, few, number.sf_max > few)
+
+
+def written(value: float, figures: int) -> str:
+    """``value`` as a student types it to ``figures`` s.f. ("4.4e-3", "-30000"): what the
+    judge reads, for the code that asks how a value written so would be marked."""
+    return plain_number(format_number(value, figures))

@@ -21,7 +21,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
 
-from . import parts
+from . import marking, parts
 from .notation import round_number
 from .parts.numeric import G_TEN_SLIP
 from .questions import Question
@@ -74,7 +74,11 @@ class Draw:
                      for i in range(count + 1))
 
 
-def accepted_band(key: float, sig_figs: int = 2) -> tuple[float, float]:
+#: The s.f. rule (marking_rules.json): the figures the A1 needs, and those the key is trusted to.
+FIGURES = marking.sig_figs()
+
+
+def accepted_band(key: float, sig_figs: int = FIGURES["min"]) -> tuple[float, float]:
     """The values a marker takes as the key at ``sig_figs`` s.f.: those that round to it."""
     rounded = float(round_number(key, sig_figs))
     if rounded == 0:
@@ -98,9 +102,9 @@ def confusable_mistakes(question: Question) -> list[str]:
             if mistake.name == G_TEN_SLIP and not part.reads_graph and not part._accepted(mistake.value):
                 continue
             same_kind = mistake.unit is None and mistake.direction is None
-            typed = float(round_number(mistake.value, 2)) if mistake.value else 0.0
+            typed = float(round_number(mistake.value, FIGURES["min"])) if mistake.value else 0.0
             if same_kind and (low <= mistake.value <= high
-                              or (not part.reads_graph and part.band_takes(typed, 2))):
+                              or (not part.reads_graph and part.band_takes(typed, FIGURES["min"]))):
                 found.append(f"{part.prompt}: {mistake.name}")
     return found
 
@@ -114,7 +118,7 @@ def rounding_ties(question: Question) -> list[str]:
     for part in question.parts:
         if not part.has_value or part.reads_graph or not part.value:
             continue
-        scaled = abs(part.value) * 10.0 ** (2 - math.floor(math.log10(abs(part.value))))
+        scaled = abs(part.value) * 10.0 ** (FIGURES["check"] - 1 - math.floor(math.log10(abs(part.value))))
         if abs(scaled - math.floor(scaled) - 0.5) > 1e-6:
             continue
         unit = abs(part.value) / scaled  # one unit of the 3rd significant figure
@@ -123,14 +127,14 @@ def rounding_ties(question: Question) -> list[str]:
         named += [("g = 9.8", part.g_nine_eight)] if part.g_nine_eight is not None else []
         named += [(what, value) for value, what in part.rounded_part_way]
         for name, value in named:
-            if value and round(float(round_number(abs(value), 3)), 12) in forms:
+            if value and round(float(round_number(abs(value), FIGURES["check"])), 12) in forms:
                 found.append(f"{part.prompt}: {name} ({value!r}) against the key {part.value!r}")
     return found
 
 
 def _answers(question: Question) -> dict[str, float]:
     """Each number a key gives (a calculated or read part), to the 3 s.f. a key prints."""
-    return {part.prompt: float(round_number(part.value, 3)) for part in question.parts
+    return {part.prompt: float(round_number(part.value, FIGURES["check"])) for part in question.parts
             if part.has_value}
 
 

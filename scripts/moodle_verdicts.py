@@ -25,7 +25,7 @@ import tempfile
 from collections import Counter
 from pathlib import Path
 
-from physics_figures import bank
+from physics_figures import bank, marking
 from physics_figures.notation import format_number, plain_number
 from physics_figures.questions import OPTION_LETTERS, unit_text
 from physics_figures.textformat import to_plain
@@ -40,6 +40,10 @@ CANNOT = {
     "cloze-unit": "a unit inside a Cloze number box (it takes no unit, so no unit is marked there)",
     "trailing-zeros": "trailing zeros (Moodle reads the number, not the figures)",
 }
+
+
+#: The s.f. rule (marking_rules.json): the key is typed at min to one past check figures.
+FIGURES = marking.sig_figs()
 
 
 def typed(value: float, sig_figs: int) -> str:
@@ -67,7 +71,7 @@ def _inputs(question, index: int) -> list[dict]:
         return {"label": label, "answer": answer, "parts": parts, "cannot": cannot}
 
     size = (lambda v: v) if part.direction == "signed" else abs
-    for sig_figs in (2, 3, 4):
+    for sig_figs in range(FIGURES["min"], FIGURES["check"] + 2):  # the key at 2, 3 and 4 s.f.
         rows.append(row(f"key {sig_figs} s.f.", typed(part.value, sig_figs), part.unit))
     for mistake in part.mistakes:
         if mistake.direction is not None:

@@ -8,7 +8,7 @@ import re
 from collections.abc import Callable, Sequence
 
 from ..notation import format_number, round_number
-from ..questions import Mistake, format_reading
+from ..questions import DEFAULT_CHECK_SIG_FIGS, Mistake, format_reading
 
 #: Every usual form of a unit, for the marker's messages.
 N_S = "N s or kg m s^-1"
@@ -42,8 +42,10 @@ def stated_figures(value: float, least: int = 2, most: int = 4) -> int:
     return most
 
 
-def one_of_each(key: float, mistakes: Sequence[Mistake], sig_figs: int = 3, *, signed: bool = False) -> tuple[Mistake, ...]:
-    """The named mistakes that the marker can tell apart: a mistake whose value, to ``sig_figs``,
+def one_of_each(key: float, mistakes: Sequence[Mistake], sig_figs: int = DEFAULT_CHECK_SIG_FIGS, *,
+                signed: bool = False) -> tuple[Mistake, ...]:
+    """The named mistakes that the marker can tell apart: a mistake whose value, to ``sig_figs``
+    (by default the figures the marker tells them apart at, the rule table's check),
     is the key's or an earlier mistake's is dropped. Some givens make two routes meet (a shell at
     rest has no momentum before to forget), and a paper's numbers may be such givens. signed: a
     signed part compares the values with their signs."""

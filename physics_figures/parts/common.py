@@ -25,8 +25,8 @@ MARK_CODES = ("C1", "M1", "A1", "B1", "")
 #: What a part asks for. M1 (with its dependent A1) belongs only to the last three: a plain
 #: calculation earns C1 for its steps and A1 for its answer.
 ASKS = ("calculate", "show that", "explain", "state")
-#: Rounding an intermediate value to these significant figures is "rounding part-way".
-PART_WAY_SIG_FIGS = (2, 3)
+#: Rounding an intermediate value to these significant figures is "rounding part-way" (the rule table's).
+PART_WAY_SIG_FIGS = tuple(marking.sig_figs()["part_way"])
 #: The values of g students use instead of the data's 9.81 m s^-2.
 G_TEN, G_NINE_EIGHT = 10.0, 9.8
 

@@ -149,13 +149,14 @@ class Alternative:
 class Step:
     """One intermediate quantity of a part's working, e.g. the rock's mass before its weight.
 
-    value: SI, unrounded; sig_figs: the precision the working prints it with.
+    value: SI, unrounded; sig_figs: the precision the working prints it with (by default the
+    figures the key is trusted to, the rule table's check).
     """
 
     name: str
     value: float
     unit: str
-    sig_figs: int = 3
+    sig_figs: int = DEFAULT_CHECK_SIG_FIGS
 
     def __post_init__(self):
         object.__setattr__(self, "value", float(self.value))
@@ -264,7 +265,7 @@ class Part(PartKind):
     quantity: str
     _: KW_ONLY
     units: str = ""
-    shown_sig_figs: int = 2
+    shown_sig_figs: int = DEFAULT_MIN_SIG_FIGS  # by default the figures the A1 needs
     min_sig_figs: int = DEFAULT_MIN_SIG_FIGS
     check_sig_figs: int = DEFAULT_CHECK_SIG_FIGS
     direction: str = "none"

@@ -14,7 +14,7 @@ from html import escape
 from typing import ClassVar
 
 from ..notation import format_number
-from .common import SCRIPTS, NoValue, _require, feedback_html, unit_text
+from .common import DEFAULT_CHECK_SIG_FIGS, SCRIPTS, NoValue, _require, feedback_html, unit_text
 
 #: What a feature says of the line: where it starts or ends (zero, positive, negative), that it
 #: rises, falls or is level over a stretch of time (with its gradient constant, increasing or
@@ -30,8 +30,8 @@ _ENDS = {"zero": "is back at zero at the end", "positive": "ends above zero", "n
 
 
 def _s(value: float) -> str:
-    """A time or value as the key prints it (4 s.f. at most, no trailing noise)."""
-    return format_number(value, 3) if value else "0"
+    """A time or value as the key prints it (to the figures the key is trusted to, no trailing noise)."""
+    return format_number(value, DEFAULT_CHECK_SIG_FIGS) if value else "0"
 
 
 @dataclass(frozen=True)

@@ -30,8 +30,8 @@ from . import DATA_LINE, Sheet, Version, part_marks
 #: Working space per mark of a calculation, and ruled lines per mark of an explanation.
 WORKING_CM_PER_MARK = 1.5
 LINES_PER_MARK = 2
-#: The key prints a wrong answer to this many significant figures (as the marker reads it).
-MISTAKE_SIG_FIGS = 3
+#: The key prints a wrong answer to the figures the marker tells it apart at (the rule table's check).
+MISTAKE_SIG_FIGS = marking.sig_figs()["check"]
 
 #: What a key says of its codes (the PDF key's and the sheet builder's), as 9702 mark schemes use
 #: them: a calculation step C1 then the answer A1 (9702/21/O/N/16 Q2(b)(ii): "E = V / d … C1 … A1
@@ -293,9 +293,12 @@ def marks_kept(lines: list[tuple[str, tuple[str, ...]]], lost) -> str:
 
 def _part_way_note(part, value: float) -> str:
     """Why a rounded-part-way value is wrong at 3 s.f. when its 2 s.f. form is the key's own:
-    0.320 claims a third figure that the early rounding made, while 0.32 is 0.324 rounded."""
+    0.320 claims a third figure that the early rounding made, while 0.32 is 0.324 rounded (as
+    the one s.f. judge, marking.judge_sig_figs, takes it)."""
     two = round_number(value, part.min_sig_figs)
-    if two != round_number(part.value, part.min_sig_figs):
+    judged = marking.judge_sig_figs(marking.written(value, part.min_sig_figs), part.value,
+                                    min_sf=part.min_sig_figs, check_sf=part.check_sig_figs)
+    if judged.code != "correct":
         return ""
     key = format_number(abs(part.value), MISTAKE_SIG_FIGS)
     return (f" Written to {part.min_sig_figs} s.f., {format_number(abs(float(two)), part.min_sig_figs)} earns full "
@@ -346,10 +349,11 @@ def wrong_answers(question: Question, index: int) -> list[WrongAnswer]:
 
 
 def _allowed_value(part, value: float) -> str:
-    """An allowed value as the scheme writes it: to 2 s.f. where that is all its figures
-    (0.86, not 0.860), else to 3."""
+    """An allowed value as the scheme writes it: to 2 s.f. (the A1's) where that is all its
+    figures (0.86, not 0.860), else to 3 (the key's)."""
     value = value if part.direction == "signed" else abs(value)
-    figures = 2 if math.isclose(float(round_number(value, 2)), value, rel_tol=1e-9) else 3
+    least = marking.sig_figs()["min"]
+    figures = least if math.isclose(float(round_number(value, least)), value, rel_tol=1e-9) else MISTAKE_SIG_FIGS
     return _value_with_unit(value, figures, part.unit)
 
 
@@ -366,7 +370,8 @@ def accept_note(part) -> str:
     if part.readings:  # worked from readings: what readings within half a small square give
         low, high = part.band
         return (f" (accept {part.min_sig_figs} or more significant figures; from readings of the "
-                f"graph to half a small square, {format_number(low, 3)} to {format_number(high, 3)}{allowed})")
+                f"graph to half a small square, {format_number(low, MISTAKE_SIG_FIGS)} to "
+                f"{format_number(high, MISTAKE_SIG_FIGS)}{allowed})")
     return f" (accept {part.min_sig_figs} or more significant figures{allowed})"
 
 

@@ -19,9 +19,10 @@ from ..notation import round_number
 from ..questions import Question
 from .latex import MISTAKE_SIG_FIGS
 
-#: The written forms of a right answer Moodle is given: the key at 2 and at 3 s.f. (an answer
-#: at 4 s.f. or more falls in the 3 s.f. band, as the book takes it).
-RIGHT_SIG_FIGS = (2, 3)
+#: The written forms of a right answer Moodle is given: the key at the figures the A1 needs and
+#: at those the key is trusted to, 2 and 3 s.f. (the rule table's min and check: an answer at
+#: 4 s.f. or more falls in the 3 s.f. band, as the book takes it).
+RIGHT_SIG_FIGS = (marking.sig_figs()["min"], marking.sig_figs()["check"])
 #: Moodle's allowed grades (question/engine/bank.php), in per cent.
 MOODLE_GRADES = (100.0, 90.0, 83.33333, 80.0, 75.0, 70.0, 66.66667, 60.0, 50.0, 40.0, 33.33333, 30.0,
                  25.0, 20.0, 16.66667, 14.28571, 12.5, 11.11111, 10.0, 5.0, 0.0)
@@ -153,7 +154,23 @@ def graded_answers(question: Question, index: int, *, direction_box: int = 0) ->
             rows.append((points, centre, width, feedback))
             taken.append((centre, width))
     if not part.reads_graph and part.value != 0:  # right only to 1 s.f.: all but the A1
-        one = _exact(float(round_number(part.value, 1)))
-        if not _overlaps(*one, taken):
-            rows.append((kept(losses["too-few-sf"]), *one, marking.too_few_sf_feedback(1)))
+        rows += _too_few_rows(part, kept(losses["too-few-sf"]), taken)
+    return rows
+
+
+def _too_few_rows(part, points: float, taken: list[tuple[float, float]]) -> list[tuple[float, float, float, str]]:
+    """The key written to too few figures (1 s.f., from the rule table's fewest up to the A1's
+    min), with its feedback as for a number typed without zeros after it (Moodle reads the
+    number, not its figures): (grade, value, width, feedback). Where the one s.f. judge takes
+    that number as right (10 for 9.6 may be 2 s.f.), Moodle, which cannot see the figures, keeps
+    the too-few grade: strict rather than lenient (CLARIFICATIONS, Marks: Moodle)."""
+    rows = []
+    for few in range(marking.sig_figs()["fewest"], part.min_sig_figs):
+        value = float(round_number(part.value, few))
+        judged = marking.judge_sig_figs(marking.written(value, few), part.value, min_sf=part.min_sig_figs,
+                                        check_sf=part.check_sig_figs)
+        if judged.code != "wrong" and not _overlaps(*_exact(value), taken):
+            feedback = marking.too_few_sf_feedback(few, min_sf=judged.min_sf, check_sf=judged.check_sf)
+            rows.append((points, *_exact(value), feedback))
+            taken.append(_exact(value))
     return rows

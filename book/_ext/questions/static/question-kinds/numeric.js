@@ -54,9 +54,10 @@
    * of its significant figures. The comparison is at the student's last digit,
    * but never finer than checkSf figures of the target: the key is only
    * trusted that far, so rounding intermediate values to 3 s.f. still passes.
-   * match: right to minSf or more. matchFewSf: the key rounded to fewer figures
-   * (60 for 56.0: right to 1 s.f.). */
-  function compare(number, target, minSf, checkSf) {
+   * match: right to minSf or more. matchFewSf: the key rounded to fewer figures, from the
+   * rule table's fewest (60 for 56.0: right to 1 s.f.). Its Python twin is the one s.f. judge,
+   * physics_figures.marking.judge_sig_figs (tests/fixtures/sig_fig_cases.json runs through both). */
+  function compare(number, target, minSf, checkSf, fewest) {
     var result = { match: false, matchFewSf: false };
     if (target === 0) {
       result.match = number.value === 0;
@@ -71,7 +72,7 @@
     // The key rounded to fewer figures than the A1 needs, however many zeros follow it (60,
     // 60. and 6.0e1 for 64 are each 64 to 1 s.f.): too few figures, not wrong physics.
     // fewSf: the most figures it is the key to.
-    for (var few = 1; few < minSf && !result.match; few++) {
+    for (var few = fewest; few < minSf && !result.match; few++) {
       if (roundsTo(number.value, target, few)) {
         result.matchFewSf = true;
         result.fewSf = few;
@@ -88,6 +89,18 @@
       .replace(/\{few\}/g, String(few))
       .replace(/\{min\}/g, String(minSf))
       .replace(/\{work\}/g, String(Math.max(checkSf, minSf + 1)));
+  }
+
+  /* A whole number's trailing zeros as the rule table counts them ("whole_number_zeros"):
+   * "ambiguous" (4500 has 2 to 4 figures, as the reader gives them) or "significant" (4). */
+  function countedZeros(number, figures) {
+    if (figures.whole_number_zeros === "significant") return Object.assign({}, number, { sfMin: number.sfMax });
+    if (figures.whole_number_zeros !== "ambiguous") {
+      throw new Error(
+        "whole_number_zeros must be 'ambiguous' or 'significant' (got " + figures.whole_number_zeros + ")",
+      );
+    }
+    return number;
   }
 
   function outcome(code, message, extra) {
@@ -115,6 +128,7 @@
     }
     var number = parseNumber(valueText);
     if (!number.ok) return outcome("unreadable-number", number.message);
+    number = countedZeros(number, figures);
     var unit = parseUnit(unitText);
     // A ratio or a fraction has no unit (part.unit ""): a bare number is whole, and "25 %" reads as 0.25.
     var dimensionless = !normalise(part.unit);
@@ -171,7 +185,7 @@
         return { match: near, matchFewSf: false };
       }
       var n = { value: size, sfMin: number.sfMin, sfMax: number.sfMax, lead: number.lead };
-      return compare(n, value / scale, minSf, checkSf);
+      return compare(n, value / scale, minSf, checkSf, figures.fewest);
     }
     /* Worked from readings of the graph: right where some answer that readings within half a
      * small square give (part.band, SI) rounds to what was typed, at each reading of its
@@ -225,7 +239,7 @@
         if (mistake.direction && mistake.direction !== direction) continue;
         if (keyValue && !mistake.direction && !mistake.unit) continue;
         var value = mode === "signed" ? mistake.value : Math.abs(mistake.value);
-        if ((number.sfMax >= 2 || value === 0) && against(value, scale).match) {
+        if ((number.sfMax >= figures.min || value === 0) && against(value, scale).match) {
           var meant = mistake.unit ? undefined : value;
           return out(
             "mistake",
@@ -355,6 +369,7 @@
         target / reading.scale,
         minSf,
         checkSf,
+        figures.fewest,
       ).match
     ) {
       return out(
@@ -384,7 +399,12 @@
     }
     if (result.matchFewSf && number.sfMin < minSf) return tooFewSf();
     // Slips computed from the working (physics_figures.questions): nothing else is called rounding.
-    if (number.sfMax >= 2 && typeof part.gNineEight === "number" && against(part.gNineEight, reading.scale).match) {
+    // a slip is named only on an answer of the figures the A1 needs (the table's min): 1 s.f. could be anything
+    if (
+      number.sfMax >= figures.min &&
+      typeof part.gNineEight === "number" &&
+      against(part.gNineEight, reading.scale).match
+    ) {
       return out(
         "g-9.8",
         "That is the answer with g = 9.8 m s⁻². The data give g = 9.81 m s⁻²: use it, " +
@@ -395,7 +415,7 @@
     }
     var partWay = part.roundedPartWay || [];
     for (var i = 0; i < partWay.length; i++) {
-      if (number.sfMax >= 2 && against(partWay[i].value, reading.scale).match) {
+      if (number.sfMax >= figures.min && against(partWay[i].value, reading.scale).match) {
         return out(
           "rounded-part-way",
           "Close, but that is what rounding " +

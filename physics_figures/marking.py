@@ -239,11 +239,20 @@ def judge_sig_figs(written: str, key: float, *, min_sf: int | None = None,
     number = read_written(written)
     if key == 0:  # zero has no significant figures
         return SigFigJudgement("correct" if number.value == 0 else "wrong", min_sf, check_sf)
-    check_place = math.floor(math.log10(abs(key)) + 1e-12) - check_sf + 1
+    key_lead = math.floor(math.log10(abs(key)) + 1e-12)
+    check_place = key_lead - check_sf + 1
+    # Right: equal to the key at the answer's last figure, where that figure is no coarser than
+    # the key's min_sf-th ("1.0" is 0.97 to 1 s.f., not 2), or the key rounded to min_sf or more
+    # figures where rounding carries into a new digit ("1.0" for 0.997 to 2 s.f.).
     for figures in range(max(number.sf_min, min_sf), number.sf_max + 1):
         place = max(number.lead - figures + 1, check_place)
-        if any(a == b for a in _steps(number.value, place) for b in _steps(key, place)):
+        if place <= key_lead - min_sf + 1 and any(
+                a == b for a in _steps(number.value, place) for b in _steps(key, place)):
             return SigFigJudgement("correct", min_sf, check_sf)
+    carried = abs(number.value) >= 10.0 ** (key_lead + 1)
+    if carried and any(number.sf_min <= f <= number.sf_max and _rounds_to(number.value, key, f)
+                       for f in range(min_sf, check_sf + 1)):
+        return SigFigJudgement("correct", min_sf, check_sf)
     few = max((f for f in range(table["fewest"], min_sf) if _rounds_to(number.value, key, f)), default=None)
     if few is None:
         return SigFigJudgement("wrong", min_sf, check_sf)

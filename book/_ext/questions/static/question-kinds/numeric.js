@@ -63,11 +63,20 @@
       result.match = number.value === 0;
       return result;
     } // zero has no significant figures
-    var checkPlace = Math.floor(Math.log10(Math.abs(target)) + 1e-12) - checkSf + 1;
+    var targetLead = Math.floor(Math.log10(Math.abs(target)) + 1e-12),
+      checkPlace = targetLead - checkSf + 1;
+    // Right: equal at the typed last figure, where that figure is no coarser than the target's
+    // minSf-th ("1.0" is 0.97 to 1 s.f., not 2), or the target rounded to minSf or more figures
+    // where rounding carries into a new digit ("1.0" for 0.997 to 2 s.f.).
     for (var sf = number.sfMax; sf >= number.sfMin; sf--) {
-      if (sf >= minSf && stepsApart(number.value, target, Math.max(number.lead - sf + 1, checkPlace)) === 0) {
+      var place = Math.max(number.lead - sf + 1, checkPlace);
+      if (sf >= minSf && place <= targetLead - minSf + 1 && stepsApart(number.value, target, place) === 0) {
         result.match = true;
       }
+    }
+    var carried = Math.abs(number.value) >= Math.pow(10, targetLead + 1);
+    for (var more = minSf; more <= checkSf && carried && !result.match; more++) {
+      result.match = number.sfMin <= more && more <= number.sfMax && roundsTo(number.value, target, more);
     }
     // The key rounded to fewer figures than the A1 needs, however many zeros follow it (60,
     // 60. and 6.0e1 for 64 are each 64 to 1 s.f.): too few figures, not wrong physics.

@@ -1,8 +1,9 @@
-"""The teachers' sheet builder's port of the draws (book/_ext/questions/static/sheet-builder.js)
-gives what physics_figures.worksheets gives, under Node: the FNV-1a hash, and for several
-choices of types, marks, versions and seeds the same templates and variants in every version
-(plan() with a fresh kit, as the command line makes a sheet), or the same error. Every
-expectation is computed here from Python at run time (tests/js/sheet_plan.js runs the port).
+"""The teachers' sheet builder (book/_ext/questions/static/sheet-builder.js, under Node, on the data
+file's index) and the command line (physics_figures.worksheets.plan) give the same sheets: for
+several choices of types, marks, versions and seeds, the same templates and variants in every
+version, the same ready-made repeats, or the same error. Both run the one draw, question-draw.js;
+this checks what each feeds it (the builder its data file, the command line the topic) and reads
+back (tests/js/sheet_plan.js runs the builder). And no second draw: the Python package holds none.
 
 Also the HTML the builder prints (physics_figures.worksheets.html): a key holds what the PDF
 key holds, and a graph inlined into a page keeps its references, with ids of its own."""
@@ -18,7 +19,7 @@ from pathlib import Path
 import pytest
 
 from physics_figures import topics
-from physics_figures.worksheets import choose_templates, fnv1a, plan, ready_made_repeats, select
+from physics_figures.worksheets import plan, ready_made_repeats, select
 from physics_figures.worksheets.html import key_body, sheet_body
 from physics_figures.worksheets.latex import ecf_note, wrong_answers
 
@@ -32,14 +33,14 @@ TOPIC = topics.load("physics_figures.bank")
 TYPES = [kind.key for kind in TOPIC.types]
 
 
-def run_port(request: dict) -> dict:
+def run_builder(request: dict) -> dict:
     result = subprocess.run([node(), str(RUNNER)], input=json.dumps(request), capture_output=True, text=True,
                             timeout=120, check=False)
     assert result.returncode == 0, result.stderr[-3000:]
     return json.loads(result.stdout)
 
 
-def python_plan(case: dict) -> dict:
+def command_line_plan(case: dict) -> dict:
     """What the command line makes for these choices: the keys and variants, or the error."""
     try:
         templates = select(types=case["types"], topic=TOPIC)
@@ -54,12 +55,13 @@ def python_plan(case: dict) -> dict:
 
 
 def impossible_marks(types: list[str]) -> int:
-    """A total the templates of these types cannot make (found by Python's own draw)."""
+    """A total the templates of these types cannot make (found by asking the command line's plan)."""
     templates = select(types=types, topic=TOPIC)
     for marks in range(1, sum(t.variant(0).marks for t in templates)):
         try:
-            choose_templates(templates, marks, 1, TOPIC)
-        except ValueError:
+            plan("w", "", templates, versions=1, seed=1, marks=marks, topic=TOPIC)
+        except ValueError as error:
+            assert "cannot be made exactly" in str(error)
             return marks
     pytest.fail(f"every total can be made from {types}")
 
@@ -86,19 +88,28 @@ def cases() -> list[dict]:
     return every
 
 
-def test_the_port_draws_the_same_sheets_as_python_or_the_same_error():
+def test_the_builder_and_the_command_line_give_the_same_sheets_or_the_same_error():
     chosen = cases()
-    port = run_port({"data": builder_index(TOPIC), "cases": chosen})["plans"]
-    expected = [python_plan(case) for case in chosen]
+    builder = run_builder({"data": builder_index(TOPIC), "cases": chosen})["plans"]
+    expected = [command_line_plan(case) for case in chosen]
     assert sum("error" in e for e in expected) == 7, expected  # each error case is one
-    for case, got, want in zip(chosen, port, expected, strict=True):
+    for case, got, want in zip(chosen, builder, expected, strict=True):
         assert got == want, case
 
 
-def test_the_port_hashes_as_python_does():
-    texts = ["", "a", "worksheet-templates:2027:quick-check-3", "worksheet-variants:drag-law-constant:0:17",
-             "Δp = F Δt, m s⁻¹", "x" * 300]
-    assert run_port({"hashes": texts})["hashes"] == [fnv1a(text) for text in texts]
+#: What only a draw computes: the seeded hash, the subset sums over the templates' marks, the
+#: seeded order of the variants.
+DRAW_WORDS = re.compile(r"0x811C9DC5|0x01000193|fnv|seeded_order|subset_sum|variant_order", re.IGNORECASE)
+
+
+def test_the_draw_has_one_implementation():
+    """The worksheet draw lives in question-draw.js alone: no Python module of the package computes
+    it again (the twin this replaced: worksheets' fnv1a, seeded_order, _subset_sums, choose_templates)."""
+    found = [f"{path.relative_to(ROOT)}: {match[0]}" for path in sorted((ROOT / "physics_figures").rglob("*.py"))
+             for match in DRAW_WORDS.finditer(path.read_text(encoding="utf-8"))]
+    assert not found, found
+    draw = (ROOT / "book" / "_ext" / "questions" / "static" / "question-draw.js").read_text(encoding="utf-8")
+    assert len(DRAW_WORDS.findall(draw)) >= 3  # the words find the draw where it is
 
 
 def _plain(html: str) -> str:

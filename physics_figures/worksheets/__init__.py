@@ -10,12 +10,12 @@ Sheets use only a template's reserve variants (Template.reserve_variants), which
 never ships, so no student has met a sheet's numbers on the site; a template of a few
 situations shares its variants with the site (Template.shares_variants). Within a kit (the
 site's sheets), no variant of a template appears twice: each sheet takes the next unused
-variants of each template (:class:`Kit`), and the end-of-topic test leaves out a template
+variants of each template (:func:`site_sheets`), and the end-of-topic test leaves out a template
 whose reserve the worksheets used up.
 
-The order of templates and variants is drawn with :func:`seeded_order`, a 32-bit FNV-1a
-hash of the seed and the key, which the teachers' sheet builder (book/_ext/questions/sheet_builder.py,
-static/sheet-builder.js) computes the same way: the builder and this module give the same sheets.
+The draw itself (the templates making the marks, each type's share, the variants' seeded order)
+has one implementation, the teachers' sheet builder's question-draw.js, which :mod:`.draw` runs
+under Node: the builder in the browser and this module give the same sheets.
 
 :mod:`.latex` writes a version's question sheet and answer key as standalone LaTeX, and
 :mod:`.build` typesets them with xelatex. :mod:`.moodle` exports the bank as Moodle XML.
@@ -30,7 +30,7 @@ from __future__ import annotations
 
 import difflib
 import string
-from collections.abc import Collection, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -38,6 +38,7 @@ from .. import topics
 from ..questions import Question
 from ..topics import Topic
 from ..variants import Template
+from .draw import draw_kit
 
 #: The topic a sheet draws from unless told otherwise (--topic on the command line).
 DEFAULT_TOPIC = "physics_figures.bank"
@@ -120,77 +121,6 @@ class Sheet:
         return tuple(item.template for item in self.versions[0].items)
 
 
-def fnv1a(text: str) -> int:
-    """The 32-bit FNV-1a hash of a text's UTF-8 bytes: a draw any language repeats exactly
-    (Python's random cannot be repeated in the browser's sheet builder)."""
-    value = 0x811C9DC5
-    for byte in text.encode():
-        value = ((value ^ byte) * 0x01000193) & 0xFFFFFFFF
-    return value
-
-
-def seeded_order(items: Sequence, label: str, seed: int, name=str) -> list:
-    """The items in the order a seed draws: by the hash of "label:seed:name(item)", ties in the
-    given order."""
-    return sorted(items, key=lambda item: fnv1a(f"{label}:{seed}:{name(item)}"))
-
-
-def _subset_sums(templates: Sequence[Template], most: int) -> dict[int, tuple[Template, ...]]:
-    """For each total up to ``most``, one set of templates that makes it (the first found
-    in the given order, which the seed has shuffled)."""
-    sums: dict[int, tuple[Template, ...]] = {0: ()}
-    for template in templates:
-        marks = template_marks(template)
-        for total, chosen in sorted(sums.items(), reverse=True):
-            if total + marks <= most and total + marks not in sums:
-                sums[total + marks] = (*chosen, template)
-    return sums
-
-
-def choose_templates(templates: Sequence[Template], marks: int, seed: int, topic: Topic | None = None
-                     ) -> list[Template]:
-    """Templates making exactly ``marks``, shared among their types as the exam shares its
-    questions (each type's exam_count in the topic), drawn by ``seed``. ValueError when no
-    set of them makes that many marks, naming the nearest totals that can be made."""
-    topic = topic_of(topic)
-    by_type: dict[str, list[Template]] = {}
-    for template in templates:
-        by_type.setdefault(template.type, []).append(template)
-    by_type = {t: seeded_order(group, "worksheet-templates", seed, lambda template: template.key)
-               for t, group in by_type.items()}
-    available = sum(template_marks(t) for t in templates)
-    _require(marks <= available, "marks", marks,
-             f"is more than the {available} marks the bank holds for "
-             f"{', '.join(sorted(by_type))} ({len(templates)} templates)")
-    counts = {t: topic.type(t).exam_count for t in by_type}
-    weight = sum(counts.values()) or 1
-    targets = {t: marks * counts[t] / weight for t in by_type}
-    # Per type: the totals it can make; then over the types: the exact total that strays
-    # least from each type's share.
-    options = {t: _subset_sums(group, marks) for t, group in by_type.items()}
-    best: dict[int, tuple[float, tuple[tuple[str, int], ...]]] = {0: (0.0, ())}
-    for question_type, sums in options.items():
-        following: dict[int, tuple[float, tuple[tuple[str, int], ...]]] = {}
-        for total, (cost, picks) in best.items():
-            for amount in sums:
-                if total + amount > marks:
-                    continue
-                entry = (cost + abs(amount - targets[question_type]), (*picks, (question_type, amount)))
-                if total + amount not in following or entry[0] < following[total + amount][0] - 1e-9:
-                    following[total + amount] = entry
-        best = following
-    if marks not in best:
-        below = max((total for total in best if total < marks), default=0)
-        above = _subset_sums(templates, available)
-        above = min((total for total in above if total > marks), default=available)
-        raise ValueError(f"marks cannot be made exactly from the questions of these templates "
-                         f"({', '.join(f'{t.key}: {template_marks(t)}' for t in templates)}); "
-                         f"the nearest totals that can are {below} and {above} (got marks={marks!r})")
-    chosen = [t for question_type, amount in best[marks][1] for t in options[question_type][amount]]
-    order = {template.key: index for index, template in enumerate(bank_templates(topic))}
-    return sorted(chosen, key=lambda t: order.get(t.key, len(order)))
-
-
 def select(*, types: Sequence[str] = (), templates: Sequence[str] = (), topic: Topic | None = None
            ) -> list[Template]:
     """The templates named by type or by key (both may be given), in the bank's order.
@@ -213,95 +143,52 @@ def select(*, types: Sequence[str] = (), templates: Sequence[str] = (), topic: T
     return chosen
 
 
-def variant_order(template: Template, seed: int, avoid: Collection[int] = ()) -> list[int]:
-    """A template's reserve variants in the order a seed draws them; the printed variant (0, in
-    the book and its key), when the reserve holds it, comes last; before it, the variants in
-    ``avoid`` (a ready-made worksheet's) after all the others, in the same order."""
-    drawn = seeded_order([i for i in template.reserve_variants if i], f"worksheet-variants:{template.key}", seed)
-    return [*(i for i in drawn if i not in avoid), *(i for i in drawn if i in avoid),
-            *(i for i in template.reserve_variants if not i)]
+def usable_versions(template: Template, topic: Topic | None = None) -> int:
+    """How many versions a template can give in a fresh kit (the draw's rule): every version its
+    own variant; a one-wording statement (a definition) has one variant, the same in every
+    version (its answer is the same anyway)."""
+    return draw_kit(topic_of(topic), [template], {"seed": 0, "versions": 1, "sheets": []})["left"][template.key]
 
 
-def usable_versions(template: Template, used: int = 0) -> int:
-    """How many versions a template can still give after ``used`` of its variants went to other
-    sheets: every version its own variant; a one-wording statement (a definition) has one
-    variant, the same in every version (its answer is the same anyway), once in a kit."""
-    if template.one_wording:
-        return MAX_VERSIONS if not used else 0
-    return len(template.reserve_variants) - used
-
-
-@dataclass
-class Kit:
-    """The sheets of one kit draw their variants from here: each template's next unused
-    variants, so no question (template and variant) appears twice in the kit."""
-
-    seed: int
-    used: dict[str, int] | None = None
-    #: Per template key, the variants to take only when no other is left (the ready-made
-    #: worksheets' numbers, for a teacher's own sheet: :func:`ready_made`).
-    avoid: dict[str, dict[int, str]] | None = None
-
-    def __post_init__(self):
-        self.used = {} if self.used is None else self.used
-        self.avoid = {} if self.avoid is None else self.avoid
-
-    def left(self, template: Template) -> int:
-        return usable_versions(template, self.used.get(template.key, 0))
-
-    def take(self, template: Template, count: int) -> list[int]:
-        if template.one_wording:
-            self.used[template.key] = 1
-            return [0] * count
-        start = self.used.get(template.key, 0)
-        self.used[template.key] = start + count
-        return variant_order(template, self.seed, self.avoid.get(template.key, {}))[start:start + count]
+def _sheet(name: str, title: str, seed: int, drawn: dict, templates: Sequence[Template]) -> Sheet:
+    by_key = {t.key: t for t in templates}
+    chosen = [by_key[key] for key in drawn["templates"]]
+    return Sheet(name, title, seed, tuple(
+        Version(letter, tuple(Item(t, variants[index]) for t, variants in zip(chosen, drawn["variants"], strict=True)))
+        for index, letter in enumerate(string.ascii_uppercase[:len(drawn["variants"][0])])))
 
 
 def plan(name: str, title: str, templates: Sequence[Template], *, versions: int, seed: int,
-         marks: int | None = None, topic: Topic | None = None, kit: Kit | None = None) -> Sheet:
-    """A sheet's versions: the templates (all of them, or a set making ``marks``), each
-    version with its own reserve variant of each (the next unused ones of ``kit``, when the
-    sheet is one of a kit; else a teacher's own sheet, which takes the ready-made worksheets'
-    variants only when it has no others: :func:`ready_made`). ValueError when the request
-    cannot be filled."""
-    _require(isinstance(versions, int) and 1 <= versions <= MAX_VERSIONS, "versions", versions,
-             f"must be a whole number from 1 to {MAX_VERSIONS} (A to Z)")
-    _require(isinstance(seed, int) and seed >= 0, "seed", seed, "must be a whole number, 0 or more")
-    _require(bool(templates), "templates", list(templates), "must hold at least one template")
-    kit = Kit(seed, avoid=ready_made(topic)) if kit is None else kit
-    short = [t for t in templates if kit.left(t) < versions]
-    _require(not short, "versions", versions,
-             "needs that many different variants of every template, but "
-             + ", ".join(f"{t.key} has {kit.left(t)} the site does not show" for t in short)
-             + ": ask for fewer versions or leave those templates out")
-    if marks is not None:
-        _require(isinstance(marks, int) and marks >= 1, "marks", marks, "must be a whole number, 1 or more")
-        templates = choose_templates(templates, marks, seed, topic)
-    chosen_variants = {t.key: kit.take(t, versions) for t in templates}
-    return Sheet(name, title, seed, tuple(
-        Version(string.ascii_uppercase[index],
-                tuple(Item(t, chosen_variants[t.key][index]) for t in templates))
-        for index in range(versions)))
+         marks: int | None = None, topic: Topic | None = None) -> Sheet:
+    """A teacher's own sheet: the templates (all of them, or a set making ``marks``, shared
+    among their types as the exam shares its questions), each version with its own reserve
+    variant of each, taking the ready-made worksheets' variants only when it has no others
+    (:func:`ready_made`). ValueError, naming the field, the value and the rule, when the
+    request cannot be filled (for marks that cannot be made: the nearest totals that can)."""
+    topic = topic_of(topic)
+    sheet = {"templates": [t.key for t in templates], **({} if marks is None else {"marks": marks})}
+    avoid = {key: {str(i): where for i, where in made.items()} for key, made in ready_made(topic).items()}
+    drawn = draw_kit(topic, templates, {"seed": seed, "versions": versions, "avoid": avoid, "sheets": [sheet]})
+    return _sheet(name, title, seed, drawn["sheets"][0], templates)
 
 
 def site_sheets(*, seed: int = SITE_SEED, versions: int = SITE_VERSIONS, topic: Topic | None = None) -> list[Sheet]:
-    """The site's sheets: a worksheet of every template of each type, and the mixed 40-mark
-    end-of-topic test weighted like the exam."""
+    """The site's sheets, one kit (no question, template and variant, appears twice in it): a
+    worksheet of every template of each type, and the mixed 40-mark end-of-topic test weighted
+    like the exam, from the templates with variants the worksheets have not used (a small
+    topic's test: all it has)."""
     topic = topic_of(topic)
-    kit = Kit(seed)
-    sheets = []
-    for question_type in topic.types:
-        usable = [t for t in topic.by_type(question_type.key) if kit.left(t) >= versions]
-        if usable:
-            sheets.append(plan(f"worksheet-{question_type.key}", f"Worksheet: {question_type.title}",
-                               usable, versions=versions, seed=seed, topic=topic, kit=kit))
-    # the test: the templates with variants the worksheets have not used
-    usable = [t for t in bank_templates(topic) if kit.left(t) >= versions]
-    marks = min(END_OF_TOPIC_MARKS, sum(template_marks(t) for t in usable))  # a small topic: all it has
-    sheets.append(plan("end-of-topic-test", f"{topic.name}: end-of-topic test", usable, versions=versions,
-                       seed=seed, marks=marks, topic=topic, kit=kit))
-    return sheets
+    templates = bank_templates(topic)
+    every = list({t.key: t for t in [*templates, *(t for kind in topic.types for t in topic.by_type(kind.key))]}.values())
+    worksheets = [(f"worksheet-{kind.key}", f"Worksheet: {kind.title}",
+                   {"templates": [t.key for t in topic.by_type(kind.key)], "fitting": True}) for kind in topic.types]
+    test = ("end-of-topic-test", f"{topic.name}: end-of-topic test",
+            {"templates": [t.key for t in templates], "fitting": True, "marksAtMost": END_OF_TOPIC_MARKS})
+    asked = [*worksheets, test]
+    drawn = draw_kit(topic, every, {"seed": seed, "versions": versions,
+                                    "sheets": [request for _, _, request in asked]})
+    return [_sheet(name, title, seed, sheet, every)
+            for (name, title, _), sheet in zip(asked, drawn["sheets"], strict=True) if sheet]
 
 
 def ready_made(topic: Topic | None = None) -> dict[str, dict[int, str]]:

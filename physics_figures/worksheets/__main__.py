@@ -95,6 +95,9 @@ def main(argv: list[str] | None = None) -> int:
     except ValueError as error:
         print(f"error: {error}", file=sys.stderr)
         return 2
+    except RuntimeError as error:  # the draw runs under Node (worksheets/draw.py)
+        print(f"error: {error}", file=sys.stderr)
+        return 1
     start = time.perf_counter()
     try:
         pdfs = build(sheets, args.out, parallel=args.jobs, work=args.work)

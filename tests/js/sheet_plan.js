@@ -1,7 +1,7 @@
-// Runs the sheet builder's port of physics_figures.worksheets.plan (sheet-builder.js) on cases
-// read as JSON from stdin: {data, cases: [{types, marks, versions, seed}]} for plans, {hashes:
-// [text]} for FNV-1a. Prints, per case, the plan's template keys and variants per version, or
-// the error's message, as JSON for tests/test_sheet_builder.py to compare with Python's.
+// Runs the sheet builder's plan (sheet-builder.js, over the one draw, question-draw.js) on cases
+// read as JSON from stdin: {data, cases: [{types, marks, versions, seed}]}. Prints, per case, the
+// plan's template keys and variants per version, or the error's message, as JSON for
+// tests/test_sheet_builder.py to compare with the command line's.
 "use strict";
 const path = require("node:path");
 const S = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "sheet-builder.js"));
@@ -11,7 +11,6 @@ process.stdin.on("data", (chunk) => (input += chunk));
 process.stdin.on("end", () => {
   const request = JSON.parse(input);
   const out = {
-    hashes: (request.hashes || []).map((text) => S.fnv1a(text)),
     plans: (request.cases || []).map((c) => {
       try {
         const sheet = S.plan(request.data, c);

@@ -10,11 +10,11 @@ it has been opened, outside the first install). It holds, from physics_figures, 
 (titles, exam counts) and every bank template (key, type, title, marks, one-wording flag, the
 reserve's indices) with, for each reserve variant, its parts (label, prompt, marks), its sheet
 body and key body as HTML (physics_figures.worksheets.html: the PDF key's information) and its
-graph as inline SVG. static/sheet-builder.js repeats physics_figures.worksheets.plan exactly
-(the FNV-1a draws and the templates' subset-sum); static/sheet-builder-page.js only assembles
-the pages: it computes no physics and no key. The file is a script: the page fetches it and
-keeps it in its own cache (the Cache API) for offline use, and from file://, where fetch()
-cannot read, a <script> element loads it.
+graph as inline SVG. static/sheet-builder.js draws the sheets with static/question-draw.js, the
+one draw the command line runs too (physics_figures.worksheets.draw, under Node);
+static/sheet-builder-page.js only assembles the pages: it computes no physics and no key. The
+file is a script: the page fetches it and keeps it in its own cache (the Cache API) for offline
+use, and from file://, where fetch() cannot read, a <script> element loads it.
 
 Working every reserve variant out and drawing 76 graphs takes most of a minute, so, as for the
 site's variants (variants.py), the last build's inputs and output are recorded beside the site:
@@ -67,10 +67,10 @@ class SheetBuilderDirective(SphinxDirective):
 
 def type_versions(topic, key: str) -> int:
     """How many versions a sheet of this type can have: each version its own numbers for every
-    template of the type (worksheets.usable_versions), at most 26 (A to Z)."""
+    template of the type (the draw's worksheets.usable_versions), at most 26 (A to Z)."""
     from physics_figures.worksheets import MAX_VERSIONS, bank_templates, usable_versions
 
-    return min([MAX_VERSIONS, *(usable_versions(t) for t in bank_templates(topic) if t.type == key)])
+    return min([MAX_VERSIONS, *(usable_versions(t, topic) for t in bank_templates(topic) if t.type == key)])
 
 
 #: The form, the status line and where the sheets go (hidden until the script runs). Every

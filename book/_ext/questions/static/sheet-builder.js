@@ -5,26 +5,17 @@
  * teachers/sheet-data.js, loaded on the first "Make the sheets" and kept for offline use by
  * sheet-builder-page.js): every bank template's reserve variants, their sheets and keys as
  * HTML and their graphs as SVG, all computed by physics_figures. This script computes no
- * physics and no key. It repeats physics_figures.worksheets.plan exactly: the same FNV-1a
- * draws (seededOrder), the same subset sums over each type's templates in the same order,
- * with the same tie-breaking (Python's dicts keep insertion order: Maps here; totals tried
- * from the largest; a new cost wins only when lower by more than 1e-9), and the same errors.
- * So the same types, marks, versions and seed give the same questions as
- * `python -m physics_figures.worksheets`. This file is the plan (it runs under Node for the
- * tests too), from the draws it shares with the mock test (question-draw.js);
+ * physics and no key, and draws nothing itself: the draw is question-draw.js, the one the
+ * command line (`python -m physics_figures.worksheets`) runs under Node, so the same types,
+ * marks, versions and seed give the same questions. This file turns the form's choices into a
+ * draw and the draw into versions (it runs under Node for the tests too);
  * sheet-builder-page.js is the page: the form and the sheets it prints. */
 (function (root) {
   "use strict";
 
-  // the shared draws (question-draw.js): loaded before this script, or required under Node
+  // the draw (question-draw.js): loaded before this script, or required under Node
   var Draw = typeof module !== "undefined" && module.exports ? require("./question-draw.js") : root.QuestionDraw;
-  var seededOrder = Draw.seededOrder,
-    chooseTemplates = Draw.chooseTemplates,
-    require_ = Draw.check,
-    isWhole = Draw.isWhole,
-    SheetError = Draw.DrawError;
-
-  var MAX_VERSIONS = 26;
+  var require_ = Draw.check;
   var LETTERS = "ABCDEFGHIJKLMNOPQRSTUVWXYZ";
 
   /* The templates of the types asked, in the bank's order (worksheets.select). */
@@ -41,32 +32,6 @@
     });
   }
 
-  /* A template's reserve variants in the order a seed draws them; variant 0, when the reserve
-   * holds it, last; before it, the variants a ready-made worksheet prints (template.readyMade)
-   * after all the others (worksheets.variant_order with the ready-made ones to avoid). */
-  function variantOrder(template, seed) {
-    var drawn = seededOrder(
-      template.reserve.filter(function (i) {
-        return i;
-      }),
-      "worksheet-variants:" + template.key,
-      seed,
-    );
-    var made = template.readyMade || {};
-    return drawn
-      .filter(function (i) {
-        return !(String(i) in made);
-      })
-      .concat(
-        drawn.filter(function (i) {
-          return String(i) in made;
-        }),
-        template.reserve.filter(function (i) {
-          return !i;
-        }),
-      );
-  }
-
   /* Where a sheet repeats a ready-made worksheet's numbers (worksheets.ready_made_repeats):
    * [{letter, number, where}]. */
   function readyMadeRepeats(sheet) {
@@ -81,45 +46,28 @@
     return out;
   }
 
-  /* How many versions a template can give (worksheets.usable_versions, in a fresh kit). */
-  function usableVersions(template) {
-    return template.oneWording ? MAX_VERSIONS : template.reserve.length;
+  /* The variants the ready-made worksheets print, to take only when no other is left. */
+  function readyMade(data) {
+    var avoid = {};
+    data.templates.forEach(function (template) {
+      if (template.readyMade) avoid[template.key] = template.readyMade;
+    });
+    return avoid;
   }
 
-  /* A custom sheet (worksheets.plan with a fresh Kit): {title, seed, marks, versions: [{letter,
-   * marks, items: [{template, variant}]}]}. Throws a SheetError saying what cannot be made. */
+  /* A custom sheet, as the command line makes one (a fresh kit that avoids the ready-made
+   * worksheets' numbers): {title, seed, marks, versions: [{letter, marks, items: [{template,
+   * variant}]}]}. Throws a Draw.DrawError saying what cannot be made. */
   function plan(data, options) {
-    var versions = options.versions;
-    var seed = options.seed;
-    var marks = options.marks;
-    var templates = select(data, options.types);
-    require_(
-      isWhole(versions) && versions >= 1 && versions <= MAX_VERSIONS,
-      "versions",
-      versions,
-      "must be a whole number from 1 to " + MAX_VERSIONS + " (A to Z)",
-    );
-    require_(isWhole(seed) && seed >= 0, "seed", seed, "must be a whole number, 0 or more");
-    var short = templates.filter(function (t) {
-      return usableVersions(t) < versions;
+    var keys = select(data, options.types).map(function (t) {
+      return t.key;
     });
-    require_(
-      !short.length,
-      "versions",
-      versions,
-      "needs that many different variants of every template, but " +
-        short
-          .map(function (t) {
-            return t.key + " has " + usableVersions(t) + " the site does not show";
-          })
-          .join(", ") +
-        ": ask for fewer versions or leave those templates out",
-    );
-    require_(isWhole(marks) && marks >= 1, "marks", marks, "must be a whole number, 1 or more");
-    templates = chooseTemplates(data, templates, marks, seed);
-    var drawn = templates.map(function (t) {
-      if (t.oneWording) return Array(versions).fill(0); // a definition: the same in every version
-      return variantOrder(t, seed).slice(0, versions);
+    var kit = { seed: options.seed, versions: options.versions, avoid: readyMade(data) };
+    kit.sheets = [{ templates: keys, marks: options.marks }];
+    var drawn = Draw.drawKit(data, kit).sheets[0];
+    var byKey = {};
+    data.templates.forEach(function (t) {
+      byKey[t.key] = t;
     });
     var titles = options.types.map(function (type) {
       return data.types.filter(function (t) {
@@ -127,28 +75,22 @@
       })[0].title;
     });
     var out = [];
-    for (var v = 0; v < versions; v++) {
+    for (var v = 0; v < options.versions; v++) {
       out.push({
         letter: LETTERS[v],
-        marks: marks,
-        items: templates.map(function (t, i) {
-          return { template: t, variant: drawn[i][v] };
+        marks: options.marks,
+        items: drawn.templates.map(function (key, i) {
+          return { template: byKey[key], variant: drawn.variants[i][v] };
         }),
       });
     }
-    return { title: "Worksheet: " + titles.join("; "), seed: seed, marks: marks, versions: out };
+    return { title: "Worksheet: " + titles.join("; "), seed: options.seed, marks: options.marks, versions: out };
   }
 
   var api = {
-    fnv1a: Draw.fnv1a,
-    seededOrder: seededOrder,
-    subsetSums: Draw.subsetSums,
-    chooseTemplates: chooseTemplates,
-    variantOrder: variantOrder,
-    usableVersions: usableVersions,
     readyMadeRepeats: readyMadeRepeats,
     plan: plan,
-    SheetError: SheetError,
+    SheetError: Draw.DrawError,
   };
   if (typeof module !== "undefined" && module.exports) module.exports = api;
   else root.SheetBuilder = api; // the page's part: sheet-builder-page.js

@@ -24,6 +24,7 @@ from ..questions import (
 )
 from ..variants import Draw, Template
 from ._common import N_S, PER_S, PER_S2
+from .givens import checked_givens
 
 a_answer, g_symbol = sympy.symbols("a g_earth")
 
@@ -286,7 +287,7 @@ def mass_weight_explained(situation: float = 0) -> Question:
     )
 
 
-TEMPLATES = (
+TEMPLATES = checked_givens(
     Template("quick-check-5", "definitions", ("numeric",), "Quick check 5", backpack_on_the_moon,
              {"mass": Draw(12.0, 5.0, 40.0, 1.0)}),
     Template("practice-tennis-ball", "definitions", ("numeric",), "Tennis ball", tennis_ball,

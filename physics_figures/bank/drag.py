@@ -52,6 +52,7 @@ from ..questions import (
 from ..variants import Draw, Template
 from ._common import M_S, M_S2, PER_S, PER_S2, enough_figures, reading, reading_rule
 from ._common import w as working
+from .givens import checked_givens
 
 a_answer, open_drag_symbol, mass_symbol = sympy.symbols("a open_drag mass")
 
@@ -1190,7 +1191,7 @@ def falling_graph_choice(story: float = 0) -> Question:
     )
 
 
-TEMPLATES = (
+TEMPLATES = checked_givens(
     Template("quick-check-3", "drag", ("numeric",), "Quick check 3", skydiver_parachute_opens,
              {"mass": Draw(70.0, 50.0, 99.0, 1.0), "open_drag": Draw(1500.0, 1000.0, 2500.0, 100.0)}),
     Template("parachute-opens-choice", "drag", ("mcq",), "The parachute opens", parachute_opens_choice,

@@ -37,7 +37,8 @@ from ..questions import (
 )
 from ..variants import Draw, Template
 from . import diagrams
-from ._common import M_S, PER_S, enough_figures, w
+from ._common import M_S, PER_S, enough_figures, one_of_each, w
+from .givens import checked_givens
 
 #: A unit for feedback, which the page shows as plain text.
 _PER_S_PLAIN = "m s⁻¹"
@@ -583,87 +584,173 @@ def sticking_fraction_lost(m1: float = 3.0, u1: float = 4.0, m2: float = 1.0) ->
     )
 
 
-def bounce_energy_ratio(m1: float = 0.20, u1: float = 3.0, m2: float = 0.60, back: float = 0.60) -> Question:
+#: What the energy part asks: the ratio after / before (the variants), or the kinetic energy the
+#: collision transfers, as 9702/23/O/N/24 Q2(b)(ii) asks "the change in the total kinetic energy".
+_ENERGY_ASKED = ("ratio", "decrease")
+speed_2 = sympy.Symbol("speed_2")
+
+
+def _energy_ratio_part(masses: tuple[float, float], before_speeds: tuple[float, float], back: float,
+                       v2: float) -> Part:
+    """(b) as the ratio (total kinetic energy after) / (total kinetic energy before)."""
+    (m1, m2), (u1, speed2) = masses, before_speeds
+    before = total_kinetic_energy(masses, (u1, -speed2))
+    after = total_kinetic_energy(masses, (-back, v2))
+    ratio = after / before
+    # B at rest (the variants) keeps its first formula; B moving adds its kinetic energy before
+    denominator = mass_1 * speed_1**2 + (mass_2 * speed_2**2 if speed2 else 0)
+    b_left_out = (Mistake("B's kinetic energy before left out", after / kinetic_energy(m1, u1),
+                          "B was moving before the collision too: the total kinetic energy before is ½mv² for "
+                          "A and for B."),) if speed2 else ()
+    return Part("ratio of the kinetic energy after to that before", ratio, "", "ratio", units=_NO_UNIT,
+                shown_sig_figs=2,
+                working=(Step("speed of B", v2, "m s^-1", 2),),
+                answer_from=lambda speed: total_kinetic_energy(masses, (back, speed)) / before,
+                ecf=Ecf((mass_1 * speed_back**2 + mass_2 * a_answer**2) / denominator,
+                        {"mass_1": m1, "speed_1": u1, "mass_2": m2, "speed_back": back,
+                         **({"speed_2": speed2} if speed2 else {})}),
+                revisit="Total kinetic energy after (½mv² for each ball) ÷ total kinetic energy before.",
+                mistakes=one_of_each(ratio, (
+                    Mistake("ratio inverted", before / after,
+                            "That is before / after, upside down. The ratio asked for is the kinetic energy "
+                            "after ÷ the kinetic energy before (less than 1: some is lost)."),
+                    Mistake("fraction lost given", (before - after) / before,
+                            "That is the fraction lost, (before − after) / before. The ratio asked for is "
+                            "after / before."),
+                    Mistake("kinetic energy conserved", 1.0,
+                            "Kinetic energy is conserved only in an elastic collision. Work out ½mv² for each "
+                            "ball after the collision and compare."),
+                    Mistake("A's kinetic energy only", kinetic_energy(m1, back) / before,
+                            "You left out B's kinetic energy after. Both balls move afterwards: add ½mv² for "
+                            "each."),
+                    *b_left_out,
+                    _percentage_without_sign(ratio, "ratio"),
+                )), see="kinetic-energy")
+
+
+def _energy_decrease_part(masses: tuple[float, float], before_speeds: tuple[float, float], back: float,
+                          v2: float) -> Part:
+    """(b) as the kinetic energy the collision transfers to other forms, J: a paper's "change in
+    the total kinetic energy" (9702/23/O/N/24 Q2(b)(ii)), asked as a size."""
+    (m1, m2), (u1, speed2) = masses, before_speeds
+    before = total_kinetic_energy(masses, (u1, -speed2))
+    after = total_kinetic_energy(masses, (-back, v2))
+    half = sympy.Rational(1, 2)
+    return Part("decrease in the total kinetic energy", before - after, "J", "energy", shown_sig_figs=2,
+                working=(Step("speed of B", v2, "m s^-1", 2),),
+                answer_from=lambda speed: before - total_kinetic_energy(masses, (back, speed)),
+                ecf=Ecf(half * (mass_1 * speed_1**2 + mass_2 * speed_2**2 - mass_1 * speed_back**2)
+                        - half * mass_2 * a_answer**2,
+                        {"mass_1": m1, "speed_1": u1, "mass_2": m2, "speed_2": speed2, "speed_back": back}),
+                revisit="Kinetic energy transferred = total kinetic energy before − total after, ½mv² for each ball.",
+                mistakes=one_of_each(before - after, (
+                    Mistake("gave the kinetic energy before", before,
+                            "That is the total kinetic energy before. Subtract the total after."),
+                    Mistake("gave the kinetic energy after", after,
+                            "That is the total kinetic energy after. The change is before − after."),
+                    Mistake("forgot the ½", 2 * (before - after),
+                            "Kinetic energy is ½mv²: you left out the ½.", see="kinetic-energy"),
+                    Mistake("kinetic energy conserved", 0.0,
+                            "Kinetic energy is conserved only in an elastic collision. Work out ½mv² for each "
+                            "ball before and after, and subtract."),
+                )), see="kinetic-energy")
+
+
+def _momentum_line(ma: str, ua: str, mb: str, speed2: float, back: float) -> str:
+    """The scheme's momentum equation, with B's momentum before and A's after where they are not zero."""
+    b_before = f" − {mb} × {n(speed2, 2)}" if speed2 else ""
+    a_after = f"{ma} × (−{n(back, 2)}) + " if back else ""
+    return f"Momentum: {ma} × {ua}{b_before} = {a_after}{mb}v"
+
+
+def bounce_energy_ratio(m1: float = 0.20, u1: float = 3.0, m2: float = 0.60, back: float = 0.60,
+                        speed2: float = 0.0, asks: float = 0) -> Question:
     """The kinetic energy after a collision as a ratio of that before: a light ball bounces back
     off a heavier one at rest (notes, "Elastic and inelastic collisions": to decide, compare the
     total kinetic energy before and after). The scheme's lines follow 9702/21/M/J/15 Q3(b), the
     collision of balls X and Y ("total initial kinetic energy not equal to the total final kinetic
     energy … so not elastic or is inelastic")
-    and 9702/23/M/J/16 Q3(b)(iii) (KE = ½mv² C1 … C1 … A1)."""
-    if m2 <= m1:
+    and 9702/23/M/J/16 Q3(b)(iii) (KE = ½mv² C1 … C1 … A1).
+
+    As the papers' collisions: speed2 sets B moving towards A before (0: at rest, the variants),
+    back = 0 has A stop, as ball X does in 9702/23/O/N/24 Q2(b), and asks = 1 asks the kinetic
+    energy the collision transfers, as its (b)(ii) does, instead of the ratio."""
+    if asks not in (0, 1):
+        raise ValueError(f"asks must be 0 (the ratio after / before) or 1 (the decrease in kinetic energy) "
+                         f"(got asks={asks!r})")
+    if m2 <= m1 and back > 0 and not speed2:
         raise ValueError(f"m2 must be heavier than m1, so the first ball bounces back (got m1={m1!r}, m2={m2!r})")
     v1 = -back  # positive: A's first direction
-    v2 = velocity_after_collision(m1, u1, m2, 0.0, v1)
-    before = kinetic_energy(m1, u1)
+    v2 = velocity_after_collision(m1, u1, m2, -speed2, v1)
+    if v2 <= 0:
+        raise ValueError(f"speed2={speed2!r} m s^-1 leaves B moving towards A's side after the collision "
+                         f"({n(v2, 2)} m s^-1): the question asks the speed at which B moves away")
+    before = total_kinetic_energy((m1, m2), (u1, -speed2))
     after = total_kinetic_energy((m1, m2), (v1, v2))
     if after > before:
         raise ValueError(f"back={back!r} m s^-1 would create kinetic energy ({n(before, 3)} J before, "
                          f"{n(after, 3)} J after)")
-    ratio = after / before
     ma, mb, ua, vb = n(m1, 2), n(m2, 2), n(u1, 2), n(back, 2)
-    shown = n(ratio, 2)
-    e_before, e_after = enough_figures((before, after), lambda b, a: a / b, shown)
+    e_before, e_after = enough_figures((before, after), (lambda b, a: a / b) if asks == 0 else (lambda b, a: b - a),
+                                       n(after / before if asks == 0 else before - after, 2))
     (v2_carried,) = enough_figures((v2,), lambda speed: total_kinetic_energy((m1, m2), (back, speed)), e_after)
+    b_was = "at rest" if not speed2 else f"moving towards A at {n(speed2, 2)} {PER_S}"
+    a_did = f"bounces straight back at {vb} {PER_S}" if back else "stops"
+    energy = (_energy_ratio_part, _energy_decrease_part)[int(asks)]((m1, m2), (u1, speed2), back, v2)
+    asked = ("the ratio (total kinetic energy after the collision) / (total kinetic energy before the collision). "
+             "Give (b) as a decimal or as a percentage.") if asks == 0 else (
+             "the decrease in the total kinetic energy of the balls in the collision.")
+    b_before = f" + ½ × {mb} × {n(speed2, 2)}<sup>2</sup>" if speed2 else ""
+    a_after = f"½ × {ma} × {vb}<sup>2</sup> + " if back else ""
+    result = (f"ratio = {e_after} / {e_before} = {n(energy.value, 2)}" if asks == 0
+              else f"decrease = {e_before} − {e_after} = {n(energy.value, 2)} J")
     return Question(
         key="bounce-energy-ratio",
-        text=(f"Ball A, of mass {ma} kg, moving at {ua} {PER_S}, hits ball B, of mass {mb} kg, head-on. B was at "
-              f"rest. After the collision A bounces straight back at {vb} {PER_S}. Calculate (a) the speed of B "
-              "just after the collision and (b) the ratio (total kinetic energy after the collision) / (total "
-              "kinetic energy before the collision). Give (b) as a decimal or as a percentage."),
+        text=(f"Ball A, of mass {ma} kg, moving at {ua} {PER_S}, hits ball B, of mass {mb} kg, head-on. B was "
+              f"{b_was}. After the collision A {a_did}. Calculate (a) the speed of B just after the collision "
+              f"and (b) {asked}"),
         givens=(Given("mass of A", m1, "kg", 2), Given("speed of A", u1, "m s^-1", 2),
-                Given("mass of B", m2, "kg", 2), Given("speed of A after", back, "m s^-1", 2)),
-        diagram=diagrams.line(((f"{ma} kg", u1), (f"{mb} kg", 0.0)), (("", v1), ("", None))),
-        parts=(
-            Part("speed of B just after the collision", v2, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
-                 revisit="Momentum is conserved, with a sign on every velocity: A bounces back, so its "
-                         "velocity after is negative. m₁u₁ = m₁v₁ + m₂v₂.",
-                 mistakes=(
-                     Mistake("momentum added as scalars", velocity_after_collision(m1, u1, m2, 0.0, back),
-                             f"You gave A's velocity after the same sign as before. A bounces back, so its "
-                             f"momentum after is negative: {ma} × {ua} = {ma} × (−{vb}) + {mb}v.",
-                             see="momentum"),
-                     Mistake("changes in velocity taken as equal", u1 + back,
-                             "You gave B the same change in velocity as A. It is the changes in momentum that "
-                             "are equal and opposite: B's mass is different."),
-                     Mistake("as if A stopped", velocity_from_momentum(momentum(m1, u1), m2),
-                             "You gave B all of A's momentum, as if A stopped. A bounces back, so B gains "
-                             "more than that."),
-                 ), see="conservation"),
-            Part("ratio of the kinetic energy after to that before", ratio, "", "ratio", units=_NO_UNIT,
-                 shown_sig_figs=2,
-                 working=(Step("speed of B", v2, "m s^-1", 2),),
-                 answer_from=lambda speed: total_kinetic_energy((m1, m2), (back, speed)) / before,
-                 ecf=Ecf((mass_1 * speed_back**2 + mass_2 * a_answer**2) / (mass_1 * speed_1**2),
-                         {"mass_1": m1, "speed_1": u1, "mass_2": m2, "speed_back": back}),
-                 revisit="Total kinetic energy after (½mv² for each ball) ÷ total kinetic energy before.",
-                 mistakes=(
-                     Mistake("ratio inverted", before / after,
-                             "That is before / after, upside down. The ratio asked for is the kinetic energy "
-                             "after ÷ the kinetic energy before (less than 1: some is lost)."),
-                     Mistake("fraction lost given", (before - after) / before,
-                             "That is the fraction lost, (before − after) / before. The ratio asked for is "
-                             "after / before."),
-                     Mistake("kinetic energy conserved", 1.0,
-                             "Kinetic energy is conserved only in an elastic collision. Work out ½mv² for each "
-                             "ball after the collision and compare."),
-                     Mistake("A's kinetic energy only", kinetic_energy(m1, back) / before,
-                             "You left out B's kinetic energy after. Both balls move afterwards: add ½mv² for "
-                             "each."),
-                     _percentage_without_sign(ratio, "ratio"),
-                 ), see="kinetic-energy"),
-        ),
+                Given("mass of B", m2, "kg", 2), Given("speed of A after", back, "m s^-1", 2),
+                *((Given("speed of B", speed2, "m s^-1", 2),) if speed2 else ())),
+        diagram=diagrams.line(((f"{ma} kg", u1), (f"{mb} kg", -speed2 if speed2 else 0.0)), (("", v1), ("", None))),
+        parts=(_speed_of_b_part((m1, m2), (u1, speed2), back, v2), energy),
         mark_scheme=(
-            Mark(f"Momentum: {ma} × {ua} = {ma} × (−{vb}) + {mb}v", "C1", "a"),
+            Mark(_momentum_line(ma, ua, mb, speed2, back), "C1", "a"),
             Mark(f"v = {n(v2, 2)} {PER_S}", "A1", "a"),
-            Mark(f"E<sub>k</sub> before = ½ × {ma} × {ua}<sup>2</sup> = {e_before} J; after = ½ × {ma} × "
-                 f"{vb}<sup>2</sup> + ½ × {mb} × {v2_carried}<sup>2</sup> = {e_after} J", "C1", "b"),
-            Mark(f"ratio = {e_after} / {e_before} = {shown}", "A1", "b"),
+            Mark(f"E<sub>k</sub> before = ½ × {ma} × {ua}<sup>2</sup>{b_before} = {e_before} J; after = {a_after}"
+                 f"½ × {mb} × {v2_carried}<sup>2</sup> = {e_after} J", "C1", "b"),
+            Mark(result, "A1", "b"),
         ),
     )
 
 
+def _speed_of_b_part(masses: tuple[float, float], before_speeds: tuple[float, float], back: float,
+                     v2: float) -> Part:
+    """(a) B's speed after, from the conservation of momentum with a sign on every velocity."""
+    (m1, m2), (u1, speed2) = masses, before_speeds
+    ma, mb, ua, vb = n(m1, 2), n(m2, 2), n(u1, 2), n(back, 2)
+    b_left_out = (Mistake("B's momentum before left out", velocity_after_collision(m1, u1, m2, 0.0, -back),
+                          f"B was moving towards A at {n(speed2, 2)} {_PER_S_PLAIN} before: its momentum before, "
+                          f"−{mb} × {n(speed2, 2)}, belongs in the total.", see="momentum"),) if speed2 else ()
+    return Part("speed of B just after the collision", v2, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
+                revisit="Momentum is conserved, with a sign on every velocity: A bounces back, so its "
+                        "velocity after is negative. m₁u₁ = m₁v₁ + m₂v₂.",
+                mistakes=one_of_each(v2, (
+                    Mistake("momentum added as scalars", velocity_after_collision(m1, u1, m2, -speed2, back),
+                            f"You gave A's velocity after the same sign as before. A bounces back, so its "
+                            f"momentum after is negative: {ma} × {ua} = {ma} × (−{vb}) + {mb}v.",
+                            see="momentum"),
+                    Mistake("changes in velocity taken as equal", u1 + back - speed2,
+                            "You gave B the same change in velocity as A. It is the changes in momentum that "
+                            "are equal and opposite: B's mass is different."),
+                    Mistake("as if A stopped", velocity_after_collision(m1, u1, m2, -speed2, 0.0),
+                            "You gave B all of A's momentum, as if A stopped. A bounces back, so B gains "
+                            "more than that."),
+                    *b_left_out,
+                )), see="conservation")
 
-TEMPLATES = (
+
+TEMPLATES = checked_givens(
     Template("quick-check-4", "elastic", ("numeric",), "Quick check 4", light_ball_hits_heavy_ball,
              {"m1": Draw(1.0, 0.5, 2.0, 0.1), "u1": Draw(6.0, 2.0, 9.0, 0.5), "m2": Draw(2.0, 1.0, 5.0, 0.5)}),
     Template("elastic-or-not-choice", "elastic", ("mcq",), "Is it elastic?", elastic_or_not_choice,

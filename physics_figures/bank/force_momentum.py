@@ -23,7 +23,7 @@ from ..models import (
     velocity_from_momentum,
     weight,
 )
-from ..notation import axis_power, power_text
+from ..notation import axis_power, power_text, round_number
 from ..notation import format_number as n
 from ..parts.graph import value_axis
 from ..questions import (
@@ -47,6 +47,7 @@ from ..variants import Draw, Template
 from ._common import M_S as _M_S
 from ._common import MOMENTUM_WORKING_C1, PER_S, reading, reading_rule, w
 from ._common import N_S as _N_S
+from .givens import checked_givens
 
 a_answer, mass_symbol, contact_symbol = sympy.symbols("a mass contact")
 
@@ -360,56 +361,91 @@ def cyclist_momentum_time(start: float = 240.0, end: float = 640.0, begins: floa
     )
 
 
+#: The bounce graph's first axes, which hold the variants' momenta (1.5 to 2.9 N s before, 0.5 to
+#: 2.0 N s after) and times (to 0.09 s); a paper's bounce may need others.
+_BOUNCE_AXES = {"time_max": 0.1, "time_division": 0.002, "value_max": 3.0, "value_min": -3.0, "value_division": 0.1}
+#: Where the ball bounces: the surface, the two directions along the line it moves on, how it
+#: moves, and which way its momentum turns.
+_BOUNCE_SURFACES = (("wall", "towards the wall", "away from the wall", ("hits a wall at right angles and bounces "
+                     "straight back"), "from towards the wall to away from it"),
+                    ("floor", "downwards", "upwards", "falls vertically onto a floor and bounces straight back up",
+                     "from downwards to upwards"))
+
+
+def _bounce_axes(before: float, after: float, ends: float) -> dict[str, float]:
+    """The graph's axes: the first ones while they hold the line with each momentum at least five
+    small squares from zero, else axes that grow or shrink with it (parts.graph.value_axis), as a
+    paper's bounce of 0.93 N s, then 0.375 N s back, 0.12 s in contact, needs."""
+    axes = dict(_BOUNCE_AXES)
+    if not 0.5 <= min(before, after) <= max(before, after) <= 3.0:
+        axes["value_min"], axes["value_max"], axes["value_division"] = value_axis(before, -after)
+    if ends > 0.09:
+        _, axes["time_max"], axes["time_division"] = value_axis(ends)
+    # no float dust: 0.15, not 0.15000000000000002
+    return {name: float(round_number(value, 12)) for name, value in axes.items()}
+
+
 def ball_bounce_momentum_time(before: float = 2.4, after: float = 1.6, arrives: float = 0.02,
-                              contact: float = 0.03) -> Question:
+                              contact: float = 0.03, surface: float = 0) -> Question:
     """A momentum-time graph of a ball that bounces back: the momentum changes sign, so
-    Δp = m(u + v) in size (notes: common mistake, forgetting the direction reverses)."""
-    towards, away = "towards the wall", "away from the wall"
-    history = MomentumHistory((0.0, arrives, arrives + contact, 0.1), (before, before, -after, -after))
-    force = float(history.segment_forces[1])  # negative: away from the wall
+    Δp = m(u + v) in size (notes: common mistake, forgetting the direction reverses).
+
+    As the papers' bounces: arrives = 0 starts the line falling at t = 0 (no flat part before),
+    the axes grow with a paper's momenta and contact time (_bounce_axes), and surface = 1 drops
+    the ball onto a floor, as 9702/21/M/J/16 Q3(b)(ii) (6.2 m s⁻¹ down, 2.5 m s⁻¹ up, 0.12 s:
+    11 N, upwards)."""
+    if surface not in (0, 1):
+        raise ValueError(f"surface must be 0 (a wall) or 1 (a floor) (got surface={surface!r})")
+    where, towards, away, bounces, turns = _BOUNCE_SURFACES[int(surface)]
+    times, momenta = (0.0, arrives, arrives + contact), (before, before, -after)
+    if arrives == 0:  # the bounce starts at once: no flat part before it
+        times, momenta = times[1:], momenta[1:]
+    axes = _bounce_axes(before, after, arrives + contact)
+    history = MomentumHistory((*times, axes["time_max"]), (*momenta, -after))
+    force = float(history.segment_forces[-2])  # negative: away from the surface
     graph = Graph("momentum–time", "momentum", "N s", tuple(zip(history.times, history.momenta, strict=True)),
-                  time_division=0.002, value_division=0.1, time_max=0.1, value_max=3.0, value_min=-3.0)
+                  **axes)
+    half = axes["value_division"] / 2
+    positive = "the direction towards the wall" if where == "wall" else "downwards"
     return Question(
         key="graph-bounce-momentum-time",
-        text=("A ball hits a wall at right angles and bounces straight back. The graph shows its "
-              "momentum, taking the direction towards the wall as positive. "
-              f"{reading_rule(0.05, 'N s')}"),
+        text=(f"A ball {bounces}. The graph shows its momentum, taking {positive} as positive. "
+              f"{reading_rule(half, 'N s')}"),
         givens=(),
         graph=graph,
         parts=(
-            GraphPart("momentum of the ball before it hits the wall", before, "N s", "momentum",
-                      units=_N_S, tolerance=0.05,
+            GraphPart(f"momentum of the ball before it hits the {where}", before, "N s", "momentum",
+                      units=_N_S, tolerance=half,
                       revisit="Read the line before the bounce against the momentum axis.", see="momentum"),
             GraphPart("momentum of the ball after it bounces", -after, "N s", "momentum", units=_N_S,
-                      tolerance=0.05, direction="signed", positive=towards,
-                      revisit="After the bounce the ball moves away from the wall: its momentum is "
+                      tolerance=half, direction="signed", positive=towards,
+                      revisit=f"After the bounce the ball moves {away}: its momentum is "
                               "negative. Read the line below the time axis.", see="momentum"),
-            Part("average force on the ball from the wall", abs(force), "N", "force", shown_sig_figs=2,
+            Part(f"average force on the ball from the {where}", abs(force), "N", "force", shown_sig_figs=2,
                  direction="choice", choices=(towards, away), answer_direction=away,
                  ecf=Ecf((b_answer - a_answer) / interval_symbol, {"interval": contact}),
                  # both momenta and the contact's two ends are read off the graph
-                 readings=(Reading("momentum before", before, graph.value_division / 2),
-                           Reading("momentum after", -after, graph.value_division / 2),
-                           Reading("time the ball meets the wall", arrives, graph.time_division / 2),
-                           Reading("time the ball leaves the wall", arrives + contact, graph.time_division / 2)),
+                 readings=(Reading("momentum before", before, half),
+                           Reading("momentum after", -after, half),
+                           Reading(f"time the ball meets the {where}", arrives, axes["time_division"] / 2),
+                           Reading(f"time the ball leaves the {where}", arrives + contact, axes["time_division"] / 2)),
                  answer_from_readings=lambda p0, p1, t0, t1: average_force(p1 - p0, t1 - t0),
-                 direction_hint="The momentum changes from towards the wall to away from it, so the "
-                                "force on the ball is away from the wall.",
+                 direction_hint=f"The momentum changes {turns}, so the force on the ball is {away}.",
                  revisit="F = Δp / Δt, with Δp = final − initial momentum, signs included.",
                  mistakes=(
                      Mistake("forgot that the ball reverses", average_force(before - after, contact),
                              "You subtracted the sizes. The momentum changes sign: Δp = (−"
-                             f"{reading(after, 0.05)}) − {reading(before, 0.05)}, so the sizes add."),
+                             f"{reading(after, half)}) − {reading(before, half)}, so the sizes add."),
                      Mistake("only the momentum before", average_force(before, contact),
                              "You used only the momentum before. Δp = final − initial momentum.", see="conservation"),
                  ), see="second-law"),
         ),
         mark_scheme=(
-            Mark(f"{reading(before, 0.05)} N s", "B1", "a"),
-            Mark(f"{reading(-after, 0.05)} N s (negative: away from the wall)", "B1", "b"),
-            Mark(f"F = Δp / Δt = ({reading(-after, 0.05)} − {reading(before, 0.05)}) / {w(contact)}", "C1", "c"),
+            Mark(f"{reading(before, half)} N s", "B1", "a"),
+            Mark(f"{reading(-after, half)} N s (negative: {away})", "B1", "b"),
+            Mark(f"F = Δp / Δt = ({reading(-after, half)} − {reading(before, half)}) / {w(contact)}", "C1", "c"),
             Mark(f"= {n(abs(force), 2)} N", "A1", "c"),
-            Mark("<strong>away from the wall</strong>", "B1", "c", earns="direction"),
+            Mark(f"<strong>{away}</strong>", "B1", "c", earns="direction"),
         ),
     )
 
@@ -696,12 +732,20 @@ c_answer, d_answer, mass_given = sympy.symbols("c d mass_given")
 #: the speeding up stays at or below this, W.
 LORRY_ACCELERATION = (0.5, 1.5)
 LORRY_POWER = 300e3
+#: A braking lorry slows at most about as hard as tyres grip on a dry road, m s^-2 (newton's stopping car).
+LORRY_BRAKING = 6.5
 
 
 def _lorry_within_its_engine(mass: float, gain_in_momentum: float, lasts: float, speed_after: float) -> None:
-    """Refuse a lorry that speeds up harder, or needs more power, than a lorry does."""
+    """Refuse a lorry that speeds up harder, or needs more power, than a lorry does, or that
+    brakes harder than its tyres allow."""
     force = average_force(gain_in_momentum, lasts)  # the gradient of the momentum-time graph
     rate = acceleration(force, mass)
+    if gain_in_momentum < 0:  # braking: no engine power needed, only grip
+        if -rate > LORRY_BRAKING:
+            raise ValueError(f"lasts must let the lorry brake at no more than {LORRY_BRAKING:g} m s^-2, as hard as "
+                             f"tyres grip on a dry road (got lasts={lasts!r} s: {n(-rate, 2)} m s^-2)")
+        return
     if not LORRY_ACCELERATION[0] <= rate <= LORRY_ACCELERATION[1]:
         raise ValueError(f"lasts must give a lorry's acceleration, {LORRY_ACCELERATION[0]:g} to "
                          f"{LORRY_ACCELERATION[1]:g} m s^-2 (got lasts={lasts!r} s: {n(rate, 2)} m s^-2)")
@@ -719,17 +763,27 @@ def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 
     (parts.graph.value_axis). Readings earn B1 within half a small square; each calculation C1
     A1, as 9702/21/M/J/23 Q3 reads a block's momentum off its graph, and 9702/21/M/J/16
     Q3(b)(ii) marks a change in momentum C1 then its result A1. The lorry speeds up as a loaded
-    lorry can (_lorry_within_its_engine)."""
-    history = MomentumHistory((0.0, begins, begins + lasts, 20.0),
-                              (momentum(mass, speed_before),) * 2 + (momentum(mass, speed_after),) * 2)
-    _lorry_within_its_engine(mass, history.momenta[2] - history.momenta[1], lasts, speed_after)
-    before, after = (float(p) for p in history.momenta[1:3])
-    _, top, division = value_axis(after)
+    lorry can (_lorry_within_its_engine).
+
+    As the papers draw momentum-time graphs, the line may start at t = 0 (begins = 0: no flat
+    part before), and the lorry may brake (speed_after below speed_before: the line falls, and
+    (d) asks the decrease in its speed)."""
+    times, momenta = (0.0, begins, begins + lasts, 20.0), (momentum(mass, speed_before),) * 2 + (
+        momentum(mass, speed_after),) * 2
+    if begins == 0:  # the change starts at once
+        times, momenta = times[1:], momenta[1:]
+    history = MomentumHistory(times, momenta)
+    before, after = (float(p) for p in history.momenta[-3:-1])
+    _lorry_within_its_engine(mass, after - before, lasts, speed_after)
+    brakes = after < before
+    _, top, division = value_axis(max(before, after))
     tolerance = division / 2
     graph = Graph("momentum–time", "momentum", "N s", tuple(zip(history.times, history.momenta, strict=True)),
                   time_division=0.5, value_division=division, time_max=20.0, value_max=top)
     speed = velocity_from_momentum(after, mass)
-    gain = velocity_from_momentum(after - before, mass)
+    gain = abs(velocity_from_momentum(after - before, mass))  # the increase, or the decrease as it brakes
+    change, change_words = ("slows down", "decrease") if brakes else ("speeds up", "increase")
+    start_words = "where the line starts, at time 0" if begins == 0 else "the flat part of the line at the start"
     m, p1, p2 = n(mass, 2), reading(before, tolerance), reading(after, tolerance)
     t_end = n(begins + lasts, decimals=1)
     # an axis of 10⁵ N s and more is labelled in its power of ten ("momentum / 10⁵ N s")
@@ -744,14 +798,14 @@ def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 
 
     return Question(
         key="graph-lorry-speed-momentum-time",
-        text=(f"A lorry of mass {m} kg speeds up along a straight, level road. The graph shows how its "
+        text=(f"A lorry of mass {m} kg {change} along a straight, level road. The graph shows how its "
               f"momentum varies with time. {reading_rule(tolerance, 'N s')}"),
         givens=(Given("mass", mass, "kg", 2),),
         graph=graph,
         parts=(
             GraphPart("momentum of the lorry at time 0", before, "N s", "momentum", units=_N_S,
                       tolerance=tolerance, see="momentum", mistakes=unscaled(before),
-                      revisit="Read the flat part of the line at the start against the momentum axis."),
+                      revisit=f"Read {start_words} against the momentum axis."),
             GraphPart(f"momentum of the lorry after {t_end} s", after, "N s", "momentum", units=_N_S,
                       tolerance=tolerance, see="momentum", mistakes=unscaled(after),
                       revisit="Read the flat part of the line at the end against the momentum axis."),
@@ -770,20 +824,21 @@ def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 
                      Mistake("the change in momentum ÷ mass", gain,
                              "That is the gain in speed, Δp / m. The speed is the whole momentum ÷ the mass."),
                  ), see="momentum"),
-            Part("increase in the speed of the lorry", gain, "m s^-1", "speed", units=_M_S, shown_sig_figs=2,
-                 ecf=Ecf((b_answer - a_answer) / mass_given, {"mass_given": mass}),
+            Part(f"{change_words} in the speed of the lorry", gain, "m s^-1", "speed", units=_M_S, shown_sig_figs=2,
+                 ecf=Ecf(((a_answer - b_answer) if brakes else (b_answer - a_answer)) / mass_given,
+                         {"mass_given": mass}),
                  readings=(Reading("momentum before", before, tolerance), Reading("momentum after", after, tolerance)),
-                 answer_from_readings=lambda read_before, read_after: velocity_from_momentum(read_after - read_before,
-                                                                                             mass),
+                 answer_from_readings=lambda read_before, read_after: abs(velocity_from_momentum(
+                     read_after - read_before, mass)),
                  revisit="The change in speed is the change in momentum ÷ the mass: Δv = Δp / m.",
                  mistakes=(
                      Mistake("the final speed, not the change", speed,
                              "That is the speed at the end. Subtract the momentum at the start first: "
                              "Δv = (p₂ − p₁) / m."),
-                     Mistake("the gradient: change in momentum ÷ time", average_force(after - before, lasts),
+                     Mistake("the gradient: change in momentum ÷ time", abs(average_force(after - before, lasts)),
                              "That is Δp / Δt, the gradient: the resultant force, in N. The change in speed is "
                              "Δp / m.", see="momentum-time-graph"),
-                     Mistake("divided by the weight", (after - before) / weight(mass),
+                     Mistake("divided by the weight", abs(after - before) / weight(mass),
                              f"You divided by the weight, mg. Δv = Δp / m, with the mass {m} kg.", see="weight"),
                  ), see="momentum"),
         ),
@@ -792,13 +847,13 @@ def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 
             Mark(f"{p2} N s", "B1", "b"),
             Mark(f"v = p / m = {p2} / {m}", "C1", "c"),
             Mark(f"= {n(speed, 2)} {PER_S}", "A1", "c"),
-            Mark(f"Δv = Δp / m = ({p2} − {p1}) / {m}", "C1", "d"),
+            Mark(f"Δv = Δp / m = ({p1} − {p2}) / {m}" if brakes else f"Δv = Δp / m = ({p2} − {p1}) / {m}", "C1", "d"),
             Mark(f"= {n(gain, 2)} {PER_S}", "A1", "d"),
         ),
     )
 
 
-TEMPLATES = (
+TEMPLATES = checked_givens(
     Template("quick-check-1", "force-momentum", ("numeric",), "Quick check 1",
              trolley_pushed_from_rest,
              {"force": Draw(5.0, 2.0, 9.0, 0.5), "mass": Draw(2.0, 1.0, 5.0, 0.5),

@@ -37,6 +37,7 @@ from ..questions import (
 from ..variants import Draw, Template
 from . import diagrams
 from ._common import M_S, N_S, PER_S, enough_figures, reading, reading_rule, w
+from .givens import checked_givens
 
 a_answer, m1_symbol, u1_symbol, m2_symbol, speed2_symbol = sympy.symbols("a m1 u1 m2 speed2")
 
@@ -469,7 +470,7 @@ def collision_third_law(mass_a: float = 0.60, speed_a: float = 2.5, mass_b: floa
 
 
 
-TEMPLATES = (
+TEMPLATES = checked_givens(
     Template("quick-check-2", "momentum-line", ("numeric",), "Quick check 2", rifle_recoil,
              {"rifle": Draw(4.0, 3.0, 6.0, 0.5), "bullet": Draw(0.010, 0.008, 0.020, 0.001),
               "bullet_speed": Draw(400.0, 300.0, 900.0, 50.0)}),

@@ -33,6 +33,7 @@ from ..questions import (
 )
 from ..variants import Draw, Template
 from ._common import M_S2, PER_S, PER_S2, enough_figures, stated_figures, w
+from .givens import checked_givens
 
 a_answer, trailer_mass_symbol, trailer_resistance_symbol = sympy.symbols("a trailer_mass trailer_resistance")
 hanging_mass_symbol, gravity_symbol = sympy.symbols("hanging_mass gravity")
@@ -742,7 +743,7 @@ def stopping_force_from_distance(mass: float = 1500.0, speed: float = 20.0, dist
     )
 
 
-TEMPLATES = (
+TEMPLATES = checked_givens(
     Template("practice-car-slowing", "newton", ("numeric",), "Car slowing down", car_slowing,
              {"mass": Draw(800.0, 600.0, 1500.0, 100.0), "driving": Draw(1500.0, 1000.0, 3000.0, 100.0),
               "resistive": Draw(2300.0, 1500.0, 4000.0, 100.0)}),

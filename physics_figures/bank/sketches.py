@@ -35,6 +35,7 @@ from ..pictures import Graph
 from ..questions import Given, Mark, Question
 from ..variants import Draw, Template
 from ._common import PER_S
+from .givens import checked_givens
 
 #: Sketch templates vary their numbers (the axes and the levels move); they count as
 #: situations (variants.MIN_SITUATIONS), split between the site and the teachers' reserve:
@@ -254,7 +255,7 @@ def bounce_force(mass: float = 0.059, down: float = 8.7, up: float = 5.4, contac
         part)
 
 
-TEMPLATES = [
+TEMPLATES = checked_givens(
     Template("sketch-momentum-from-force", "force-momentum", ("sketch",), "Sketch: momentum from a force in words",
              momentum_from_force, draws={"force": Draw(6.0, 2.0, 9.0, 1.0), "duration": Draw(2.5, 1.5, 3.0, 0.5)},
              variant_count=_VARIANTS),
@@ -269,4 +270,4 @@ TEMPLATES = [
              draws={"mass": Draw(0.059, 0.050, 0.070, 0.001), "down": Draw(8.7, 6.0, 9.0, 0.1),
                     "up": Draw(5.4, 3.0, 5.5, 0.1), "contact": Draw(0.091, 0.080, 0.100, 0.001)},
              variant_count=_VARIANTS),
-]
+)

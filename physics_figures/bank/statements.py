@@ -25,6 +25,7 @@ from ..questions import Mark, Question
 from ..variants import Draw, Template
 from . import statement_rules as rules
 from ._common import PER_S2
+from .givens import checked_givens
 
 #: Why a definition has one variant (Template.one_wording).
 _ONE_DEFINITION = ("A definition has one right wording: any situation put around the question leaves "
@@ -335,7 +336,7 @@ def _situations(situations: tuple) -> dict[str, Draw]:
     return {"situation": Draw(0, 0, len(situations) - 1, 1)}
 
 
-TEMPLATES = (
+TEMPLATES = checked_givens(
     Template("define-momentum", "definitions", ("text",), "Define momentum", define_momentum,
              one_wording=_ONE_DEFINITION),
     Template("define-force", "definitions", ("text",), "Define force", define_force,

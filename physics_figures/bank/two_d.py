@@ -37,6 +37,7 @@ from ..questions import (
 from ..variants import Draw, Template
 from . import diagrams
 from ._common import M_S, N_S, PER_S, enough_figures, one_of_each, w
+from .givens import checked_givens
 
 
 def pucks_glancing(mass: float = 0.40, speed_before: float = 2.5, speed_after: float = 1.5,
@@ -664,7 +665,7 @@ def explosion_two_pieces(mass: float = 2.0, speed: float = 5.0, piece: float = 0
     )
 
 
-TEMPLATES = (
+TEMPLATES = checked_givens(
     Template("practice-pucks", "two-d", ("numeric",), "Pucks on an air table", pucks_glancing,
              {"mass": Draw(0.40, 0.20, 0.80, 0.05), "speed_before": Draw(2.5, 1.0, 4.0, 0.1),
               "speed_after": Draw(1.5, 0.5, 3.0, 0.1), "angle": Draw(40.0, 20.0, 70.0, 5.0)}),

@@ -38,6 +38,7 @@ from ..notation import format_number as n
 from ..questions import Ecf, Mark, Mistake, Part, Question
 from ..variants import Template
 from ._common import MOMENTUM_WORKING_C1
+from .givens import checked_givens
 
 _N_S = "N s or kg m s^-1"
 _M_S = "m s^-1 (m/s)"
@@ -481,7 +482,7 @@ def sphere_in_oil() -> Question:
     )
 
 
-TEMPLATES = (
+TEMPLATES = checked_givens(
     Template("example-1-try", "newton", ("numeric",), "Example 1: try it first", car_and_trailer,
              try_first=True),
     Template("example-2-try", "force-momentum", ("numeric",), "Example 2: try it first", ball_off_a_wall,

@@ -1,7 +1,8 @@
 
-"""The real-paper suite: published 9702 Paper 2 Dynamics parts (tests/real_papers/cases.json, each
-citing its paper, question and part), posed by the bank's templates with the papers' own numbers and
-marked by the browser's engine (book/_ext/questions/static/marking.js) under Node, in one run.
+"""The real-paper suite: published 9702 Paper 1 and Paper 2 Dynamics parts (every *.json case file of
+tests/real_papers/, cases.json and more_papers.json, read as one list; each case cites its paper,
+question and part), posed by the bank's templates with the papers' own numbers and marked by the
+browser's engine (book/_ext/questions/static/marking.js) under Node, in one run.
 
 A case that cannot be posed stays in the file with its blocker; the test checks that each blocker
 still holds, so a case never drops out silently, and one that becomes posable is named."""
@@ -17,8 +18,9 @@ from test_marks_rules import mark_questions
 
 from physics_figures import bank, variants
 
-CASES_FILE = Path(__file__).with_name("cases.json")
-CASES = json.loads(CASES_FILE.read_text(encoding="utf-8"))["cases"]
+#: Every case file of the folder (cases.json, more_papers.json, ...), read as one list.
+CASE_FILES = sorted(Path(__file__).parent.glob("*.json"))
+CASES = [case for path in CASE_FILES for case in json.loads(path.read_text(encoding="utf-8"))["cases"]]
 POSED = [case for case in CASES if "cannot_pose" not in case]
 PAPER = re.compile(r"^9702/(1[1-3]|2[1-3])/(F/M|M/J|O/N)/\d\d$")
 
@@ -50,7 +52,16 @@ def test_every_case_cites_a_published_paper_question_and_part():
         assert PAPER.match(case["paper"]), case["id"]
         assert case["question"].isdigit() and re.fullmatch(r"(\([a-z]+\))*(\([ivx]+\))?\d?", case["part"]), case["id"]
         assert case["sources"] and all(url.startswith("https://") for url in case["sources"].values()), case["id"]
-    assert len({case["id"] for case in CASES}) == len(CASES), "a part is in the file twice"
+    assert len({case["id"] for case in CASES}) == len(CASES), "a part is in the case files twice"
+
+
+def test_every_case_file_of_the_folder_is_in_the_suite():
+    """A case file added to the folder (more_papers.json beside cases.json) is read, whole."""
+    ids = [case["id"] for case in CASES]
+    for path in Path(__file__).parent.glob("*.json"):
+        data = json.loads(path.read_text(encoding="utf-8"))
+        assert data["about"] and data["cases"], path.name
+        assert all(case["id"] in ids for case in data["cases"]), f"{path.name} is not read"
 
 
 def test_the_suite_holds_the_parts_of_at_least_fifteen_papers():

@@ -36,7 +36,7 @@ from ..questions import (
 )
 from ..variants import Draw, Template
 from . import diagrams
-from ._common import M_S, N_S, PER_S, enough_figures, reading, reading_rule, w
+from ._common import M_S, N_S, PER_S, enough_figures, one_of_each, reading, reading_rule, w
 from .givens import checked_givens
 
 a_answer, m1_symbol, u1_symbol, m2_symbol, speed2_symbol = sympy.symbols("a m1 u1 m2 speed2")
@@ -82,31 +82,52 @@ def rifle_recoil(rifle: float = 4.0, bullet: float = 0.010, bullet_speed: float 
     )
 
 
-def trolleys_stick(m1: float = 2.0, u1: float = 3.0, m2: float = 1.0, speed2: float = 1.5) -> Question:
-    """Head-on, stick together, with signs; then the kinetic energy transferred."""
-    u2 = -speed2  # the second trolley moves towards the first: against the positive direction
-    if m1 == m2:  # the text names each trolley by its mass
-        raise ValueError(f"m2 must differ from m1, or the question cannot say which trolley is which "
-                         f"(got m1={m1!r}, m2={m2!r})")
-    if m1 * u1 <= m2 * speed2:
+def trolleys_stick(m1: float = 2.0, u1: float = 3.0, m2: float = 1.0, speed2: float = 1.5,
+                   same_way: float = 0) -> Question:
+    """Stick together, with signs; then the kinetic energy transferred. same_way: 0, head-on (the
+    second trolley moves towards the first); 1, the first catches the second, which moves ahead
+    of it the same way (9702/23/M/J/25 Q4(b)). Equal masses are named first and second
+    (9702/12/M/J/14 Q7's two 5000 kg carriages)."""
+    ahead = bool(int(same_way))
+    u2 = speed2 if ahead else -speed2  # positive: the first trolley's direction
+    if ahead and u1 <= speed2:
+        raise ValueError(f"u1 must exceed speed2={speed2!r} m s^-1, or the first trolley never catches the "
+                         f"second (got u1={u1!r})")
+    if not ahead and m1 * u1 <= m2 * speed2:
         raise ValueError(f"speed2 must leave the pair moving on in the {n(m1, 2)} kg trolley's direction "
                          f"(m1 u1 > m2 speed2; got m1={m1!r}, u1={u1!r}, m2={m2!r}, speed2={speed2!r})")
     v = stick_together(m1, u1, m2, u2)
     before = total_kinetic_energy((m1, m2), (u1, u2))
     after = kinetic_energy(m1 + m2, v)
     lost = before - after
-    no_sign = stick_together(m1, u1, m2, -u2)
+    wrong_sign = stick_together(m1, u1, m2, -u2)
     first, second, total = n(m1, 2), n(m2, 2), w(m1 + m2)
+    # equal masses cannot name a trolley by its mass
+    first_name, second_name = ((f"{first} kg trolley", f"{second} kg trolley") if m1 != m2
+                               else ("first trolley", "second trolley"))
     # the common velocity with the figures the kinetic energy after needs
     (v_carried,) = enough_figures((v,), lambda v1: kinetic_energy(m1 + m2, v1), w(after))
-    positive = f"the direction the {first} kg trolley moves at first"
+    positive = f"the direction the {first_name} moves at first"
     ke_before = m1_symbol * u1_symbol**2 / 2 + m2_symbol * speed2_symbol**2 / 2
+    if ahead:
+        meeting = (f"catches up with a {second} kg trolley moving ahead of it in the same direction at "
+                   f"{n(speed2, 2)} {PER_S}")
+        sign_mistake = Mistake("second trolley's momentum taken as negative", wrong_sign,
+                               f"The {second_name} moves the same way as the first, so its momentum is "
+                               f"positive: {first} × {n(u1, 2)} + {second} × {n(speed2, 2)}.", see="momentum")
+        wrong_carried = f"Your velocity after is wrong: the {second_name}'s momentum is positive."
+    else:
+        meeting = f"collides head-on with a {second} kg trolley moving towards it at {n(speed2, 2)} {PER_S}"
+        sign_mistake = Mistake("momentum added as scalars", wrong_sign,
+                               f"The {second_name} moves the other way, so its momentum is negative: "
+                               f"{first} × {n(u1, 2)} + {second} × (−{n(speed2, 2)}).", see="momentum")
+        wrong_carried = f"Your velocity after is wrong: the {second_name}'s momentum is negative."
+    ignored_why = "It is moving, the same way." if ahead else "It is moving, the other way."
     return Question(
         key="practice-trolleys-stick",
         diagram=diagrams.line(((f"{first} kg", u1), (f"{second} kg", u2)), (("", None),), names=("", "")),
-        text=(f"A {first} kg trolley moving at {n(u1, 2)} {PER_S} collides head-on with a {second} kg "
-              f"trolley moving towards it at {n(speed2, 2)} {PER_S}. They stick together.\n\n"
-              f"(a) Taking the direction of the {first} kg trolley as positive, calculate their velocity "
+        text=(f"A {first} kg trolley moving at {n(u1, 2)} {PER_S} {meeting}. They stick together.\n\n"
+              f"(a) Taking the direction of the {first_name} as positive, calculate their velocity "
               "after the collision.\n\n"
               "(b) Calculate the kinetic energy transferred to other forms."),
         givens=(Given("m1", m1, "kg", 2), Given("u1", u1, "m s^-1", 2), Given("m2", m2, "kg", 2),
@@ -116,18 +137,16 @@ def trolleys_stick(m1: float = 2.0, u1: float = 3.0, m2: float = 1.0, speed2: fl
                  direction="signed", positive=positive,
                  revisit="Momentum before = momentum after, with a minus sign for the trolley "
                          "moving the other way: m₁u₁ + m₂u₂ = (m₁ + m₂)v.",
-                 mistakes=(
-                     Mistake("momentum added as scalars", no_sign,
-                             f"The {second} kg trolley moves the other way, so its momentum is negative: "
-                             f"{first} × {n(u1, 2)} + {second} × (−{n(speed2, 2)}).", see="momentum"),
+                 mistakes=one_of_each(v, (
+                     sign_mistake,
                      # wrong physics: keeps no mark (9702/22/M/J/20, annotations: "XP ... No credit is
                      # given for substitution, or subsequent arithmetic, in a physically incorrect equation")
-                     Mistake("one body's mass used for both", (momentum(m1, u1) - momentum(m2, speed2)) / m1,
-                             f"You divided by the {first} kg trolley's mass only. They move off together: "
+                     Mistake("one body's mass used for both", (momentum(m1, u1) + momentum(m2, u2)) / m1,
+                             f"You divided by the {first_name}'s mass only. They move off together: "
                              "divide the total momentum by the total mass, m₁ + m₂."),
                      Mistake("second trolley ignored", momentum(m1, u1) / (m1 + m2),
-                             f"You left out the {second} kg trolley's momentum. It is moving, the other way.", see="momentum"),
-                 ), see="conservation"),
+                             f"You left out the {second_name}'s momentum. {ignored_why}", see="momentum"),
+                 ), signed=True), see="conservation"),
             Part("kinetic energy transferred to other forms", lost, "J", "energy", shown_sig_figs=3,
                  working=(Step("common velocity", v, "m s^-1", 2),),
                  answer_from=lambda common: before - kinetic_energy(m1 + m2, common),
@@ -135,20 +154,20 @@ def trolleys_stick(m1: float = 2.0, u1: float = 3.0, m2: float = 1.0, speed2: fl
                          {"m1": m1, "u1": u1, "m2": m2, "speed2": speed2}),
                  revisit="Work out the total kinetic energy before and after separately; the "
                          "difference is the energy transferred.",
-                 mistakes=(
+                 mistakes=one_of_each(lost, (
                      Mistake("kinetic energy conserved", 0.0,
                              "Kinetic energy is conserved only in an elastic collision. Trolleys "
                              "that stick together always lose some."),
                      Mistake("kinetic energy after only", after,
                              "That is the kinetic energy after. Subtract it from the kinetic energy "
                              "before."),
-                     Mistake("wrong velocity carried on", before - kinetic_energy(m1 + m2, no_sign),
-                             f"Your velocity after is wrong: the {second} kg trolley's momentum is negative.", see="momentum"),
-                 ), see="kinetic-energy"),
+                     Mistake("wrong velocity carried on", before - kinetic_energy(m1 + m2, wrong_sign),
+                             wrong_carried, see="momentum"),
+                 )), see="kinetic-energy"),
         ),
         mark_scheme=(
             Mark(f"{first} × {n(u1, 2)} + {second} × ({n(u2, 2)}) = {total}v", "C1", "a"),
-            Mark(f"v = {n(v, 2)} {PER_S} in the {first} kg trolley's direction", "A1", "a"),
+            Mark(f"v = {n(v, 2)} {PER_S} in the {first_name}'s direction", "A1", "a"),
             Mark(f"E<sub>k</sub> before = ½ × {first} × {n(u1, 2)}<sup>2</sup> + ½ × {second} × "
                  f"{n(speed2, 2)}<sup>2</sup> = {w(before)} J; after = ½ × {total} × {v_carried}<sup>2</sup> "
                  f"= {w(after)} J", "C1", "b"),

@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import ClassVar
 
 from .. import marking
+from ..checks import require as _require  # noqa: F401 (the kinds and questions.py take it from here)
 from ..notation import format_number, join_units
 
 #: How a part treats direction: a size only, a signed value along a stated positive
@@ -44,11 +45,6 @@ def number(value: float, sig_figs: int) -> str:
 def unit_text(unit: str) -> str:
     """A unit for plain text: "m s^-1" -> "m s⁻¹"."""
     return re.sub(r"\^(-?\d+)", lambda m: m.group(1).translate(_SUPERSCRIPT), unit)
-
-
-def _require(ok: bool, name: str, value, rule: str) -> None:
-    if not ok:
-        raise ValueError(f"{name} {rule} (got {name}={value!r})")
 
 
 #: Where the product kinds' browser twins live (the questions extension's static folder).

@@ -1,0 +1,11 @@
+"""The one check that a value given to the bank's code keeps its rule (templates, parts,
+topics, worksheets): a ValueError naming the argument, the value and the rule. The models
+check their numbers with models/_checks.py, which also names a unit and an index."""
+
+from __future__ import annotations
+
+
+def require(ok: bool, name: str, value, rule: str) -> None:
+    """Raise ValueError("NAME RULE (got NAME=VALUE)") unless ok."""
+    if not ok:
+        raise ValueError(f"{name} {rule} (got {name}={value!r})")

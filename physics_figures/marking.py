@@ -7,8 +7,8 @@ working), "answer" (A1, or a B1 that is the answer itself) or "direction" (the B
 the direction's own). The browser's engine classifies an answer (right, 1 s.f., unit
 missing, a named mistake...); the table says which roles that outcome loses, and a line
 earns its mark unless it plays a lost role. The table is JSON so that this module and the
-browser (which gets its ``outcomes`` from the build) read the same rules: the engine in
-``questions.js`` has no marking rule of its own.
+browser (which gets its ``outcomes`` from the build) read the same rules: the engine
+(``marking.js`` and the kinds' markers) has no marking rule of its own.
 """
 
 from __future__ import annotations

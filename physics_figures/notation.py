@@ -187,3 +187,17 @@ def join_units(text: str, *, after_number: bool = False) -> str:
     if after_number:
         text = LEADING_UNIT.sub(lambda m: (UNIT_SPACE if m[1] else "") + _join_unit_run(m[2]), text)
     return text
+
+
+#: A value of the working that is exact within this many significant figures prints in full.
+WORKING_EXACT_UP_TO = 6
+
+
+def working_number(value: float) -> str:
+    """An intermediate value as a mark scheme writes it: exact in full when it is exact to
+    a few figures (0.16 × 25 = 4.0, 900 × 12 = 10 800, 10.125 J), else to 3 s.f. (1.29), so
+    the working never rounds part-way to 2 s.f."""
+    for sig_figs in range(2, WORKING_EXACT_UP_TO + 1):
+        if math.isclose(float(round_number(value, sig_figs)), value, rel_tol=1e-9, abs_tol=1e-12):
+            return format_number(value, sig_figs)
+    return format_number(value, 3)

@@ -13,8 +13,8 @@ import itertools
 import math
 from dataclasses import dataclass
 
+from .checks import require as _require
 from .notation import round_number
-from .refusals import require as _require
 
 
 @dataclass(frozen=True)

@@ -10,8 +10,8 @@ its marker in the browser (book/_ext/questions/static/question-kinds/). Each par
 (SI units, from the models), the unit, how many significant figures it needs, whether
 direction matters, and its named mistakes: the classic wrong methods, each worked from
 the same inputs, each with feedback that names the mistake and the idea to revisit. The
-browser marks with this data (book/_ext/questions/static/questions.js); the answer key
-prints it.
+browser's engine (book/_ext/questions/static/marking.js, with each kind's marker) marks with
+this data; the answer key prints it.
 
 Mark-scheme lines are in the text format too. Each names the part it belongs to and its
 Cambridge code: C1 for a calculation step (compensatory: a right final answer earns it

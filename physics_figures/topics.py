@@ -16,12 +16,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
 
+from .checks import require as _require
 from .variants import Template
-
-
-def _require(ok: bool, name: str, value, rule: str) -> None:
-    if not ok:
-        raise ValueError(f"{name} {rule} (got {name}={value!r})")
 
 
 @dataclass(frozen=True)

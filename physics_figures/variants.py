@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 from . import marking, parts
+from .checks import require as _require
 from .notation import round_number
 from .parts.numeric import G_TEN_SLIP
 from .questions import Question
@@ -41,11 +42,6 @@ SHARED_BELOW = 8
 #: A multiple-choice template's key is no one letter in more than this share of its variants.
 MOST_OF_ONE_LETTER = 0.4
 _MAX_TRIES = 2000
-
-
-def _require(ok: bool, name: str, value, rule: str) -> None:
-    if not ok:
-        raise ValueError(f"{name} {rule} (got {name}={value!r})")
 
 
 @dataclass(frozen=True)

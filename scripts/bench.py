@@ -50,10 +50,12 @@ from browser import (
     site_pages,
 )
 
+from physics_figures.reproducible import source_date_epoch
+
 VENV_BIN = ROOT / ".venv" / "bin"
 ENV = {
     **os.environ,
-    "SOURCE_DATE_EPOCH": os.environ.get("SOURCE_DATE_EPOCH", "1767225600"),
+    "SOURCE_DATE_EPOCH": str(source_date_epoch()),
     "FORCE_SOURCE_DATE": "1",
     "PYTHONHASHSEED": "0",
 }

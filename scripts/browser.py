@@ -189,19 +189,6 @@ def open_browser():
             browser.close()
 
 
-@contextlib.contextmanager
-def page_without_errors(browser, url: str, **context_options):
-    """A page of `url` in a fresh context; the test fails if a script on it throws."""
-    context = browser.new_context(**context_options)
-    page = context.new_page()
-    errors = []
-    page.on("pageerror", lambda error: errors.append(str(error)))
-    page.goto(url, wait_until="load")
-    yield page
-    context.close()
-    assert not errors, errors
-
-
 def site_pages(site: Path) -> list[str]:
     """Every page of the built site, as paths relative to its root: the content pages and
     every page Sphinx or Jupyter Book generates (search.html, the root redirect). A page

@@ -7,11 +7,12 @@ bytes: entries sorted, every date SOURCE_DATE_EPOCH, fixed permissions.
 
 from __future__ import annotations
 
-import os
 import sys
 import time
 import zipfile
 from pathlib import Path
+
+from physics_figures.reproducible import source_date_epoch
 
 ZIP = Path("download") / "dynamics.zip"
 FOLDER = "dynamics"
@@ -24,7 +25,7 @@ def zip_site(site: Path) -> Path:
         raise ValueError(f"site must be a built site with an index.html (got site={str(site)!r}): run make html")
     target = site / ZIP
     target.parent.mkdir(parents=True, exist_ok=True)
-    stamp = time.gmtime(int(os.environ.get("SOURCE_DATE_EPOCH", "1767225600")))[:6]
+    stamp = time.gmtime(source_date_epoch())[:6]
     files = sorted(p for p in site.rglob("*") if p.is_file() and p != target
                    and p.relative_to(site).as_posix() not in LEFT_OUT)
     partial = target.with_suffix(".zip.partial")

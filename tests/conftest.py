@@ -136,3 +136,11 @@ def browser():
 def site(browser, base_url):
     """(browser, base_url), for a module whose tests open their own browser contexts."""
     return browser, base_url
+
+
+@pytest.fixture(scope="module")
+def question_site(site, site_dir):
+    """(browser, base_url, {template key: the site path of the first page that asks it})."""
+    from browser import question_pages
+
+    return (*site, question_pages(site_dir))

@@ -7,8 +7,6 @@ source's), from a running position, so a stem that begins like an earlier one is
 from __future__ import annotations
 
 import re
-import subprocess
-from pathlib import Path
 
 from physics_figures.worksheets import Version
 
@@ -18,13 +16,6 @@ STEM_LETTERS = 40
 
 def letters(text: str) -> str:
     return re.sub(r"[^A-Za-z]", "", text)
-
-
-def pdf_pages(path: Path) -> list[str]:
-    info = subprocess.run(["pdfinfo", str(path)], capture_output=True, text=True, check=True).stdout
-    count = int(re.search(r"Pages:\s+(\d+)", info)[1])
-    return [subprocess.run(["pdftotext", "-enc", "UTF-8", "-f", str(n), "-l", str(n), str(path), "-"],
-                           capture_output=True, text=True, check=True).stdout for n in range(1, count + 1)]
 
 
 def _stem(question, index: int) -> str:

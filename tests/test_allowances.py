@@ -23,7 +23,8 @@ import subprocess
 import sys
 from pathlib import Path
 
-from test_marks_rules import mark_questions, typed
+from support.engine import mark_questions
+from support.templates import typed
 
 from physics_figures import bank
 from physics_figures.questions import Alternative, Mistake

@@ -22,8 +22,9 @@ import string
 from pathlib import Path
 
 import pytest
-from browser import site_pages
 from playwright.sync_api import expect
+from support.pages import explorable_page, words
+from support.templates import sig3
 
 from physics_figures.explorables import ABOUT, EXPLORABLES, explorable_data
 from physics_figures.notation import format_number
@@ -62,10 +63,6 @@ def shape(name: str, **values: str) -> str:
     return "\n".join(lines) + "\n"
 
 
-def words(text: str) -> str:
-    return re.sub(r"\s+", " ", text).strip()
-
-
 def quoted(text: str) -> str:
     """A YAML string for the snapshot: the text exactly."""
     return json.dumps(words(text), ensure_ascii=False)
@@ -87,10 +84,6 @@ def plain(html: str) -> str:
 
 def marks_text(earned: int, available: int) -> str:
     return f"{earned}/{available} mark" + ("" if available == 1 else "s")
-
-
-def sig3(x: float) -> str:
-    return f"{x:#.3g}".rstrip(".")
 
 
 class Asked:
@@ -212,12 +205,6 @@ def test_a_question_s_tree_names_its_boxes_and_announces_wrong_then_right(browse
         said = page.locator(".q-graph-said")
         expect(said).to_have_text(re.compile(rf"t = [\d.]+\ss, p = {re.escape(reading)}\s{unit}$"))
     context.close()
-
-
-def explorable_page(site_dir, name: str) -> str:
-    found = [p for p in site_pages(site_dir) if f'data-explorable="{name}"' in (site_dir / p).read_text()]
-    assert found, f"no page shows the {name!r} explorable"
-    return found[0]
 
 
 def shown(x: float) -> str:

@@ -20,6 +20,7 @@ from collections import Counter
 
 import pytest
 from browser import axe_violations, progress_checksum, question_pages
+from support.pages import embedded, load_progress_files
 
 from physics_figures import bank
 from physics_figures.notation import format_number, plain_number
@@ -120,10 +121,6 @@ def exports(site, site_dir, tmp_path_factory) -> list:
     return files
 
 
-def _embedded(page) -> dict:
-    return json.loads(page.locator("script.cp-data").text_content())
-
-
 def _expected(data: dict, files) -> dict:
     """What the page must show, from the files: per student and type (earned, available,
     attempts) with the best attempt at each question (by share of its marks, the first on a
@@ -175,18 +172,12 @@ def _bad_files(files, folder) -> dict:
     return {name: folder / name for name in bad}
 
 
-def _load(page, paths) -> None:
-    before = int(page.get_attribute(".cp", "data-loads"))
-    page.get_by_label("Choose progress files").set_input_files([str(p) for p in paths])
-    page.wait_for_function(f"document.querySelector('.cp').getAttribute('data-loads') > {before}")
-
-
 def test_exports_name_the_book_and_carry_the_checksum_of_their_records(site, exports):
     browser, base = site
     context = browser.new_context()
     page = context.new_page()
     page.goto(base + CLASS_PAGE, wait_until="load")
-    book = _embedded(page)["book"]
+    book = embedded(page, "cp-data")["book"]
     context.close()
     assert book == bank.TOPIC.key
     for path in exports:
@@ -204,9 +195,9 @@ def test_thirty_files_load_and_every_total_matches_the_files_and_the_bad_ones_ar
     page = context.new_page()
     page.on("pageerror", lambda error: errors.append(str(error)))
     page.goto(base + CLASS_PAGE, wait_until="load")
-    data = _embedded(page)
+    data = embedded(page, "cp-data")
     bad = _bad_files(exports, tmp_path)
-    _load(page, [*exports[:15], *bad.values(), *exports[15:]])
+    load_progress_files(page, [*exports[:15], *bad.values(), *exports[15:]])
 
     assert page.locator(".cp-status").inner_text() == "Loaded 30 files; refused 3 (below, with why). The class: 30 students."
     refused = {li.get_attribute("data-file"): li.inner_text() for li in page.locator(".cp-refused li").all()}
@@ -324,7 +315,7 @@ def test_from_the_unzipped_site_export_and_load_work_on_file_urls(site, site_dir
     assert [a["at"] for a in saved["attempts"]] == [a["at"] for a in attempts]
     assert saved["sha256"] == progress_checksum(saved["attempts"]) and saved["book"] == bank.TOPIC.key
     page.goto(site_dir.as_uri() + CLASS_PAGE, wait_until="load")
-    _load(page, [tmp_path / "from-disk.json"])
+    load_progress_files(page, [tmp_path / "from-disk.json"])
     assert page.locator(".cp-status").inner_text().startswith("Loaded 1 file.")
     assert page.locator('.cp-table tr[data-student="from-disk"]').count() == 1
     context.close()
@@ -344,7 +335,7 @@ def test_the_page_passes_axe_with_a_class_loaded_and_works_from_the_keyboard(sit
     assert page.evaluate("document.activeElement.id") == "cp-choose"
     ring = page.evaluate("getComputedStyle(document.querySelector('.cp-choose-label')).outlineStyle")
     assert ring != "none"  # the hidden input's label shows where focus is
-    _load(page, exports[:6])
+    load_progress_files(page, exports[:6])
     assert axe_violations(page) == []
     page.keyboard.press("Tab")
     assert page.evaluate("document.activeElement.textContent") == "Download CSV"

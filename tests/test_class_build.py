@@ -5,13 +5,12 @@ only it does), and print builds say where the page works."""
 
 from __future__ import annotations
 
-import json
 import re
-import textwrap
 from pathlib import Path
 
 import pytest
-from test_progress_build import _build
+from support.pages import embedded
+from support.sphinx import small_book, sphinx_build
 
 from physics_figures import bank
 
@@ -21,36 +20,25 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def _project(tmp_path: Path) -> Path:
-    (tmp_path / "conf.py").write_text(textwrap.dedent(f"""\
-        import sys
-        sys.path.insert(0, {str(ROOT / "book" / "_ext")!r})
-        extensions = ["myst_parser", "questions"]
-        question_topics = ["physics_figures.bank"]
-        root_doc = "index"
-        """))
-    (tmp_path / "index.md").write_text("# Book\n\n```{toctree}\nprogress\nclass\n```\n")
-    (tmp_path / "progress.md").write_text("# Your practice\n\n```{practice-progress}\n```\n")
-    (tmp_path / "class.md").write_text("# The class\n\nWhat the class did.\n\n```{class-progress}\n```\n")
-    return tmp_path
-
-
-def _embedded(page: str, name: str) -> dict:
-    return json.loads(re.search(rf'<script type="application/json" class="{name}">(.*?)</script>', page).group(1))
+    return small_book(tmp_path, {
+        "progress": "# Your practice\n\n```{practice-progress}\n```\n",
+        "class": "# The class\n\nWhat the class did.\n\n```{class-progress}\n```\n",
+    })
 
 
 def test_the_class_page_embeds_the_book_and_its_types_and_loads_its_scripts(tmp_path):
     source = _project(tmp_path)
-    result = _build(source, "html")
+    result = sphinx_build(source, "html")
     assert result.returncode == 0, result.stderr
     page = (source / "_out" / "html" / "class.html").read_text()
-    data = _embedded(page, "cp-data")
+    data = embedded(page, "cp-data")
     assert data["book"] == bank.TOPIC.key
     assert [kind["type"] for kind in data["types"]] == list(bank.TOPIC.type_keys)
     assert [kind["name"] for kind in data["types"]] == [t.title for t in bank.TOPIC.types]
     for kind in data["types"]:
         assert kind["templates"] == [{"key": t.key, "title": t.title, "marks": t.variant(0).marks}
                                      for t in bank.by_type(kind["type"])]
-    assert _embedded((source / "_out" / "html" / "progress.html").read_text(), "pp-data")["book"] == data["book"]
+    assert embedded((source / "_out" / "html" / "progress.html").read_text(), "pp-data")["book"] == data["book"]
     scripts = re.findall(r'<script[^>]*src="_static/([\w.-]+\.js)', page)
     order = [name for name in scripts if name in {"notation.js", "progress-file.js", "progress.js", "class-table.js",
                                                        "class.js"}]
@@ -63,7 +51,7 @@ def test_the_class_page_embeds_the_book_and_its_types_and_loads_its_scripts(tmp_
 
 def test_print_builds_say_the_class_page_works_in_the_browser(tmp_path):
     source = _project(tmp_path)
-    result = _build(source, "text")
+    result = sphinx_build(source, "text")
     assert result.returncode == 0, result.stderr
     text = (source / "_out" / "text" / "class.txt").read_text()
     assert "What the class did." in text

@@ -14,7 +14,8 @@ from datetime import UTC, datetime
 
 import pytest
 from browser import progress_checksum
-from test_class_browser import CLASS_PAGE, PROGRESS, QUICK_CHECK, _answer, _answerable, _load
+from support.pages import load_progress_files
+from test_class_browser import CLASS_PAGE, PROGRESS, QUICK_CHECK, _answer, _answerable
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
@@ -66,7 +67,7 @@ def test_three_students_exporting_on_one_day_are_three_named_students(site, site
     context = browser.new_context()
     page = context.new_page()
     page.goto(base + CLASS_PAGE, wait_until="load")
-    _load(page, files)
+    load_progress_files(page, files)
     assert page.locator(".cp-status").inner_text() == "Loaded 3 files. The class: 3 students."
     rows = page.locator(".cp-table tbody tr")
     assert [r.get_attribute("data-student") for r in rows.all()] == sorted(STUDENTS)
@@ -85,8 +86,8 @@ def test_two_files_that_give_one_name_are_two_rows_with_a_note(site, site_dir, t
     context = browser.new_context()
     page = context.new_page()
     page.goto(base + CLASS_PAGE, wait_until="load")
-    _load(page, [first, second])
-    _load(page, [first])  # the same file again is the same file: not a third row
+    load_progress_files(page, [first, second])
+    load_progress_files(page, [first])  # the same file again is the same file: not a third row
     rows = page.locator(".cp-table tbody tr")
     assert [(r.get_attribute("data-student"), r.get_attribute("data-file")) for r in rows.all()] == [
         ("Sam Lee", first.name), ("Sam Lee", second.name)]

@@ -18,6 +18,7 @@ from pathlib import Path
 
 import pytest
 from browser import progress_checksum
+from support.pages import load_progress_files
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
@@ -45,12 +46,6 @@ def _expected(types: list[dict], path: Path) -> dict:
     return row
 
 
-def _load(page, paths) -> None:
-    before = int(page.get_attribute(".cp", "data-loads"))
-    page.get_by_label("Choose progress files").set_input_files([str(p) for p in paths])
-    page.wait_for_function(f"document.querySelector('.cp').getAttribute('data-loads') > {before}")
-
-
 def test_the_fixtures_are_thirty_different_older_exports():
     files = [json.loads(p.read_text(encoding="utf-8")) for p in FILES]
     assert len(files) == 30
@@ -70,7 +65,7 @@ def test_thirty_older_exports_load_with_every_attempt_and_each_students_totals_m
     page.on("pageerror", lambda error: errors.append(str(error)))
     page.goto(base + CLASS_PAGE, wait_until="load")
     types = json.loads(page.locator("script.cp-data").text_content())["types"]
-    _load(page, FILES)
+    load_progress_files(page, FILES)
     assert page.locator(".cp-status").inner_text() == (
         "Loaded 30 files (30 older exports, not checked). The class: 30 students.")
     assert page.locator(".cp-refused li").count() == 0

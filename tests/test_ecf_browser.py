@@ -7,7 +7,7 @@ from __future__ import annotations
 import re
 
 import pytest
-from browser import open_browser, page_without_errors, question_pages, serve_site
+from support.pages import page_without_errors
 
 from physics_figures import bank
 from physics_figures.notation import format_number, plain_number
@@ -27,12 +27,6 @@ def _dependent_parts():
 
 
 DEPENDENT = list(_dependent_parts())
-
-
-@pytest.fixture(scope="module")
-def site(site_dir):
-    with serve_site(site_dir) as base_url, open_browser() as browser:
-        yield browser, base_url, question_pages(site_dir)
 
 
 def _wrong(part, nth: int) -> float:
@@ -58,8 +52,8 @@ def _fill(form, part_id: str, part, value: float, direction: str) -> None:
 
 
 @pytest.mark.parametrize(("key", "index"), DEPENDENT)
-def test_a_part_worked_from_wrong_earlier_answers_earns_its_marks_as_ecf(site, key, index):
-    browser, base_url, pages = site
+def test_a_part_worked_from_wrong_earlier_answers_earns_its_marks_as_ecf(question_site, key, index):
+    browser, base_url, pages = question_site
     assert key in pages, f"no page places {key}"
     question = bank.TEMPLATES[key].variant(0)
     target = question.parts[index]
@@ -84,11 +78,11 @@ def test_a_part_worked_from_wrong_earlier_answers_earns_its_marks_as_ecf(site, k
 
 
 @pytest.mark.parametrize("key", ["puck-components", "explosion-two-pieces"])
-def test_sin_and_cos_swapped_in_a_and_b_earns_ecf_in_c_and_d_on_the_page(site, key):
+def test_sin_and_cos_swapped_in_a_and_b_earns_ecf_in_c_and_d_on_the_page(question_site, key):
     """The examiner's case (issue 37): sin and cos swapped in (a) and (b), typed to 2 s.f.;
     (c) and (d) worked from those values with all their figures, typed to 3 s.f.: each earns
     all its marks as ecf (it scored 0/3 and 1/3)."""
-    browser, base_url, pages = site
+    browser, base_url, pages = question_site
     question = bank.TEMPLATES[key].variant(0)
     parts = dict(zip(question.part_ids, question.parts, strict=True))
     swapped = {pid: next(m.value for m in parts[pid].mistakes if m.name == "sin and cos swapped") for pid in "ab"}

@@ -15,7 +15,7 @@ import math
 import re
 
 import pytest
-from test_marks_rules import mark_questions
+from support.engine import mark_questions
 
 from physics_figures import bank
 from physics_figures.notation import format_number, plain_number

@@ -11,11 +11,9 @@ the throttle only ever waits longer on a loaded machine, which keeps the count b
 
 from __future__ import annotations
 
-import re
-
 import pytest
-from browser import site_pages
 from playwright.sync_api import Page, expect
+from support.pages import explorable_page, words
 
 from physics_figures.explorables import ABOUT, EXPLORABLES
 
@@ -30,12 +28,6 @@ ANNOUNCE_GAP_MS = 500  # at most one announcement per 500 ms: so at most 2 in an
 # milliseconds in between (a CI run heard 497 ms and 502 ms, 999 ms for three). Unthrottled
 # announcements come with every key press, 60 ms apart, far inside this allowance.
 HEARING_JITTER_MS = 50
-
-
-def explorable_page(site_dir, name: str) -> str:
-    found = [p for p in site_pages(site_dir) if f'data-explorable="{name}"' in (site_dir / p).read_text()]
-    assert found, f"no page shows the {name!r} explorable"
-    return found[0]
 
 
 @pytest.fixture(scope="module")
@@ -74,11 +66,6 @@ RECORD = """box => {
 READOUTS = """box => Object.fromEntries([...box.querySelectorAll('output[data-label]')]
   .filter(o => !o.closest('[hidden]') && o.dataset.value !== '')
   .map(o => [o.dataset.label, o.textContent.trim() + (o.dataset.unit ? ' ' + o.dataset.unit : '')]))"""
-
-
-def words(text: str) -> str:
-    """Text with every kind of space (no-break, narrow no-break) as one plain space."""
-    return re.sub(r"\s+", " ", text).strip()
 
 
 @pytest.mark.parametrize("name", EXPLORABLES)

@@ -8,10 +8,10 @@ the keyboard or the pointer, and checks the read-outs against physics_figures.
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 import pytest
 from playwright.sync_api import Page, expect
+from support.pages import explorable_page
 
 from physics_figures import models, scenarios
 from physics_figures.explorables import EXPLORABLES, REFUSALS, collision_lab
@@ -21,14 +21,6 @@ pytestmark = [pytest.mark.site, pytest.mark.browser]
 
 PHONE = {"width": 390, "height": 844}
 DESKTOP = {"width": 1100, "height": 900}
-
-
-def page_with(site_dir: Path, name: str) -> str:
-    """Site path of the page that shows the named explorable."""
-    marker = f'data-explorable="{name}"'
-    found = [path for path in sorted(site_dir.rglob("*.html")) if marker in path.read_text(errors="ignore")]
-    assert found, f"no page in {site_dir} shows the {name!r} explorable"
-    return found[0].relative_to(site_dir).as_posix()
 
 
 class Visit:
@@ -49,7 +41,7 @@ def visit(browser, base_url, site_dir):
     opened = []
 
     def open_page(name=None, *, path=None, **options):
-        target = path or page_with(site_dir, name)
+        target = path or explorable_page(site_dir, name)
         opened.append(Visit(browser, f"{base_url}/{target}", **options))
         return opened[-1]
 

@@ -12,8 +12,8 @@
 from __future__ import annotations
 
 import pytest
-from browser import site_pages
 from playwright.sync_api import expect
+from support.pages import explorable_page
 
 from physics_figures import models
 
@@ -23,12 +23,6 @@ PHONE = {"width": 390, "height": 844}
 DESKTOP = {"width": 1280, "height": 800}
 TOUCH_PHONE = {"viewport": PHONE, "has_touch": True, "is_mobile": True, "device_scale_factor": 2}
 SMALLEST_TARGET_PX = 44  # WCAG 2.5.5
-
-
-def explorable_page(site_dir, name: str) -> str:
-    found = [p for p in site_pages(site_dir) if f'data-explorable="{name}"' in (site_dir / p).read_text()]
-    assert found, f"no page shows the {name!r} explorable"
-    return found[0]
 
 
 EXPLORABLES = ("skydiver", "collision-lab", "momentum-triangle", "momentum-time-reader")

@@ -12,6 +12,7 @@ from __future__ import annotations
 import json
 
 import pytest
+from support.pages import page_without_errors
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
@@ -22,14 +23,9 @@ DEFINITIONS = "/book/exam/method-definitions.html"
 @pytest.fixture
 def page(site):
     browser, base = site
-    context = browser.new_context()
-    page = context.new_page()
-    errors = []
-    page.on("pageerror", lambda error: errors.append(str(error)))
-    page.base = base
-    yield page
-    context.close()
-    assert not errors, errors
+    with page_without_errors(browser) as page:
+        page.base = base
+        yield page
 
 
 def _go(page, path: str):

@@ -26,6 +26,7 @@ import urllib.request
 import pytest
 from browser import shipped_variants
 from graph_grid import grid_lines
+from support.templates import sig3
 from test_graph_view_browser import graph_questions
 
 from physics_figures import bank
@@ -97,11 +98,6 @@ def given(text: str, pattern: str) -> float:
     found = re.search(pattern, text.replace("\xa0", " "))
     assert found, f"{pattern!r} not in the question's text {text!r}"
     return number(found[1])
-
-
-def sig3(x: float) -> str:
-    """An answer written to 3 s.f., trailing zeros kept ("8.00", "133")."""
-    return f"{x:#.3g}".rstrip(".")
 
 
 def levels(readings):

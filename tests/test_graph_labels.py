@@ -18,7 +18,7 @@ import re
 
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
-from test_marks_rules import mark_questions
+from support.engine import mark_questions
 
 from physics_figures import bank
 from physics_figures.figures.question_graph import axis_scales, plot_question_graph

@@ -19,7 +19,8 @@ import re
 import pytest
 from graph_grid import grid_squares
 from moodle_format import _first_match
-from test_marks_rules import mark_questions, typed
+from support.engine import mark_questions
+from support.templates import typed
 
 from physics_figures import bank
 from physics_figures import questions as q

@@ -10,7 +10,7 @@ import re
 import subprocess
 from pathlib import Path
 
-from test_questions_engine import node
+from support.engine import node
 
 from physics_figures import bank
 from physics_figures.notation import format_number

@@ -11,6 +11,7 @@ import json
 import re
 
 import pytest
+from support.pages import page_without_errors, question_form
 
 from physics_figures import bank
 from physics_figures.notation import format_number
@@ -27,27 +28,17 @@ START = 1_800_000_000  # a fixed clock (s, as Playwright's Python clock takes it
 @pytest.fixture
 def page(site):
     browser, base = site
-    context = browser.new_context()
-    page = context.new_page()
-    errors = []
-    page.on("pageerror", lambda error: errors.append(str(error)))
-    page.clock.set_fixed_time(START)  # Date.now() stands still until the test moves it
-    page.goto(base + PAGE, wait_until="load")
-    yield page
-    context.close()
-    assert not errors, errors
+    # Date.now() stands still until the test moves it
+    with page_without_errors(browser, base + PAGE, before=lambda page: page.clock.set_fixed_time(START)) as page:
+        yield page
 
 
 def _later(page, seconds: int):
     page.clock.set_fixed_time(page.evaluate("Date.now()") / 1000 + seconds)
 
 
-def _form(page, key=KEY):
-    return page.locator(f'form.q-form[data-question="{key}"]')
-
-
 def _part(page, part_id, key=KEY):
-    return _form(page, key).locator(f'[data-part="{part_id}"]')
+    return question_form(page, key).locator(f'[data-part="{part_id}"]')
 
 
 def _attempts(page, key=KEY) -> list[dict]:
@@ -71,7 +62,7 @@ def _answer_right(page, question, key=KEY):
 
 
 def _new_numbers(page):
-    form = _form(page)
+    form = question_form(page, KEY)
     before = form.get_attribute("data-variant")
     form.locator("button.q-new").click()
     page.wait_for_function(f"document.querySelector('form[data-question=\"{KEY}\"]').dataset.variant "
@@ -129,19 +120,19 @@ def test_a_check_keeps_the_help_the_time_and_the_first_try_and_help_is_hard_at_b
     _part(page, "b").locator("button.q-step").click()
     _later(page, 42)  # 42 s after the numbers came on screen
     _answer_right(page, question)
-    _form(page).locator("button.q-check").click()
-    assert _form(page).locator(".q-score").inner_text() == "4/4 marks, with 3 steps of help"
+    question_form(page, KEY).locator("button.q-check").click()
+    assert question_form(page, KEY).locator(".q-score").inner_text() == "4/4 marks, with 3 steps of help"
     [attempt] = _attempts(page)
     assert attempt["help"] == 3 and attempt["first"] is True and attempt["seconds"] == 42
     assert attempt["rating"] == 2  # full marks with help: Hard (CLARIFICATIONS, Plan)
     # Clear my answers does not undo the help used on these numbers, nor does a reload
-    _form(page).locator("button.q-clear").click()
+    question_form(page, KEY).locator("button.q-clear").click()
     assert a_steps.count() == 1
     page.reload(wait_until="load")
     assert a_steps.count() == 1 and _part(page, "b").locator(".q-steps li").count() == 2
     _later(page, 5)  # a restored page counts from its load
     _answer_right(page, question)
-    _form(page).locator("button.q-check").click()
+    question_form(page, KEY).locator("button.q-check").click()
     second = _attempts(page)[-1]
     assert second["help"] == 3 and second["first"] is False and second["seconds"] == 5
 
@@ -150,8 +141,8 @@ def test_without_help_a_quick_first_try_is_easy(page):
     question = bank.TEMPLATES[KEY].variant(0)
     _later(page, 30)
     _answer_right(page, question)
-    _form(page).locator("button.q-check").click()
-    assert _form(page).locator(".q-score").inner_text() == "4/4 marks"  # no help: nothing said
+    question_form(page, KEY).locator("button.q-check").click()
+    assert question_form(page, KEY).locator(".q-score").inner_text() == "4/4 marks"  # no help: nothing said
     [attempt] = _attempts(page)
     assert attempt["help"] == 0 and attempt["first"] is True and attempt["seconds"] == 30
     assert attempt["rating"] == 4
@@ -160,7 +151,7 @@ def test_without_help_a_quick_first_try_is_easy(page):
 def test_new_numbers_bring_their_own_steps_and_no_help_yet(page):
     box = _part(page, "a")
     before = _reveal_all_by_keyboard(page, "a")
-    form = _form(page)
+    form = question_form(page, KEY)
     _later(page, 100)
     _new_numbers(page)
     _later(page, 7)  # the time counts from the new numbers
@@ -188,7 +179,7 @@ def test_a_sign_a_missing_unit_and_a_1_sf_answer_are_kept_as_named_mistakes(page
     _part(page, "a").locator("input.q-value").fill(format_number(a.value, 3))
     _part(page, "b").locator("input.q-value").fill(format_number(b.value, 1))  # 1 s.f.
     _part(page, "b").locator("input.q-unit").fill(b.unit)
-    _form(page).locator("button.q-check").click()
+    question_form(page, KEY).locator("button.q-check").click()
     assert [_part(page, p).locator(".q-feedback").get_attribute("data-code") for p in "ab"] == [
         "missing-unit", "too-few-sf"]
     assert _attempts(page)[-1]["mistakes"] == ["unit missing or wrong", "1 s.f. answer"]
@@ -197,6 +188,6 @@ def test_a_sign_a_missing_unit_and_a_1_sf_answer_are_kept_as_named_mistakes(page
     box = _part(page, "a", SIGNED)
     box.locator("input.q-value").fill(format_number(-signed.value, 3).replace("\u2212", "-"))
     box.locator("input.q-unit").fill(signed.unit)
-    _form(page, SIGNED).locator("button.q-check").click()
+    question_form(page, SIGNED).locator("button.q-check").click()
     assert box.locator(".q-feedback").get_attribute("data-code") == "sign"
     assert "sign or direction" in _attempts(page, SIGNED)[-1]["mistakes"]

@@ -11,7 +11,8 @@ from __future__ import annotations
 
 import re
 
-from test_marks_rules import mark_questions, typed
+from support.engine import mark_questions
+from support.templates import typed
 
 from physics_figures import bank
 from physics_figures.notation import format_number

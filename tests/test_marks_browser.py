@@ -8,11 +8,11 @@ from __future__ import annotations
 import re
 
 import pytest
-from browser import open_browser, page_without_errors, question_pages, serve_site
+from support.pages import page_without_errors
+from support.templates import typed
 
 from physics_figures import bank, marking
 from physics_figures.constants import G_EARTH
-from physics_figures.notation import format_number, plain_number
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
@@ -20,10 +20,6 @@ QC3 = bank.TEMPLATES["quick-check-3"].variant(0)
 BLOCK = bank.TEMPLATES["block-and-hanging-mass"].variant(0)
 WALL = bank.TEMPLATES["practice-wall-bounce"].variant(0)
 BALL = bank.TEMPLATES["graph-ball-acceleration"].variant(0)
-
-
-def typed(value: float, sig_figs: int = 3) -> str:
-    return plain_number(format_number(value, sig_figs))
 
 
 def _tension_from_hanging_mass(own_a: float) -> float:
@@ -75,12 +71,6 @@ def test_every_rule_of_the_docs_table_has_a_case_here():
     assert sorted(CASES) == sorted(row["id"] for row in marking.documented_rules())
 
 
-@pytest.fixture(scope="module")
-def site(site_dir):
-    with serve_site(site_dir) as base_url, open_browser() as browser:
-        yield browser, base_url, question_pages(site_dir)
-
-
 def test_the_rule_table_is_on_the_marks_page_with_its_papers(site_dir):
     html = (site_dir / "book" / "exam" / "getting-the-marks.html").read_text(encoding="utf-8")
     for row in marking.documented_rules():
@@ -90,8 +80,8 @@ def test_the_rule_table_is_on_the_marks_page_with_its_papers(site_dir):
 
 
 @pytest.mark.parametrize("rule", sorted(CASES))
-def test_a_rule_marks_as_the_table_says_on_its_page(site, rule):
-    browser, base_url, pages = site
+def test_a_rule_marks_as_the_table_says_on_its_page(question_site, rule):
+    browser, base_url, pages = question_site
     key, answers, looked_at, (earned, available), phrase = CASES[rule]
     with page_without_errors(browser, base_url + pages[key]) as page:
         form = page.locator(f'form.q-form[data-question="{key}"]')

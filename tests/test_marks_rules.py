@@ -14,26 +14,14 @@ import subprocess
 from pathlib import Path
 
 import pytest
-from test_questions_engine import node
+from support.engine import mark_questions, node
+from support.templates import typed
 
 from physics_figures import bank, marking
 from physics_figures.constants import G_EARTH
-from physics_figures.notation import format_number, plain_number
 
 ROOT = Path(__file__).resolve().parents[1]
 ENGINE = ROOT / "book" / "_ext" / "questions" / "static" / "marking.js"
-
-
-def mark_questions(cases: list[tuple[dict, dict]]) -> list[dict]:
-    result = subprocess.run([node(), str(ROOT / "tests" / "js" / "mark_questions.js")],
-                            input=json.dumps([{"data": d, "answers": a} for d, a in cases]),
-                            check=False, capture_output=True, text=True, timeout=120)
-    assert result.returncode == 0, result.stderr
-    return json.loads(result.stdout)
-
-
-def typed(value: float, sig_figs: int = 3) -> str:
-    return plain_number(format_number(value, sig_figs))
 
 
 def one(key: str, answers: dict, variant: int = 0) -> dict:

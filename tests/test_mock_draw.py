@@ -14,9 +14,9 @@ And the clock: its text, and the warnings a screen reader hears once each."""
 
 from __future__ import annotations
 
+import functools
 import json
 import re
-import subprocess
 import sys
 from collections import Counter
 from pathlib import Path
@@ -29,7 +29,7 @@ ROOT = Path(__file__).resolve().parents[1]
 RUNNER = ROOT / "tests" / "js" / "mock_draw.js"
 sys.path.insert(0, str(ROOT / "book" / "_ext"))
 from questions.mock_test import index_of
-from test_questions_engine import node
+from support.engine import node_json
 
 TOPIC = topics.load("physics_figures.bank")
 #: Every template the practice pages place (tests/test_questions.py checks they place them all).
@@ -39,11 +39,7 @@ SEEDS = range(40)
 PACE = {"1": 1.875, "2": 1.25}  # minutes a question (Paper 1) or a mark (Paper 2): 9702's 75-minute papers
 
 
-def run(request: dict) -> dict:
-    result = subprocess.run([node(), str(RUNNER)], input=json.dumps(request), capture_output=True, text=True,
-                            timeout=120, check=False)
-    assert result.returncode == 0, result.stderr[-3000:]
-    return json.loads(result.stdout)
+run = functools.partial(node_json, RUNNER)  # run(request): what the runner answers
 
 
 @pytest.fixture(scope="module")

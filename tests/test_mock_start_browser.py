@@ -10,6 +10,7 @@
 from __future__ import annotations
 
 import pytest
+from support.pages import page_without_errors
 from test_mock_test_browser import KEPT, PAGE, answer, right, start, three_sf, variants
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
@@ -18,14 +19,8 @@ pytestmark = [pytest.mark.site, pytest.mark.browser]
 @pytest.fixture
 def student(browser, base_url):
     """A student's browser at the mock test; no error on the page."""
-    context = browser.new_context()
-    page = context.new_page()
-    errors: list[str] = []
-    page.on("pageerror", lambda error: errors.append(str(error)))
-    page.goto(f"{base_url}/{PAGE}")
-    yield page
-    context.close()
-    assert not errors, errors
+    with page_without_errors(browser, f"{base_url}/{PAGE}") as page:
+        yield page
 
 
 #: Each answered question's mistakes as a question's page records them: each part's named

@@ -28,6 +28,7 @@ from datetime import UTC, datetime
 
 import pytest
 from browser import axe_violations, serve_site
+from support.pages import page_without_errors
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
@@ -43,15 +44,8 @@ MOCK_KEYS = {"id", "paper", "at", "minutes", "ended", "earned", "available", "qu
 @pytest.fixture
 def student(browser, base_url):
     """A student's browser at the mock test, its clock set and held by the test."""
-    context = browser.new_context()
-    page = context.new_page()
-    errors: list[str] = []
-    page.on("pageerror", lambda error: errors.append(str(error)))
-    page.clock.install(time=START)
-    page.goto(f"{base_url}/{PAGE}")
-    yield page
-    context.close()
-    assert not errors, errors
+    with page_without_errors(browser, f"{base_url}/{PAGE}", before=lambda page: page.clock.install(time=START)) as page:
+        yield page
 
 
 def start(page, paper: str, size: int) -> dict:

@@ -12,6 +12,7 @@ from __future__ import annotations
 import pytest
 from browser import axe_violations
 from playwright.sync_api import TimeoutError as PlaywrightTimeout
+from support.pages import readers_of
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
@@ -68,6 +69,9 @@ class Reader:
     def is_open(self, selector: str) -> bool:
         return self.page.evaluate(f"document.querySelector('{selector}').open")
 
+    def close(self):
+        self.context.close()
+
     def close_by(self, route: str, dialog: str):
         if route == "Escape":
             self.page.keyboard.press("Escape")
@@ -82,17 +86,7 @@ class Reader:
             self.press_at(x, 400)
 
 
-@pytest.fixture
-def reader(browser, base_url):
-    opened = []
-
-    def open_reader(width: int, scheme: str = "light") -> Reader:
-        opened.append(Reader(browser, base_url, width, scheme))
-        return opened[-1]
-
-    yield open_reader
-    for each in opened:
-        each.context.close()
+reader = readers_of(Reader)  # reader(width, ...) opens one; each is closed after the test
 
 
 def _open_close(me: Reader, kind: str, dialog: str, what: str, route: str, inside: str):

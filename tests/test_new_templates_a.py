@@ -11,9 +11,7 @@ answer, which has no unit, in the browser's marker and in Moodle.
 
 from __future__ import annotations
 
-import json
 import math
-import subprocess
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -21,6 +19,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from moodle_format import check_file
+from support.engine import mark_all
+from support.templates import printed
 
 from physics_figures import bank
 from physics_figures.models import (
@@ -37,17 +37,6 @@ NEW = {"sticking-fraction-lost": "elastic", "bounce-energy-ratio": "elastic",
 
 
 ROOT = Path(__file__).resolve().parents[1]
-
-
-def mark_all(cases: list[dict]) -> list[dict]:
-    """The browser's marker (tests/js/mark_cases.js) under Node, on {part, answer} cases."""
-    result = subprocess.run(["node", str(ROOT / "tests" / "js" / "mark_cases.js")], input=json.dumps(cases),
-                            check=True, capture_output=True, text=True, timeout=120)
-    return json.loads(result.stdout)
-
-
-def printed(key: str):
-    return bank.TEMPLATES[key].variant(0)
 
 
 def keys(key: str) -> list[float]:

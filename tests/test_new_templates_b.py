@@ -13,6 +13,7 @@ import math
 import re
 
 import pytest
+from support.templates import numbered_variants
 
 from physics_figures import textformat
 from physics_figures.bank import TEMPLATES
@@ -45,11 +46,7 @@ def _same(part, hand: float) -> None:
     assert format_number(part.value, part.shown_sig_figs) == format_number(hand, part.shown_sig_figs)
 
 
-def _variants(key):
-    return list(enumerate(TEMPLATES[key].variants))
-
-
-@pytest.mark.parametrize(("index", "question"), _variants("drag-law-constant"))
+@pytest.mark.parametrize(("index", "question"), numbered_variants("drag-law-constant"))
 def test_drag_law_constant_is_the_weight_over_the_terminal_speed_to_the_laws_power(index, question):
     given, power = _printed(question), _law_power(question)
     weight = given["mass"] / 1000 * G  # printed in g
@@ -61,7 +58,7 @@ def test_drag_law_constant_is_the_weight_over_the_terminal_speed_to_the_laws_pow
     assert wrong_power == pytest.approx(weight / given["terminal speed"] ** (3 - power))
 
 
-@pytest.mark.parametrize(("index", "question"), _variants("drag-law-terminal-ratio"))
+@pytest.mark.parametrize(("index", "question"), numbered_variants("drag-law-terminal-ratio"))
 def test_a_heavier_ball_falls_faster_by_the_root_of_the_mass_ratio_for_kv2_and_the_ratio_for_kv(index, question):
     given, power = _printed(question), _law_power(question)
     ratio = given["mass of B"] / given["mass of A"]
@@ -71,7 +68,7 @@ def test_a_heavier_ball_falls_faster_by_the_root_of_the_mass_ratio_for_kv2_and_t
     _same(accel, G * (given["mass of B"] - given["mass of A"]) / given["mass of B"])
 
 
-@pytest.mark.parametrize(("index", "question"), _variants("stokes-terminal-speed"))
+@pytest.mark.parametrize(("index", "question"), numbered_variants("stokes-terminal-speed"))
 def test_stokes_terminal_speed_is_the_weight_less_the_upthrust_over_6_pi_eta_r(index, question):
     given = _printed(question)
     r = given["radius"] / 1000  # printed in mm
@@ -85,7 +82,7 @@ def test_stokes_terminal_speed_is_the_weight_less_the_upthrust_over_6_pi_eta_r(i
     assert forgot == pytest.approx(given["mass"] / 1000 * G / (6 * math.pi * given["viscosity"] * r))
 
 
-@pytest.mark.parametrize(("index", "question"), _variants("puck-components"))
+@pytest.mark.parametrize(("index", "question"), numbered_variants("puck-components"))
 def test_puck_components_conserve_momentum_along_and_across_x(index, question):
     given = _printed(question)
     theta = math.radians(given["angle"])
@@ -105,7 +102,7 @@ def test_puck_components_conserve_momentum_along_and_across_x(index, question):
                                    / given["mass of B"])
 
 
-@pytest.mark.parametrize(("index", "question"), _variants("explosion-two-pieces"))
+@pytest.mark.parametrize(("index", "question"), numbered_variants("explosion-two-pieces"))
 def test_the_other_piece_of_an_explosion_cancels_the_first_across_and_keeps_the_rest_along(index, question):
     given = _printed(question)
     words = textformat.to_plain(question.text)

@@ -9,6 +9,7 @@ import re
 from decimal import Decimal
 
 import pytest
+from support.templates import numbered_variants
 from test_new_templates_b import _law_power, _printed
 from working_lines import wrong_steps
 
@@ -18,11 +19,7 @@ from physics_figures.models import reynolds_number, sphere_drag_constant, stokes
 from physics_figures.parts import OPTION_LETTERS
 
 
-def _variants(key):
-    return list(enumerate(TEMPLATES[key].variants))
-
-
-@pytest.mark.parametrize(("index", "question"), _variants("drag-law-terminal-ratio"))
+@pytest.mark.parametrize(("index", "question"), numbered_variants("drag-law-terminal-ratio"))
 def test_masses_the_wrong_way_up_says_a_s_speed_was_divided(index, question):
     """The slip divides A's terminal speed by the factor (v_A ÷ √(m_B / m_A)): the feedback names A."""
     given, power = _printed(question), _law_power(question)
@@ -48,7 +45,7 @@ def _density(grams: float, diameter_cm: float) -> float:
     return grams / 1000 / (math.pi * (diameter_cm / 100) ** 3 / 6)
 
 
-@pytest.mark.parametrize(("index", "question"), _variants("drag-law-constant"))
+@pytest.mark.parametrize(("index", "question"), numbered_variants("drag-law-constant"))
 def test_the_balls_size_mass_and_terminal_speed_agree(index, question):
     """Issue 37: the 45 g "small ball" was about 30 cm across by its drag. The story now gives the
     ball's diameter; its density is a real ball's (a table-tennis ball, 80 kg m⁻³, to solid rubber,
@@ -59,7 +56,7 @@ def test_the_balls_size_mass_and_terminal_speed_agree(index, question):
     assert given["terminal speed"] == float(f"{speed:.2g}"), (given, speed)
 
 
-@pytest.mark.parametrize(("index", "question"), _variants("drag-law-terminal-ratio"))
+@pytest.mark.parametrize(("index", "question"), numbered_variants("drag-law-terminal-ratio"))
 def test_both_balls_are_real_and_fall_at_plausible_speeds_under_either_law(index, question):
     """Issue 37: the linear-law variants made B fall at 65–86 m s⁻¹. A's terminal speed is what a
     ball of its mass and size reaches; the law's prediction for B stays within 30 % of what B
@@ -92,7 +89,7 @@ def _checkable(question):
         dataclasses.replace(mark, text=text(mark.text)) for mark in question.mark_scheme))
 
 
-@pytest.mark.parametrize(("index", "question"), _variants("stokes-terminal-speed"))
+@pytest.mark.parametrize(("index", "question"), numbered_variants("stokes-terminal-speed"))
 def test_stokes_working_gives_the_printed_answers_from_its_printed_numbers(index, question):
     """Issue 37: (a)'s working printed V to 3 s.f., and ρgV from it gave another third figure than
     the key in 9 of 20 variants. Each step, worked from its numbers as printed, gives its result:
@@ -101,7 +98,7 @@ def test_stokes_working_gives_the_printed_answers_from_its_printed_numbers(index
     assert checked >= 2 and not wrong, wrong
 
 
-@pytest.mark.parametrize(("index", "question"), _variants("stokes-terminal-speed"))
+@pytest.mark.parametrize(("index", "question"), numbered_variants("stokes-terminal-speed"))
 def test_stokes_law_holds_for_every_variant(index, question):
     """Issue 37: the Reynolds number reached 0.997. Stokes' law holds in creeping flow: Re = ρvd/η
     (d the diameter) below 0.1, where Oseen's correction (3Re/16) stays under 2 %."""
@@ -131,7 +128,7 @@ def test_a_stokes_variant_outside_creeping_flow_is_refused_by_name():
         TEMPLATES["stokes-terminal-speed"].build(grams=0.26, radius_mm=2.0)
 
 
-@pytest.mark.parametrize(("index", "question"), _variants("graph-lorry-speed-momentum-time"))
+@pytest.mark.parametrize(("index", "question"), numbered_variants("graph-lorry-speed-momentum-time"))
 def test_every_lorry_speeds_up_as_a_loaded_lorry_can(index, question):
     """Issue 37: lorries sped up at 3.5 m s⁻², and one needed 565 kW. From the graph each variant
     draws and its printed mass: a loaded lorry's 0.5 to 1.5 m s⁻², and at most 300 kW (the
@@ -152,7 +149,7 @@ def test_a_lorry_beyond_a_lorry_is_refused_by_name(values, message):
         TEMPLATES["graph-lorry-speed-momentum-time"].build(**values)
 
 
-@pytest.mark.parametrize(("index", "question"), _variants("falling-graph-choice"))
+@pytest.mark.parametrize(("index", "question"), numbered_variants("falling-graph-choice"))
 def test_each_skydiver_story_and_its_sketches_tell_one_story(index, question):
     """Issue 37: the parachute variant said she "falls at her terminal velocity", and every sketch
     started from rest; its feedback put the largest deceleration at the start of a curve the key
@@ -182,7 +179,7 @@ def test_no_named_mistake_is_one_no_student_makes(key):
     assert not named & NO_STUDENT_MAKES, key
 
 
-@pytest.mark.parametrize(("index", "question"), _variants("collision-third-law"))
+@pytest.mark.parametrize(("index", "question"), numbered_variants("collision-third-law"))
 def test_the_force_on_b_names_the_mass_left_out(index, question):
     """In its place, a mistake students make: B's change in velocity ÷ the time (the acceleration)."""
     force = question.parts[-1]

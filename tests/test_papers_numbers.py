@@ -5,7 +5,7 @@
 from __future__ import annotations
 
 import pytest
-from test_marks_rules import mark_questions
+from support.engine import mark_questions
 
 from physics_figures import bank, models
 

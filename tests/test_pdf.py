@@ -25,6 +25,7 @@ from support.pdf import poppler
 from physics_figures import answers, textformat
 from physics_figures.bank import all_questions
 from physics_figures.questions import unit_text
+from physics_figures.reproducible import SOURCE_DATE_EPOCH
 
 pytestmark = [pytest.mark.site]
 
@@ -400,7 +401,7 @@ def test_version_and_date_without_git_come_from_source_date_epoch(tmp_path):
         from latex_print import version_and_date
     finally:
         sys.path.pop(0)
-    assert version_and_date(tmp_path, {"SOURCE_DATE_EPOCH": "1767225600"}) == ("unversioned", "2026-01-01")
+    assert version_and_date(tmp_path, {"SOURCE_DATE_EPOCH": str(SOURCE_DATE_EPOCH)}) == ("unversioned", "2026-01-01")
     with pytest.raises(ValueError, match="SOURCE_DATE_EPOCH"):
         version_and_date(tmp_path, {})
 

@@ -21,6 +21,7 @@ from urllib.parse import urljoin
 
 import pytest
 from browser import node_module, progress_checksum
+from support.pages import open_page, stored, watched_context
 
 from physics_figures import bank
 
@@ -52,21 +53,9 @@ console.log(JSON.stringify(out));
 
 @pytest.fixture
 def context(site):
-    browser, base = site
-    context = browser.new_context(viewport=PHONE, accept_downloads=True)
-    context.base = base
-    context.errors = []
-    context.clock.set_fixed_time(MORNING)
-    yield context
-    assert not context.errors
-    context.close()
-
-
-def _open(context, path):
-    page = context.new_page()
-    page.on("pageerror", lambda error: context.errors.append(str(error)))
-    page.goto(context.base + path, wait_until="load")
-    return page
+    with watched_context(*site, viewport=PHONE, accept_downloads=True) as context:
+        context.clock.set_fixed_time(MORNING)
+        yield context
 
 
 def _at(context, when: datetime):
@@ -115,10 +104,6 @@ def _written(value: float) -> str:
     return (f"{value:.3g}" if "e" in text else text).rstrip(".")
 
 
-def _stored(page) -> dict:
-    return json.loads(page.evaluate(f"localStorage.getItem({STORE!r})"))
-
-
 def _fsrs_due(reviews: dict[str, list[tuple[int, int]]]) -> dict[str, int]:
     out = subprocess.run(["node", "-e", FSRS_IN_NODE, str(node_module("ts-fsrs")), json.dumps(reviews)],
                          capture_output=True, text=True, check=True)
@@ -130,7 +115,7 @@ def _practise(context):
     apart: four real templates, the helped one of the wrong one's type, so that they fall due
     side by side (wrong after 1 minute, helped after about 5) and interleaving has work to do.
     Returns {"right"|"wrong"|"helped"|"partly": (key, type)} and the last question page."""
-    page = _open(context, PROGRESS)
+    page = open_page(context, PROGRESS)
     numeric = _numeric(json.loads(page.locator("script.pp-data").text_content()))
     wrong = numeric[0]
     helped = next(k for k in numeric if k[1] == wrong[1] and k != wrong)
@@ -141,7 +126,7 @@ def _practise(context):
     pages = {}
     for minute, (name, (key, _, where)) in enumerate(chosen.items(), start=1):
         if where not in pages:
-            pages[where] = _open(context, urljoin(PROGRESS, where))
+            pages[where] = open_page(context, urljoin(PROGRESS, where))
         quick = pages[where]
         _at(context, MORNING + timedelta(minutes=minute))
         parts = bank.TEMPLATES[key].variant(0).parts
@@ -166,8 +151,8 @@ def _practise(context):
 
 def test_ratings_and_due_dates_follow_fsrs_and_the_wrong_one_comes_back_first(context):
     chosen, _ = _practise(context)
-    page = _open(context, PROGRESS)  # works the schedule out and keeps it
-    progress = _stored(page)
+    page = open_page(context, PROGRESS)  # works the schedule out and keeps it
+    progress = json.loads(stored(page, STORE))
     assert progress["version"] == 2
     rating = {a["question"]: a["rating"] for a in progress["attempts"]}
     key = {name: k for name, (k, _) in chosen.items()}
@@ -221,7 +206,7 @@ def _weakest(page, progress) -> str:
 def test_start_serves_the_due_cards_interleaved_each_with_new_numbers_then_back(context):
     chosen, _ = _practise(context)
     later = _at(context, MORNING + timedelta(hours=2))
-    page = _open(context, PROGRESS)
+    page = open_page(context, PROGRESS)
     page.get_by_role("button", name="Start", exact=True).click()
     queue = json.loads(page.evaluate("localStorage.getItem('dynamics-review-v1')"))
     due = {k for name, (k, _) in chosen.items() if name != "right"}
@@ -260,7 +245,7 @@ def test_start_serves_the_due_cards_interleaved_each_with_new_numbers_then_back(
         assert bar.inner_text().startswith(f"Card {position + 1} of {len(cards)} · ")
         bar.get_by_role("link", name="Back to Your practice" if last else "Next card").click()
     page.wait_for_url(f"**{PROGRESS}")
-    progress = _stored(page)
+    progress = json.loads(stored(page, STORE))
     served = {a["question"] for a in progress["attempts"] if a["at"] == later}
     assert due <= served  # each due card answered again, on the numbers Start gave
     assert {c["id"] for c in cards if c["id"].startswith("definition:")} <= served
@@ -270,7 +255,7 @@ def test_a_fresh_students_start_serves_a_card_of_every_type_in_turn(context):
     """New cards come from every type, not the book's first two: a fresh student's first
     sessions (Start, each card tried) serve every type within the first seven cards, and no two
     of a type together (CLARIFICATIONS, "Start's queue")."""
-    page = _open(context, PROGRESS)
+    page = open_page(context, PROGRESS)
     data = json.loads(page.locator("script.pp-data").text_content())
     types = {kind["type"] for kind in data["types"] if any(t["page"] for t in kind["templates"])}
     served = []
@@ -291,7 +276,7 @@ def test_a_fresh_students_start_serves_a_card_of_every_type_in_turn(context):
 
 def test_the_first_screen_shows_the_plan_and_the_page_is_at_most_two_screens(context):
     _practise(context)
-    page = _open(context, PROGRESS)
+    page = open_page(context, PROGRESS)
     for n in range(4):  # the latest shows, the earlier ones fold
         page.evaluate(f"""ProgressStore.recordMock({{id: "m{n}", paper: "{1 + n % 2}", at: Date.now() + {n},
             minutes: 25, ended: "submitted", earned: {10 + n}, available: 20, questions: []}})""")
@@ -312,10 +297,10 @@ def test_the_first_screen_shows_the_plan_and_the_page_is_at_most_two_screens(con
 def test_a_real_version_1_export_imports_into_version_2_with_every_attempt_kept(context, tmp_path):
     v1 = json.loads(V1_FILE.read_text())
     assert v1["version"] == 1
-    page = _open(context, PROGRESS)
+    page = open_page(context, PROGRESS)
     page.get_by_label("Import progress from a file").set_input_files(str(V1_FILE))
     page.wait_for_function("document.querySelector('.pp-status').textContent.startsWith('Imported')")
-    progress = _stored(page)
+    progress = json.loads(stored(page, STORE))
     assert progress["version"] == 2
     fields = ("question", "type", "variant", "earned", "available", "at", "mistakes")
     kept = [{f: a[f] for f in fields} for a in progress["attempts"]]
@@ -335,7 +320,7 @@ def test_a_real_version_1_export_imports_into_version_2_with_every_attempt_kept(
 
 
 def test_the_landing_page_links_your_practice_and_the_mock_test_in_its_first_screen(context):
-    page = _open(context, "/book/intro.html")
+    page = open_page(context, "/book/intro.html")
     for name, target in (("Your practice", "your-practice.html"), ("the mock test", "mock-test.html")):
         link = page.locator("main, article").first.get_by_role("link", name=name, exact=True).first  # the first of the page
         assert link.get_attribute("href").endswith(f"exam/{target}")

@@ -6,7 +6,8 @@ from __future__ import annotations
 import json
 
 import pytest
-from browser import open_browser, page_without_errors, serve_site
+from browser import open_browser, serve_site
+from support.pages import fill_part, page_without_errors, question_form, question_page
 
 from physics_figures import bank
 from physics_figures.notation import format_number
@@ -30,22 +31,16 @@ def page(page_url):
         yield page
 
 
-def _form(page):
-    return page.locator(f'form.q-form[data-question="{KEY}"]')
-
-
 def _answer(page, part: str, value: str, unit: str):
-    form = _form(page)
-    form.locator(f'[data-part="{part}"] input.q-value').fill(value)
-    form.locator(f'[data-part="{part}"] input.q-unit').fill(unit)
+    fill_part(question_form(page, KEY), part, value, unit)
 
 
 def _check(page):
-    _form(page).locator("button.q-check").click()
+    question_form(page, KEY).locator("button.q-check").click()
 
 
 def test_a_first_visit_shows_the_printed_numbers_as_variant_0(page):
-    form = _form(page)
+    form = question_form(page, KEY)
     assert form.get_attribute("data-variant") == "0"
     assert form.get_attribute("data-type") == "force-momentum"
     assert form.get_attribute("data-kind") == "numeric"
@@ -57,11 +52,11 @@ def test_right_answers_earn_every_mark_and_a_missing_unit_loses_only_the_a1(page
     _answer(page, "a", "15", "N s")
     _answer(page, "b", "7.5", "m/s")
     _check(page)
-    assert _form(page).locator(".q-score").inner_text() == "4/4 marks"
+    assert question_form(page, KEY).locator(".q-score").inner_text() == "4/4 marks"
     _answer(page, "a", "15", "")
     _check(page)
-    assert _form(page).locator(".q-score").inner_text() == "3/4 marks"
-    assert _form(page).locator('[data-part="a"] .q-part-marks').inner_text() == "1/2 marks"
+    assert question_form(page, KEY).locator(".q-score").inner_text() == "3/4 marks"
+    assert question_form(page, KEY).locator('[data-part="a"] .q-part-marks').inner_text() == "1/2 marks"
 
 
 def test_a_wrong_part_a_carries_forward_into_part_b(page):
@@ -69,15 +64,15 @@ def test_a_wrong_part_a_carries_forward_into_part_b(page):
     _answer(page, "a", "1.7", "N s")
     _answer(page, "b", "0.85", "m s^-1")
     _check(page)
-    b = _form(page).locator('[data-part="b"]')
+    b = question_form(page, KEY).locator('[data-part="b"]')
     assert b.locator(".q-feedback").get_attribute("data-code") == "ecf"
     assert b.locator(".q-part-marks").inner_text() == "2/2 marks (ecf)"
-    assert _form(page).locator(".q-score").inner_text() == "2/4 marks"
+    assert question_form(page, KEY).locator(".q-score").inner_text() == "2/4 marks"
     # a (b) that does not follow from (a) earns nothing
     _answer(page, "b", "0.50", "m s^-1")
     _check(page)
     assert b.locator(".q-feedback").get_attribute("data-code") != "ecf"
-    assert _form(page).locator(".q-score").inner_text() == "0/4 marks"
+    assert question_form(page, KEY).locator(".q-score").inner_text() == "0/4 marks"
 
 
 def test_new_numbers_show_every_variant_once_before_any_repeats(page):
@@ -85,10 +80,10 @@ def test_new_numbers_show_every_variant_once_before_any_repeats(page):
     count = len(template.site_variants)  # the reserve is the teacher's: never shown
     seen = [0]
     for _ in range(count - 1):
-        _form(page).locator("button.q-new").click()
+        question_form(page, KEY).locator("button.q-new").click()
         page.wait_for_function(f"document.querySelector('form[data-question=\"{KEY}\"]')"
                                f".getAttribute('data-variant') !== '{seen[-1]}'")
-        seen.append(int(_form(page).get_attribute("data-variant")))
+        seen.append(int(question_form(page, KEY).get_attribute("data-variant")))
     assert sorted(seen) == list(range(count)), seen
     # The text, the key and the marks follow the variant on screen.
     question = template.variant(seen[-1])
@@ -98,20 +93,12 @@ def test_new_numbers_show_every_variant_once_before_any_repeats(page):
     _answer(page, "a", format_number(a.value, 3), "N s")
     _answer(page, "b", format_number(b.value, 3), "m s^-1")
     _check(page)
-    assert _form(page).locator(".q-score").inner_text() == "4/4 marks"
+    assert question_form(page, KEY).locator(".q-score").inner_text() == "4/4 marks"
     # and the student keeps those numbers after a reload
     page.reload(wait_until="load")
     page.wait_for_function(f"document.querySelector('form[data-question=\"{KEY}\"]')"
                            f".getAttribute('data-variant') === '{seen[-1]}'")
-    assert _form(page).locator(".q-score").inner_text() == "4/4 marks"
-
-
-def _page_with(site_dir, key: str) -> str:
-    """The built page that places template `key` (wherever the practice pages put it)."""
-    for html in sorted(site_dir.rglob("*.html")):
-        if f'data-question="{key}"' in html.read_text(encoding="utf-8"):
-            return "/" + html.relative_to(site_dir).as_posix()
-    raise AssertionError(f"no page places the template {key}")
+    assert question_form(page, KEY).locator(".q-score").inner_text() == "4/4 marks"
 
 
 @pytest.fixture
@@ -123,7 +110,7 @@ def open_page(page_url, site_dir):
     def open_(key):
         context = browser.new_context()
         page = context.new_page()
-        page.goto(base + _page_with(site_dir, key), wait_until="load")
+        page.goto(base + question_page(site_dir, key), wait_until="load")
         opened.append(context)
         return page
 

@@ -14,6 +14,7 @@ import re
 
 import pytest
 from browser import axe_violations
+from support.pages import embedded, open_page, stored, watched_context
 
 from physics_figures import bank
 
@@ -26,24 +27,8 @@ STORE = "dynamics-progress-v2"
 
 @pytest.fixture
 def context(site):
-    browser, base = site
-    context = browser.new_context(accept_downloads=True)
-    context.base = base
-    context.errors = []
-    yield context
-    assert not context.errors
-    context.close()
-
-
-def _open(context, path):
-    page = context.new_page()
-    page.on("pageerror", lambda error: context.errors.append(str(error)))
-    page.goto(context.base + path, wait_until="load")
-    return page
-
-
-def _embedded(page) -> dict:
-    return json.loads(page.locator("script.pp-data").text_content())
+    with watched_context(*site, accept_downloads=True) as context:
+        yield context
 
 
 def _on_quick_check(data) -> tuple[dict, dict, object]:
@@ -88,13 +73,9 @@ def _section(page, kind: str):
     return section
 
 
-def _stored(page):
-    return page.evaluate(f"localStorage.getItem({STORE!r})")
-
-
 def test_every_type_is_listed_by_its_name_with_what_the_bank_has(context):
-    page = _open(context, PROGRESS)
-    data = _embedded(page)
+    page = open_page(context, PROGRESS)
+    data = embedded(page, "pp-data")
     assert [kind["type"] for kind in data["types"]] == list(bank.TOPIC.type_keys)
     for kind in data["types"]:
         section = _section(page, kind["type"])
@@ -109,9 +90,9 @@ def test_every_type_is_listed_by_its_name_with_what_the_bank_has(context):
 
 
 def test_progress_follows_answers_survives_reload_export_clear_and_import(context, tmp_path):
-    page = _open(context, PROGRESS)
-    kind, entry, mistake = _on_quick_check(_embedded(page))
-    questions = _open(context, QUICK_CHECK)
+    page = open_page(context, PROGRESS)
+    kind, entry, mistake = _on_quick_check(embedded(page, "pp-data"))
+    questions = open_page(context, QUICK_CHECK)
     score = _answer_with_a_mistake(questions, entry["key"], mistake)
 
     page.reload(wait_until="load")
@@ -144,7 +125,7 @@ def test_progress_follows_answers_survives_reload_export_clear_and_import(contex
 
     page.get_by_role("button", name="Clear progress").click()
     assert "none tried yet" in section.locator(".pp-summary").inner_text()
-    assert json.loads(_stored(page))["attempts"] == []  # kept empty: the format 1 store is never read again
+    assert json.loads(stored(page, STORE))["attempts"] == []  # kept empty: the format 1 store is never read again
     assert page.evaluate("document.activeElement.textContent") == "Undo clear"
     page.reload(wait_until="load")
     assert "none tried yet" in _section(page, kind["type"]).locator(".pp-summary").inner_text()
@@ -167,11 +148,11 @@ def test_progress_follows_answers_survives_reload_export_clear_and_import(contex
     (json.dumps({"version": 7, "attempts": []}).encode(), "newer version of the book (format 7)"),
 ])
 def test_a_bad_file_is_refused_with_the_reason_and_nothing_is_lost(context, content, reason):
-    page = _open(context, PROGRESS)
-    kind, entry, mistake = _on_quick_check(_embedded(page))
-    _answer_with_a_mistake(_open(context, QUICK_CHECK), entry["key"], mistake)
+    page = open_page(context, PROGRESS)
+    kind, entry, mistake = _on_quick_check(embedded(page, "pp-data"))
+    _answer_with_a_mistake(open_page(context, QUICK_CHECK), entry["key"], mistake)
     page.reload(wait_until="load")
-    before = _stored(page)
+    before = stored(page, STORE)
     assert before
     page.get_by_label("Import progress from a file").set_input_files(
         files=[{"name": "progress.json", "mimeType": "application/json", "buffer": content}])
@@ -180,13 +161,13 @@ def test_a_bad_file_is_refused_with_the_reason_and_nothing_is_lost(context, cont
     assert status.startswith("Nothing was imported from progress.json: ")
     assert reason in status
     assert status.endswith("Your progress here is unchanged.")
-    assert _stored(page) == before
+    assert stored(page, STORE) == before
     assert _section(page, kind["type"]).locator(".pp-summary").inner_text().startswith("Tried 1 of")
 
 
 def test_practise_this_type_lands_on_a_question_with_new_numbers_and_focus_in_it(context):
-    page = _open(context, PROGRESS)
-    kind = next(k for k in _embedded(page)["types"] if any(t["page"] for t in k["templates"]))
+    page = open_page(context, PROGRESS)
+    kind = next(k for k in embedded(page, "pp-data")["types"] if any(t["page"] for t in k["templates"]))
     link = _section(page, kind["type"]).get_by_role("link", name="Practise this type")
     key = link.get_attribute("data-next")
     assert key == next(t["key"] for t in kind["templates"] if t["page"])  # nothing tried: the first
@@ -227,7 +208,7 @@ def test_the_page_passes_axe_with_progress_shown(site, scheme):
     context = browser.new_context(color_scheme=scheme)
     page = context.new_page()
     page.goto(base + PROGRESS, wait_until="load")
-    kind, entry, mistake = _on_quick_check(_embedded(page))
+    kind, entry, mistake = _on_quick_check(embedded(page, "pp-data"))
     questions = context.new_page()
     questions.goto(base + QUICK_CHECK, wait_until="load")
     _answer_with_a_mistake(questions, entry["key"], mistake)
@@ -241,7 +222,7 @@ def test_the_page_passes_axe_with_progress_shown(site, scheme):
 
 
 def test_the_file_controls_work_from_the_keyboard_with_visible_focus(context):
-    page = _open(context, PROGRESS)
+    page = open_page(context, PROGRESS)
     page.get_by_role("button", name="Export progress").focus()
     page.keyboard.press("Tab")
     assert page.evaluate("document.activeElement.id") == "pp-import"

@@ -6,58 +6,40 @@ review line; print builds say where the progress lives."""
 
 from __future__ import annotations
 
-import json
 import re
-import subprocess
-import sys
-import textwrap
 from pathlib import Path
 
 import pytest
+from support.pages import embedded
+from support.sphinx import small_book, sphinx_build
 
 from physics_figures import bank
 
 pytestmark = [pytest.mark.build]
 
 ROOT = Path(__file__).resolve().parents[1]
-SPHINX_BUILD = Path(sys.executable).parent / "sphinx-build"
 
 
 def _project(tmp_path: Path, asked: str) -> Path:
-    (tmp_path / "conf.py").write_text(textwrap.dedent(f"""\
-        import sys
-        sys.path.insert(0, {str(ROOT / "book" / "_ext")!r})
-        extensions = ["myst_parser", "questions"]
-        question_topics = ["physics_figures.bank"]
-        root_doc = "index"
-        """))
-    (tmp_path / "index.md").write_text("# Book\n\n```{toctree}\nasked\nprogress\ndefs\n```\n")
-    (tmp_path / "defs.md").write_text("# Definitions\n\n```{admonition} Learn these\n:class: self-test\n\n"
-                                      "- **Mass:** what resists a change in motion.\n"
-                                      "- **Newton\u2019s first law:** at rest or constant velocity.\n```\n")
-    (tmp_path / "asked.md").write_text("# Questions\n\n" + asked)
-    (tmp_path / "progress.md").write_text("# Your practice\n\nWhat you practised.\n\n```{practice-progress}\n```\n")
-    return tmp_path
+    return small_book(tmp_path, {
+        "asked": "# Questions\n\n" + asked,
+        "progress": "# Your practice\n\nWhat you practised.\n\n```{practice-progress}\n```\n",
+        "defs": "# Definitions\n\n```{admonition} Learn these\n:class: self-test\n\n"
+                "- **Mass:** what resists a change in motion.\n"
+                "- **Newton\u2019s first law:** at rest or constant velocity.\n```\n",
+    })
 
 
-def _build(source: Path, builder: str) -> subprocess.CompletedProcess:
-    return subprocess.run(
-        [str(SPHINX_BUILD), "-W", "--keep-going", "-q", "-b", builder, str(source), str(source / "_out" / builder)],
-        check=False, capture_output=True, text=True, timeout=300,
-    )
-
-
-def _embedded(source: Path) -> dict:
-    page = (source / "_out" / "html" / "progress.html").read_text()
-    return json.loads(re.search(r'<script type="application/json" class="pp-data">(.*?)</script>', page).group(1))
+def _progress_data(source: Path) -> dict:
+    return embedded((source / "_out" / "html" / "progress.html").read_text(), "pp-data")
 
 
 def test_the_page_embeds_the_bank_by_type_with_the_page_that_places_each(tmp_path):
     key = next(iter(t.key for t in bank.TEMPLATES.values() if not t.try_first))
     source = _project(tmp_path, f"```{{question}} {key}\n```\n")
-    result = _build(source, "html")
+    result = sphinx_build(source, "html")
     assert result.returncode == 0, result.stderr
-    data = _embedded(source)
+    data = _progress_data(source)
     assert [kind["type"] for kind in data["types"]] == list(bank.TOPIC.type_keys)
     entries = {t["key"]: t for kind in data["types"] for t in kind["templates"]}
     assert set(entries) == {t.key for t in bank.TEMPLATES.values() if not t.try_first}
@@ -90,14 +72,14 @@ def test_the_page_embeds_the_bank_by_type_with_the_page_that_places_each(tmp_pat
 
     # The question moves off the page: the progress page is rewritten though it did not change.
     (source / "asked.md").write_text("# Questions\n\nNone today.\n")
-    result = _build(source, "html")
+    result = sphinx_build(source, "html")
     assert result.returncode == 0, result.stderr
-    assert all(t["page"] is None for kind in _embedded(source)["types"] for t in kind["templates"])
+    assert all(t["page"] is None for kind in _progress_data(source)["types"] for t in kind["templates"])
 
 
 def test_print_builds_say_the_progress_is_kept_in_the_browser(tmp_path):
     source = _project(tmp_path, "Text.\n")
-    result = _build(source, "text")
+    result = sphinx_build(source, "text")
     assert result.returncode == 0, result.stderr
     text = (source / "_out" / "text" / "progress.txt").read_text()
     assert "What you practised." in text

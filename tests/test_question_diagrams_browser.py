@@ -4,7 +4,8 @@ the new variant's own SVG, loaded, and its alt text carries that variant's numbe
 from __future__ import annotations
 
 import pytest
-from browser import open_browser, page_without_errors, question_pages, serve_site
+from browser import open_browser, question_pages, serve_site
+from support.pages import page_without_errors
 from test_question_diagrams import _numbers
 
 from physics_figures import bank

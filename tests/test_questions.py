@@ -13,15 +13,14 @@ import json
 import math
 import pickle
 import re
-import subprocess
-import sys
-import textwrap
 from html import unescape as html_unescape
 from pathlib import Path
 
 import pytest
 import yaml
 from conftest import variant_param
+from support.sphinx import small_book, sphinx_build
+from support.templates import printed
 
 from physics_figures import bank, textformat
 from physics_figures import questions as q
@@ -31,7 +30,6 @@ from physics_figures.notation import round_number
 from physics_figures.parts.numeric import G_TEN_SLIP
 
 ROOT = Path(__file__).resolve().parents[1]
-SPHINX_BUILD = Path(sys.executable).with_name("sphinx-build")
 
 
 def shown(part: q.Part) -> str:
@@ -41,11 +39,6 @@ def shown(part: q.Part) -> str:
 def numeric(question: q.Question) -> list[q.Part]:
     """The parts that ask for a number (not a choice or an explanation)."""
     return [part for part in question.parts if part.kind == "numeric"]
-
-
-def printed(key: str) -> q.Question:
-    """A template's printed version (variant 0): what a first visit and the PDFs show."""
-    return bank.TEMPLATES[key].variant(0)
 
 
 def scheme_text(question: q.Question) -> str:
@@ -500,19 +493,11 @@ def test_a_mark_must_be_a_cambridge_code():
 
 
 def _sphinx_project(tmp_path: Path, body: str) -> Path:
-    (tmp_path / "conf.py").write_text(textwrap.dedent(f"""\
-        import sys
-        sys.path.insert(0, {str(ROOT / "book" / "_ext")!r})
-        extensions = ["myst_parser", "questions"]
-        question_topics = ["physics_figures.bank"]
-        myst_enable_extensions = ["dollarmath"]
-        root_doc = "index"
-        latex_documents = [("index", "book.tex", "Book", "Author", "manual")]
-        """))
-    (tmp_path / "index.md").write_text("# Book\n\n```{toctree}\nplain\nasked\n```\n")
-    (tmp_path / "plain.md").write_text("# A page without questions\n\nText.\n")
-    (tmp_path / "asked.md").write_text("# Questions\n\n" + body + "\n## Key\n\n```{answer-key}\n```\n")
-    return tmp_path
+    return small_book(tmp_path, {
+        "plain": "# A page without questions\n\nText.\n",
+        "asked": "# Questions\n\n" + body + "\n## Key\n\n```{answer-key}\n```\n",
+    }, conf='myst_enable_extensions = ["dollarmath"]\n'
+            'latex_documents = [("index", "book.tex", "Book", "Author", "manual")]\n')
 
 
 QUICK_CHECK_1 = """\
@@ -521,17 +506,10 @@ QUICK_CHECK_1 = """\
 """
 
 
-def _build(source: Path, builder: str) -> subprocess.CompletedProcess:
-    return subprocess.run(
-        [str(SPHINX_BUILD), "-W", "--keep-going", "-q", "-b", builder, str(source), str(source / "_out" / builder)],
-        check=False, capture_output=True, text=True, timeout=300,
-    )
-
-
 @pytest.mark.build
 def test_html_question_has_labelled_boxes_status_feedback_and_a_hidden_worked_answer(tmp_path):
     source = _sphinx_project(tmp_path, QUICK_CHECK_1)
-    result = _build(source, "html")
+    result = sphinx_build(source, "html")
     assert result.returncode == 0, result.stderr
     page = (source / "_out" / "html" / "asked.html").read_text()
     assert '<form class="q-form" data-question="quick-check-1" data-type="force-momentum" data-variant="0"' in page
@@ -552,7 +530,7 @@ def test_html_question_has_labelled_boxes_status_feedback_and_a_hidden_worked_an
 @pytest.mark.build
 def test_print_builds_show_the_question_with_answer_lines_and_the_key(tmp_path):
     source = _sphinx_project(tmp_path, QUICK_CHECK_1)
-    result = _build(source, "text")
+    result = sphinx_build(source, "text")
     assert result.returncode == 0, result.stderr
     text = (source / "_out" / "text" / "asked.txt").read_text()
     question = text[:text.index("Answer key")]
@@ -566,7 +544,7 @@ def test_print_builds_show_the_question_with_answer_lines_and_the_key(tmp_path):
 @pytest.mark.build
 def test_latex_build_prints_the_question_and_its_key(tmp_path):
     source = _sphinx_project(tmp_path, QUICK_CHECK_1)
-    result = _build(source, "latex")
+    result = sphinx_build(source, "latex")
     assert result.returncode == 0, result.stderr
     tex = (source / "_out" / "latex" / "book.tex").read_text()
     assert "initially at rest" in tex and "final momentum =" in tex
@@ -578,7 +556,7 @@ def test_a_template_directive_with_text_or_an_unknown_key_fails_the_strict_build
     """A template writes its own text (so the page cannot disagree with its numbers)."""
     source = _sphinx_project(tmp_path, QUICK_CHECK_1.replace("quick-check-1\n", "quick-check-1\nA force of 6.0 N\n")
                              + "\n```{question} quick-check-99\n```\n")
-    result = _build(source, "html")
+    result = sphinx_build(source, "html")
     assert result.returncode != 0
     assert "question quick-check-1: a template writes its own text; leave the directive empty" in result.stderr
     assert "question: no template 'quick-check-99' in the topics physics_figures.bank" in result.stderr
@@ -590,7 +568,7 @@ def test_an_edit_to_the_bank_re_reads_the_page(tmp_path):
     book/_ext/fresh_figures.py) as dependencies, so an incremental build re-reads a page when
     a template changes."""
     source = _sphinx_project(tmp_path, QUICK_CHECK_1)
-    assert _build(source, "html").returncode == 0
+    assert sphinx_build(source, "html").returncode == 0
     with (source / "_out" / "html" / ".doctrees" / "environment.pickle").open("rb") as file:
         env = pickle.load(file)
     depends = {Path(path).name for path in env.dependencies["asked"]}

@@ -11,11 +11,11 @@ from __future__ import annotations
 
 import json
 import re
-import shutil
 import subprocess
 from pathlib import Path
 
-import pytest
+from support.engine import mark_all, node
+from support.templates import printed
 
 from physics_figures import bank
 from physics_figures import questions as q
@@ -25,25 +25,11 @@ ROOT = Path(__file__).resolve().parents[1]
 ENGINE = ROOT / "book" / "_ext" / "questions" / "static" / "marking.js"
 
 
-def node() -> str:
-    found = shutil.which("node")
-    if found is None:
-        pytest.fail("node is missing, so the marking engine cannot be tested: apt-get install nodejs (Node 20)")
-    return found
-
-
 def test_marking_engine_passes_its_node_tests():
     result = subprocess.run([node(), "--test", str(ROOT / "tests" / "js")], check=False, capture_output=True, text=True,
                             timeout=120, cwd=ROOT)
     assert result.returncode == 0, result.stdout[-4000:] + result.stderr[-2000:]
     assert "# fail 0" in result.stdout
-
-
-def mark_all(cases: list[dict]) -> list[dict]:
-    result = subprocess.run([node(), str(ROOT / "tests" / "js" / "mark_cases.js")], input=json.dumps(cases),
-                            check=False, capture_output=True, text=True, timeout=120)
-    assert result.returncode == 0, result.stderr
-    return json.loads(result.stdout)
 
 
 def _answer(part: q.Part, value: float, *, sig_figs: int, unit: str | None = None, direction: str | None = None,
@@ -54,10 +40,6 @@ def _answer(part: q.Part, value: float, *, sig_figs: int, unit: str | None = Non
     if exact and re.fullmatch(r"-?\d*[1-9]0+", typed):
         typed = f"{value:.{sig_figs - 1}e}"
     return {"value": typed, "unit": unit or part.unit, "direction": direction or part.answer_direction}
-
-
-def printed(key: str) -> q.Question:
-    return bank.TEMPLATES[key].variant(0)
 
 
 def _cases():

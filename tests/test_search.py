@@ -12,6 +12,7 @@ import re
 
 import pytest
 from playwright.sync_api import TimeoutError as PlaywrightTimeout
+from support.pages import readers_of
 
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
@@ -104,17 +105,7 @@ class Reader:
         self.context.close()
 
 
-@pytest.fixture
-def reader(browser, base_url):
-    opened = []
-
-    def open_reader(width: int, **options) -> Reader:
-        opened.append(Reader(browser, base_url, width, **options))
-        return opened[-1]
-
-    yield open_reader
-    for each in opened:
-        each.close()
+reader = readers_of(Reader)  # reader(width, ...) opens one; each is closed after the test
 
 
 def _check_results(query: str, results: list[dict]) -> None:

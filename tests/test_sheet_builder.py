@@ -10,9 +10,8 @@ key holds, and a graph inlined into a page keeps its references, with ids of its
 
 from __future__ import annotations
 
-import json
+import functools
 import re
-import subprocess
 import sys
 from pathlib import Path
 
@@ -27,17 +26,13 @@ ROOT = Path(__file__).resolve().parents[1]
 RUNNER = ROOT / "tests" / "js" / "sheet_plan.js"
 sys.path.insert(0, str(ROOT / "book" / "_ext"))
 from questions.sheet_builder import builder_index, inline_svg
-from test_questions_engine import node
+from support.engine import node_json
 
 TOPIC = topics.load("physics_figures.bank")
 TYPES = [kind.key for kind in TOPIC.types]
 
 
-def run_builder(request: dict) -> dict:
-    result = subprocess.run([node(), str(RUNNER)], input=json.dumps(request), capture_output=True, text=True,
-                            timeout=120, check=False)
-    assert result.returncode == 0, result.stderr[-3000:]
-    return json.loads(result.stdout)
+run_builder = functools.partial(node_json, RUNNER)  # run_builder(request): what the runner answers
 
 
 def command_line_plan(case: dict) -> dict:

@@ -23,9 +23,10 @@ import re
 import subprocess
 
 import pytest
-import sheet_pages
 from browser import axe_violations, serve_site
 from sheet_pages import split_choices
+from support.pages import words
+from support.pdf import pdf_pages
 
 from physics_figures import topics
 from physics_figures.worksheets import plan, ready_made_repeats, select, usable_versions
@@ -65,10 +66,6 @@ def make_sheets(page, *, types=TYPES, marks=MARKS, versions=VERSIONS, seed=SEED,
         page.locator(".sb-sheet").nth(versions - 1).wait_for(timeout=60_000)
 
 
-def words(text: str) -> str:
-    return re.sub(r"\s+", " ", text.replace("\u00a0", " ").replace("\u202f", " ")).strip()
-
-
 def html_text(html: str) -> str:
     return words(re.sub(r"<[^>]+>", "", html).replace("&amp;", "&").replace("&lt;", "<").replace("&gt;", ">"))
 
@@ -102,13 +99,6 @@ def test_the_builder_gives_the_command_line_s_questions(browser, base_url, expec
     page.close()
 
 
-def pdf_pages(path) -> list[str]:
-    count = int(re.search(r"Pages:\s+(\d+)", subprocess.run(["pdfinfo", str(path)], capture_output=True,
-                                                            text=True, check=True).stdout)[1])
-    return [subprocess.run(["pdftotext", "-layout", "-f", str(n), "-l", str(n), str(path), "-"],
-                           capture_output=True, text=True, check=True).stdout for n in range(1, count + 1)]
-
-
 def test_printed_a4_one_sheet_or_key_per_version_with_every_mark_and_total(browser, base_url, expected, tmp_path):
     page = browser.new_page()
     page.goto(f"{base_url}/{PAGE}")
@@ -117,7 +107,7 @@ def test_printed_a4_one_sheet_or_key_per_version_with_every_mark_and_total(brows
     page.pdf(path=str(pdf), format="A4")
     info = subprocess.run(["pdfinfo", str(pdf)], capture_output=True, text=True, check=True).stdout
     assert re.search(r"Page size:\s+59[5-6](\.\d+)? x 84[1-3](\.\d+)? pts \(A4\)", info), info
-    pages = pdf_pages(pdf)
+    pages = pdf_pages(pdf, "-layout")
     # which section each page belongs to: a section starts at the top of a page, in order
     starts = [f"{kind} {v.letter}" for v in expected.versions for kind in ("sheet", "key")]
     sections: dict[str, str] = {}
@@ -331,7 +321,7 @@ def test_sheets_only_or_keys_only(browser, base_url, make, sheets, keys, tmp_pat
     assert page.locator(".sb-sheet").count() == sheets and page.locator(".sb-key").count() == keys
     pdf = tmp_path / "printed.pdf"
     page.pdf(path=str(pdf), format="A4")
-    printed = words(" ".join(pdf_pages(pdf)))
+    printed = words(" ".join(pdf_pages(pdf, "-layout")))
     assert ("Answer key, version A" in printed) == bool(keys) and ("Version A ·" in printed) == bool(sheets)
     page.close()
 
@@ -365,7 +355,7 @@ def test_a_key_s_marks_never_wrap(browser, base_url, tmp_path):
     assert lines and all(count == 1 for _, count in lines), [text for text, count in lines if count != 1]
     pdf = tmp_path / "keys.pdf"
     page.pdf(path=str(pdf), format="A4")
-    printed = "\n".join(pdf_pages(pdf))
+    printed = "\n".join(pdf_pages(pdf, "-layout"))
     assert not re.search(r"\[\d+\s*$", printed, re.MULTILINE) and re.search(r"\[\d+ marks\]", printed)
     page.close()
 
@@ -384,5 +374,5 @@ def test_printed_choice_questions_keep_their_options_with_the_stem(browser, base
     make_sheets(page, types=types, marks=marks)
     pdf = tmp_path / "sheets.pdf"
     page.pdf(path=str(pdf), format="A4")
-    assert split_choices(sheet_pages.pdf_pages(pdf), list(sheet.versions)) == []
+    assert split_choices(pdf_pages(pdf, "-enc", "UTF-8"), list(sheet.versions)) == []
     page.close()

@@ -9,7 +9,8 @@ import re
 import subprocess
 
 import pytest
-from sheet_pages import pdf_pages, split_choices
+from sheet_pages import split_choices
+from support.pdf import pdf_pages
 
 from physics_figures.worksheets import site_sheets
 from physics_figures.worksheets.build import typeset, write_sources
@@ -36,7 +37,8 @@ def test_sheets_with_choice_questions_are_typeset():
 @pytest.mark.parametrize("sheet", SHEETS, ids=lambda s: s.name)
 def test_a_choice_question_s_stem_and_options_print_on_one_page(typeset_sheets, sheet):
     split = [line for version in sheet.versions
-             for line in split_choices(pdf_pages(typeset_sheets / f"{sheet.name}-{version.letter}.pdf"), [version])]
+             for line in split_choices(pdf_pages(typeset_sheets / f"{sheet.name}-{version.letter}.pdf",
+                                                 "-enc", "UTF-8"), [version])]
     assert split == []
 
 

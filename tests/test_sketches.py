@@ -10,7 +10,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
-from test_questions_engine import node
+from support.engine import node
 
 from physics_figures.bank import sketches
 from physics_figures.parts.sketch import Feature, SketchAxes, SketchPart, SketchPoint

@@ -15,8 +15,7 @@ from pathlib import Path
 
 import pytest
 from moodle_format import check_file
-from test_marks_rules import mark_questions
-from test_questions_engine import node
+from support.engine import mark_questions, node
 
 from physics_figures import bank, textformat
 from physics_figures.bank import statements

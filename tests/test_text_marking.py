@@ -14,7 +14,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
-from test_questions_engine import node
+from support.engine import node
 
 from physics_figures import bank
 from physics_figures.bank import statements

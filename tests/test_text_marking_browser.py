@@ -14,6 +14,7 @@ from pathlib import Path
 
 import pytest
 from browser import open_browser, serve_site
+from support.pages import question_page
 
 from physics_figures import bank
 
@@ -22,13 +23,6 @@ pytestmark = [pytest.mark.site, pytest.mark.browser]
 ROOT = Path(__file__).resolve().parents[1]
 CORPUS = json.loads((ROOT / "tests" / "fixtures" / "text_answers.json").read_text())["answers"]
 REPORT = ROOT / "_build" / "text-marking-agreement.json"
-
-
-def page_with(site_dir: Path, key: str) -> str:
-    for html in sorted(site_dir.rglob("*.html")):
-        if f'data-question="{key}"' in html.read_text(encoding="utf-8"):
-            return "/" + html.relative_to(site_dir).as_posix()
-    raise AssertionError(f"no page places the template {key}")
 
 
 @pytest.fixture(scope="module")
@@ -43,7 +37,7 @@ def open_variant(served, site_dir, key: str, variant: int):
     browser, base_url = served
     context = browser.new_context()
     page = context.new_page()
-    url = base_url + page_with(site_dir, key)
+    url = base_url + question_page(site_dir, key)
     page.goto(url, wait_until="load")
     if variant:
         page.evaluate("([key, v]) => localStorage.setItem('dynamics-questions:variant:' + key, "

@@ -13,6 +13,8 @@ import re
 from pathlib import Path
 
 import pytest
+from support.pages import fill_part, page_without_errors, question_form
+from support.templates import printed
 
 from physics_figures import answers, bank
 from physics_figures.bank import worked_examples
@@ -88,10 +90,6 @@ def _numeric_parts(number: int) -> dict[str, list[str]]:
     return {part: found for part, found in codes.items() if "M1" not in found}
 
 
-def _question(key: str):
-    return bank.TEMPLATES[key].variant(0)
-
-
 # ------------------------------------------------------------------- the content
 
 
@@ -103,7 +101,7 @@ def test_every_numeric_part_of_every_worked_example_has_a_try_first_box(number):
     answered = worked_examples.EXAMPLE_PARTS[key]
     assert set(answered) == set(numeric), f"{key} answers {answered}; the numeric parts are {sorted(numeric)}"
     assert list(answered) == sorted(answered), "boxes follow the example's order"
-    assert len(answered) == len(_question(key).parts)
+    assert len(answered) == len(printed(key).parts)
     # each box's glued value is printed in the solution of the part it answers
     solution = _parts(_block(_page(number), "solution"))
     for part, (glue, _, _) in zip(answered, NOTES_VALUES[key], strict=True):
@@ -113,7 +111,7 @@ def test_every_numeric_part_of_every_worked_example_has_a_try_first_box(number):
 def test_the_try_first_boxes_count_what_the_pages_and_the_answers_module_give():
     """Example 1: 3 parts; 2: 3; 3: 2; 4: 3 (with 5 boxes: two components, speed and angle,
     the energy after); 5: 3. Each box's value is one the example's answers function glues."""
-    boxes = {key: len(_question(key).parts) for key in KEYS}
+    boxes = {key: len(printed(key).parts) for key in KEYS}
     assert boxes == {"example-1-try": 3, "example-2-try": 3, "example-3-try": 2, "example-4-try": 5,
                      "example-5-try": 3}
     assert sum(len(_numeric_parts(n)) for n in EXAMPLES) == 14
@@ -126,18 +124,18 @@ def test_the_try_first_boxes_count_what_the_pages_and_the_answers_module_give():
 def test_each_key_is_the_value_the_notes_print(key):
     number = int(key.split("-")[1])
     glued = answers.ALL[f"example_{number}"]()
-    question = _question(key)
-    for part, (glue, printed, where) in zip(question.parts, NOTES_VALUES[key], strict=True):
+    question = printed(key)
+    for part, (glue, in_the_notes, where) in zip(question.parts, NOTES_VALUES[key], strict=True):
         assert part.value == pytest.approx(glued[glue].value, rel=1e-12), where
-        assert glued[glue].text == printed, where
-        assert format_number(part.value, part.shown_sig_figs) == printed, where
+        assert glued[glue].text == in_the_notes, where
+        assert format_number(part.value, part.shown_sig_figs) == in_the_notes, where
 
 
 @pytest.mark.parametrize("key", KEYS)
 def test_mark_lines_carry_the_codes_of_the_examples_solution(key):
     number = int(key.split("-")[1])
     numeric = _numeric_parts(number)
-    question = _question(key)
+    question = printed(key)
     answered = worked_examples.EXAMPLE_PARTS[key]
     for part, codes in numeric.items():
         boxes = {box for box, of in zip(question.part_ids, answered, strict=True) if of == part}
@@ -148,7 +146,7 @@ def test_mark_lines_carry_the_codes_of_the_examples_solution(key):
 
 @pytest.mark.parametrize("key", KEYS)
 def test_later_parts_carry_an_earlier_error_forward(key):
-    question = _question(key)
+    question = printed(key)
     uses = {pid: part.ecf.uses for pid, part in zip(question.part_ids, question.parts, strict=True) if part.ecf}
     assert uses == ECF_USES[key]
     values = {pid: part.value for pid, part in zip(question.part_ids, question.parts, strict=True)}
@@ -160,7 +158,7 @@ def test_later_parts_carry_an_earlier_error_forward(key):
 
 @pytest.mark.parametrize("key", KEYS)
 def test_every_box_names_the_classic_mistakes_with_what_to_revisit(key):
-    for part in _question(key).parts:
+    for part in printed(key).parts:
         assert part.mistakes, f"{key}: {part.prompt} names no mistake"
         feedback = [mistake.feedback for mistake in part.mistakes]
         assert len(set(feedback)) == len(feedback), f"{key}: {part.prompt} says the same twice"
@@ -169,7 +167,7 @@ def test_every_box_names_the_classic_mistakes_with_what_to_revisit(key):
 
 
 def test_the_text_says_which_part_of_the_example_each_box_answers():
-    texts = {key: _question(key).text for key in KEYS}
+    texts = {key: printed(key).text for key in KEYS}
     assert "Here" not in texts["example-1-try"]  # (a), (b), (c) are the example's own
     assert "Here (c) answers the example's (d)." in texts["example-2-try"]
     assert "Here (a) answers the example's (b) and (b) its (d)." in texts["example-3-try"]
@@ -221,6 +219,9 @@ def test_the_built_page_asks_the_try_first_question_before_the_solution(site_dir
 # ------------------------------------------------------------- in Chromium
 
 
+TRY = "example-1-try"  # the question example 1's page asks a student to try
+
+
 @pytest.fixture(scope="module")
 def example_1(site_dir):
     from browser import open_browser, serve_site
@@ -231,23 +232,13 @@ def example_1(site_dir):
 
 @pytest.fixture
 def page(example_1):
-    from browser import page_without_errors
-
     browser, url = example_1
     with page_without_errors(browser, url) as page:
         yield page
 
 
-def _form(page):
-    return page.locator('form.q-form[data-question="example-1-try"]')
-
-
 def _answer(page, part: str, value: str, unit: str, direction: str = ""):
-    box = _form(page).locator(f'[data-part="{part}"]')
-    box.locator("input.q-value").fill(value)
-    box.locator("input.q-unit").fill(unit)
-    if direction:
-        box.locator("select.q-direction").select_option(direction)
+    fill_part(question_form(page, TRY), part, value, unit, direction)
 
 
 def _solution_open(page) -> bool:
@@ -260,30 +251,30 @@ def _solution_open(page) -> bool:
 @pytest.mark.browser
 def test_a_wrong_a_carries_forward_and_the_solution_opens_after_check(page):
     assert not _solution_open(page), "the solution is hidden until the student tries"
-    assert _form(page).locator("button.q-new").count() == 0
+    assert question_form(page, TRY).locator("button.q-new").count() == 0
     # (a) wrong: the resistive forces left out, 3000 / 1600 = 1.875; (b) follows from it:
     # T = 200 + 400 x 1.875 = 950 N; (c) the trailer pulls the car back with that 950 N.
     _answer(page, "a", "1.875", "m s^-2")
     _answer(page, "b", "950", "N")
     _answer(page, "c", "950", "N", "backwards")
-    _form(page).locator("button.q-check").click()
-    a, b, c = (_form(page).locator(f'[data-part="{p}"]') for p in "abc")
+    question_form(page, TRY).locator("button.q-check").click()
+    a, b, c = (question_form(page, TRY).locator(f'[data-part="{p}"]') for p in "abc")
     assert a.locator(".q-feedback").get_attribute("data-code") == "mistake"
     assert "resistive forces" in a.locator(".q-feedback").inner_text()
     assert a.locator(".q-part-marks").inner_text() == "0/2 marks"
     for later in (b, c):
         assert later.locator(".q-feedback").get_attribute("data-code") == "ecf"
         assert later.locator(".q-part-marks").inner_text() == "2/2 marks (ecf)"
-    assert _form(page).locator(".q-score").inner_text() == "4/6 marks"
+    assert question_form(page, TRY).locator(".q-score").inner_text() == "4/6 marks"
     page.wait_for_function("!document.querySelector('.solution.try-first').classList.contains('toggle-hidden')")
     assert _solution_open(page)
     # The right size the wrong way round loses only the direction's B1.
     _answer(page, "a", "1.5", "m s^-2")
     _answer(page, "b", "800", "N")
     _answer(page, "c", "800", "N", "forwards")
-    _form(page).locator("button.q-check").click()
+    question_form(page, TRY).locator("button.q-check").click()
     assert c.locator(".q-part-marks").inner_text() == "1/2 marks"
-    assert _form(page).locator(".q-score").inner_text() == "5/6 marks"
+    assert question_form(page, TRY).locator(".q-score").inner_text() == "5/6 marks"
 
 
 @pytest.mark.site
@@ -296,14 +287,14 @@ def test_the_solution_opens_once_and_the_student_can_open_it_first(page):
     assert not _solution_open(page)
     # The first Check opens it; closed again, a later Check leaves it closed.
     _answer(page, "a", "1.5", "m s^-2")
-    _form(page).locator("button.q-check").click()
+    question_form(page, TRY).locator("button.q-check").click()
     assert _solution_open(page)
     page.locator(".solution.try-first .toggle-button").click()
-    _form(page).locator("button.q-check").click()
+    question_form(page, TRY).locator("button.q-check").click()
     assert not _solution_open(page)
     # After a reload the attempt is restored, and so is the open solution.
     page.reload(wait_until="load")
-    assert _form(page).locator(".q-score").inner_text() == "2/6 marks"
+    assert question_form(page, TRY).locator(".q-score").inner_text() == "2/6 marks"
     assert _solution_open(page)
 
 
@@ -311,7 +302,7 @@ def test_the_solution_opens_once_and_the_student_can_open_it_first(page):
 @pytest.mark.browser
 def test_printed_the_example_keeps_its_solution_and_the_box_is_answer_lines(page):
     page.emulate_media(media="print")
-    assert not _form(page).is_visible()
+    assert not question_form(page, TRY).is_visible()
     lines = page.locator("#question-example-1-try .q-answer-lines")
     assert lines.is_visible()
     assert "(a) acceleration of the car and trailer =" in lines.inner_text()

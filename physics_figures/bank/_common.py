@@ -7,7 +7,9 @@ import math
 import re
 from collections.abc import Callable, Sequence
 
+from ..notation import WORKING_EXACT_UP_TO as _EXACT_UP_TO
 from ..notation import format_number, round_number
+from ..notation import working_number as w  # noqa: F401 (the templates print their working with w)
 from ..questions import DEFAULT_CHECK_SIG_FIGS, Mistake, format_reading
 
 #: Every usual form of a unit, for the marker's messages.
@@ -18,18 +20,6 @@ M_S2 = "m s^-2 (m/s^2)"
 PER_S = "m s<sup>−1</sup>"
 PER_S2 = "m s<sup>−2</sup>"
 
-#: A value of the working that is exact within this many significant figures prints in full.
-_EXACT_UP_TO = 6
-
-
-def w(value: float) -> str:
-    """An intermediate value as a mark scheme writes it: exact in full when it is exact to
-    a few figures (0.16 × 25 = 4.0, 900 × 12 = 10 800, 10.125 J), else to 3 s.f. (1.29), so
-    the working never rounds part-way to 2 s.f."""
-    for sig_figs in range(2, _EXACT_UP_TO + 1):
-        if math.isclose(float(round_number(value, sig_figs)), value, rel_tol=1e-9, abs_tol=1e-12):
-            return format_number(value, sig_figs)
-    return format_number(value, 3)
 
 
 def stated_figures(value: float, least: int = 2, most: int = 4) -> int:

@@ -10,8 +10,8 @@ from pathlib import Path
 from typing import ClassVar
 
 from .. import marking
+from ..checks import require as _require  # noqa: F401 (the kinds and questions.py take it from here)
 from ..notation import format_number, join_units
-from ..refusals import require
 
 #: How a part treats direction: a size only, a signed value along a stated positive
 #: direction, or a size plus a direction chosen from a list.
@@ -32,10 +32,6 @@ G_TEN, G_NINE_EIGHT = 10.0, 9.8
 
 _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
-
-#: How a part kind refuses an impossible value (physics_figures.refusals, which the data a
-#: question prints share: physics_figures.pictures).
-_require = require
 
 #: A question's parts are (a), (b), ...; an ecf formula names earlier answers by these ids.
 PART_IDS = tuple("abcdefghij")

@@ -35,6 +35,7 @@ from dataclasses import dataclass
 from functools import cached_property
 
 from .. import topics
+from ..checks import require as _require
 from ..questions import Question
 from ..topics import Topic
 from ..variants import Template
@@ -50,11 +51,6 @@ SITE_VERSIONS = 3
 #: The one data line every sheet prints (the notes: g = 9.81 m s⁻²).
 DATA_LINE = "Data: take g = 9.81 m s⁻²."
 MAX_VERSIONS = len(string.ascii_uppercase)
-
-
-def _require(ok: bool, name: str, value, rule: str) -> None:
-    if not ok:
-        raise ValueError(f"{name} {rule} (got {name}={value!r})")
 
 
 def topic_of(topic: Topic | None) -> Topic:

@@ -17,11 +17,10 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..reproducible import source_date_epoch
 from . import Sheet
 from .latex import answer_key, graphs, question_sheet
 
-#: The date stamped into every PDF when the caller sets none (the Makefile's, 2026-01-01).
-DEFAULT_SOURCE_DATE_EPOCH = "1767225600"
 XELATEX = ("xelatex", "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape")
 
 
@@ -34,7 +33,7 @@ class Job:
 
 def _env() -> dict[str, str]:
     env = dict(os.environ)
-    env.setdefault("SOURCE_DATE_EPOCH", DEFAULT_SOURCE_DATE_EPOCH)
+    env["SOURCE_DATE_EPOCH"] = str(source_date_epoch())  # when the caller sets none, the book's date
     env["FORCE_SOURCE_DATE"] = "1"
     return env
 

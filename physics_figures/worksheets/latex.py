@@ -22,8 +22,7 @@ from typing import NamedTuple
 import sympy
 
 from .. import marking, textformat
-from ..bank._common import w as working_number
-from ..notation import format_number, join_units, round_number
+from ..notation import format_number, join_units, round_number, working_number
 from ..questions import OPTION_LETTERS, Question, unit_text
 from . import DATA_LINE, Sheet, Version, part_marks
 

@@ -26,8 +26,9 @@ from physics_figures import marking  # the slips a record names as mistakes
 
 from . import form, schedule, store
 
-#: The slips the marking engine names itself (questions.js records them by these names) and the
-#: rule table's row that explains each (getting-the-marks): Your practice links them there.
+#: The slips the marking engine (marking.js) names itself, by which the page (questions.js)
+#: records them, and the rule table's row that explains each (getting-the-marks): Your
+#: practice links them there.
 GENERIC_MISTAKES = {name: f"rule:{slip['rule']}" for name, slip in marking.slips().items()}
 
 

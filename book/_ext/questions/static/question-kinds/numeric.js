@@ -1,7 +1,7 @@
 /* The numeric part kind (a calculated value, or a reading from a graph): numbers as students
  * write them, significant figures, units, direction, named mistakes, alternatives. Marks one
  * part's answer to an outcome (code, message); what an outcome earns is the rule table's
- * (physics_figures/marking_rules.json), applied by questions.js. Its Python twins are Part and
+ * (physics_figures/marking_rules.json), applied by marking.js. Its Python twins are Part and
  * GraphPart (physics_figures/parts/numeric.py and graph.py). */
 (function (root) {
   "use strict";

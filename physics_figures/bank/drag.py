@@ -14,6 +14,7 @@ from ..models import (
     drag_force,
     falling_acceleration,
     power_law_constant,
+    power_law_drag,
     power_law_terminal_velocity,
     skydive,
     sphere_drag_constant,
@@ -1009,6 +1010,79 @@ def stokes_terminal_speed(grams: float = 0.11, radius_mm: float = 1.5, density: 
     )
 
 
+#: The density of water, kg m^-3, as the papers give it (9702/22/M/J/11 Q2(a)(ii)).
+_WATER_DENSITY = 1000.0
+
+
+def _raindrop_acceleration_mistakes(mass: float, drop_weight: float, drag: float, radius: float) -> tuple:
+    """The acceleration of a drop under a linear drag, worked wrongly."""
+    return (
+        Mistake("the drag left out", G_EARTH,
+                "That is the acceleration of free fall, with no drag. The drag acts upwards against the weight: "
+                "a = (mg − F) / m."),
+        Mistake("the drag added to the weight", acceleration(drop_weight + drag, mass),
+                "The drag acts upwards, against the motion: subtract it from the weight, mg − F = ma."),
+        Mistake("the diameter used for the radius in the mass",
+                falling_acceleration(_WATER_DENSITY * sphere_volume(2 * radius), drag),
+                "You used the diameter in 4/3 πr³. The volume uses the radius."),
+        Mistake("the drag divided by the mass", acceleration(drag, mass),
+                "That is the drag ÷ the mass. The resultant force is the weight less the drag: mg − F = ma."),
+    )
+
+
+def stokes_drag_acceleration(radius_mm: float = 1.2, speed: float = 2.5, constant: float = 5.0e-4) -> Question:
+    """A drag law F = 6πDRv given in the question, at a speed below the terminal speed: (a) the
+    drag, (b) the acceleration from mg − F = ma, with the drop's mass from its density and
+    4/3 πR³. 9702/22/M/J/11 Q2(a)(ii) asks both of a raindrop (R = 1.5 mm, v = 3.7 m s⁻¹,
+    D = 6.6 × 10⁻⁴ kg m⁻¹ s⁻¹, water 1000 kg m⁻³): 1 mark, then 3."""
+    radius = radius_mm / 1000
+    k = stokes_constant(constant, radius)
+    mass = _WATER_DENSITY * sphere_volume(radius)
+    drop_weight = weight(mass)
+    if speed >= power_law_terminal_velocity(mass, k, power=1):
+        raise ValueError(f"speed must be below the drop's terminal speed, "
+                         f"{power_law_terminal_velocity(mass, k, power=1)!r} m s^-1, for it to speed up "
+                         f"(got speed={speed!r})")
+    drag = power_law_drag(k, speed, power=1)
+    a = falling_acceleration(mass, drag)
+    r, v, d = n(radius_mm, 2), n(speed, 2), n(constant, 2)
+    return Question(
+        key="stokes-drag-acceleration",
+        text=(f"A spherical raindrop of radius {r} mm falls vertically through air. When its speed is {v} {PER_S}, "
+              "the drag on it is <em>F</em> = 6π<em>DRv</em>, where <em>R</em> is its radius, <em>v</em> its speed "
+              f"and <em>D</em> = {d} kg m<sup>−1</sup> s<sup>−1</sup> for air. The density of water is "
+              f"{n(_WATER_DENSITY, 4)} kg m<sup>−3</sup> and the volume of a sphere is 4/3 π<em>R</em><sup>3</sup>. "
+              "Calculate, at this speed, (a) the drag on the raindrop and (b) its acceleration."),
+        givens=(Given("radius", radius_mm, "mm", 2), Given("speed", speed, "m s^-1", 2),
+                Given("constant D", constant, "kg m^-1 s^-1", 2)),
+        parts=(
+            Part("drag on the raindrop", drag, "N", "force", shown_sig_figs=2,
+                 revisit="Put the numbers in the law the question gives: F = 6πDRv, with R in m.",
+                 mistakes=(
+                     Mistake("radius left in mm", power_law_drag(stokes_constant(constant, radius_mm), speed, power=1),
+                             f"You used the radius in mm. Convert it to m first: {r} mm = {r} × 10⁻³ m.",
+                             kind="slip"),
+                     Mistake("the diameter used for the radius",
+                             power_law_drag(stokes_constant(constant, 2 * radius), speed, power=1),
+                             f"You used 2 × {r} mm, the diameter. The law uses the radius R."),
+                     Mistake("6 left out", drag / 6, "The law is F = 6πDRv: you left out the 6."),
+                 ), see="friction"),
+            Part("acceleration of the raindrop", a, "m s^-2", "acceleration", units=M_S2, shown_sig_figs=2,
+                 answer_for_g=lambda g: falling_acceleration(mass, drag, g=g),
+                 ecf=Ecf(g_symbol - a_answer / mass_symbol, {"g_earth": G_EARTH, "mass": mass}),
+                 revisit="The resultant force is the weight less the drag: mg − F = ma, with m = ρ × 4/3 πR³.",
+                 mistakes=_raindrop_acceleration_mistakes(mass, drop_weight, drag, radius), see="skydiver"),
+        ),
+        mark_scheme=(
+            Mark(f"F = 6π × {d} × {r} × 10<sup>−3</sup> × {v} = {n(drag, 2)} N", "B1", "a"),
+            Mark(f"m = ρV = {n(_WATER_DENSITY, 4)} × 4/3 π × ({r} × 10<sup>−3</sup>)<sup>3</sup> "
+                 f"= {n(mass, 3)} kg", "C1", "b"),
+            Mark(f"mg − F = ma: {n(mass, 3)} × {n(G_EARTH, 3)} − {n(drag, 3)} = {n(mass, 3)} × a", "C1", "b"),
+            Mark(f"a = {n(a, 2)} {PER_S2}", "A1", "b"),
+        ),
+    )
+
+
 # ---------------------------------------------------------------------- which graph?
 
 #: The skydiver of the notes: 80 kg, a terminal velocity of 50 m s^-1 in freefall, 5.0 m s^-1
@@ -1230,6 +1304,10 @@ TEMPLATES = checked_givens(
     Template("stokes-terminal-speed", "drag", ("numeric",), "A drag law: Stokes' law", stokes_terminal_speed,
              {"grams": Draw(0.11, 0.10, 0.90, 0.01), "radius_mm": Draw(1.5, 1.5, 3.0, 0.1),
               "density": Draw(1260.0, 900.0, 1260.0, 10.0), "viscosity": Draw(1.4, 0.6, 1.5, 0.1)}),
+    Template("stokes-drag-acceleration", "drag", ("numeric",), "A drag law: the acceleration on the way",
+             stokes_drag_acceleration,
+             {"radius_mm": Draw(1.2, 1.0, 2.0, 0.1), "speed": Draw(2.5, 1.0, 4.0, 0.1),
+              "constant": Draw(5.0e-4, 4.0e-4, 8.0e-4, 0.1e-4)}),
     Template("falling-graph-choice", "drag", ("mcq",), "Which graph for a falling skydiver?",
              falling_graph_choice, {"story": Draw(0, 0, 4, 1)}, variant_count=5),
 )

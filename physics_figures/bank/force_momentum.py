@@ -8,11 +8,13 @@ import math
 import numpy
 import sympy
 
+from ..constants import G_EARTH
 from ..models import (
     MomentumHistory,
     acceleration,
     area_under_force_time,
     average_force,
+    bounce_contact_force,
     change_in_momentum,
     impulse,
     kinetic_energy,
@@ -45,11 +47,21 @@ from ..questions import (
 )
 from ..variants import Draw, Template
 from ._common import M_S as _M_S
-from ._common import MOMENTUM_WORKING_C1, PER_S, reading, reading_rule, w
+from ._common import (
+    MOMENTUM_WORKING_C1,
+    PER_S,
+    enough_figures,
+    one_of_each,
+    reading,
+    reading_rule,
+    stated_figures,
+    w,
+)
 from ._common import N_S as _N_S
 from .givens import checked_givens
 
 a_answer, mass_symbol, contact_symbol = sympy.symbols("a mass contact")
+c_answer, gravity_symbol = sympy.symbols("c gravity")
 
 
 def trolley_pushed_from_rest(force: float = 5.0, mass: float = 2.0, duration: float = 3.0) -> Question:
@@ -166,6 +178,152 @@ def ball_bounces_off_wall(mass: float = 0.16, speed_in: float = 15.0, speed_out:
             Mark(f"F = Δp / Δt = {w(dp)} / {t}", "C1", "b"),
             Mark(f"= {n(force, 2)} N", "A1", "b"),
             Mark("away from the wall (the direction of the ball's change in momentum)", "B1", "b", earns="direction"),
+        ),
+    )
+
+
+def _bounce_story(mass: str, speed_in: str, speed_out: str, contact: str, surface: str) -> str:
+    """The question's text: the ball at rest, then the bounce off a floor (dropped) or a ceiling
+    (thrown up), with the five parts."""
+    how = ("It is dropped and hits the floor vertically" if surface == "floor"
+           else "It is thrown vertically upwards and hits a horizontal ceiling")
+    back = "up" if surface == "floor" else "down"
+    return (f"A ball of mass {mass} kg rests on a horizontal table. {how} at {speed_in} {PER_S}. It is in contact "
+            f"with the {surface} for {contact} s and leaves it vertically {back}wards at {speed_out} {PER_S}. Air "
+            "resistance is negligible.\n\n"
+            "(a) Calculate the normal contact force of the table on the ball while it rests on the table.\n\n"
+            f"(b) Calculate the decrease in kinetic energy of the ball in the collision with the {surface}.\n\n"
+            "(c) Calculate the average resultant force on the ball during the collision and give its direction.\n\n"
+            f"(d) Calculate the magnitude of the average force exerted by the {surface} on the ball.\n\n"
+            f"(e) Calculate the average force exerted by the ball on the {surface} and give its direction.")
+
+
+def _energy_lost_mistakes(mass: float, speed_in: float, speed_out: float) -> tuple[Mistake, ...]:
+    """The kinetic energy lost in a bounce, worked wrongly."""
+    return one_of_each(kinetic_energy(mass, speed_in) - kinetic_energy(mass, speed_out), (
+        Mistake("speeds subtracted before squaring", kinetic_energy(mass, speed_in - speed_out),
+                "You squared the difference of the speeds. Work out each kinetic energy and subtract: "
+                "ΔE = ½mu² − ½mv², not ½m(u − v)².", see="kinetic-energy"),
+        Mistake("½ left out", 2 * (kinetic_energy(mass, speed_in) - kinetic_energy(mass, speed_out)),
+                "You left out the ½: kinetic energy is ½mv².", see="kinetic-energy"),
+        Mistake("the kinetic energy before only", kinetic_energy(mass, speed_in),
+                "That is all the kinetic energy it arrives with. It leaves with some: the decrease is "
+                "½mu² − ½mv².", see="kinetic-energy"),
+        Mistake("speeds added before squaring", kinetic_energy(mass, speed_in + speed_out),
+                "You added the speeds as in the change in momentum. Energy is a scalar: the decrease is "
+                "½mu² − ½mv².", see="kinetic-energy"),
+    ))
+
+
+def _contact_force_parts(mass: float, force: float, surface: str, ways: tuple[str, str]) -> tuple[Part, Part]:
+    """(d) the surface's force on the ball, F ± mg, and (e) its third-law partner on the surface."""
+    contact = bounce_contact_force(force, mass, surface=surface)
+    other = "ceiling" if surface == "floor" else "floor"
+    wrong_way = bounce_contact_force(force, mass, surface=other) if force > weight(mass) else None
+    sign = 1 if surface == "floor" else -1
+    on_ball, on_surface = ways
+    d_mistakes = [Mistake("the weight left out", force,
+                          f"That is the resultant force. The {surface}'s push is only one of the two forces on "
+                          "the ball: the weight acts too.", see="weight")]
+    if wrong_way is not None:
+        d_mistakes.append(Mistake("the weight the wrong way", wrong_way,
+                                  f"The weight acts downwards: off a {surface} the {surface}'s push and the weight "
+                                  f"{'oppose' if surface == 'floor' else 'act the same way'}, so "
+                                  f"R = F {'+' if surface == 'floor' else '−'} mg.", see="weight"))
+    return (
+        Part(f"magnitude of the average force exerted by the {surface} on the ball", contact, "N", "force",
+             shown_sig_figs=2, answer_for_g=lambda g: bounce_contact_force(force, mass, surface=surface, g=g),
+             ecf=Ecf(c_answer + sign * mass_symbol * gravity_symbol, {"mass": mass, "gravity": G_EARTH}),
+             revisit=f"The resultant force is the {surface}'s push and the weight together: "
+                     f"R {'−' if surface == 'floor' else '+'} mg = F.",
+             mistakes=one_of_each(contact, d_mistakes), see="weight"),
+        Part(f"average force exerted by the ball on the {surface}", contact, "N", "force", shown_sig_figs=2,
+             direction="choice", choices=("upwards", "downwards"), answer_direction=on_surface,
+             answer_for_g=lambda g: bounce_contact_force(force, mass, surface=surface, g=g),
+             direction_hint=f"Newton's third law: the ball pushes on the {surface} the opposite way to the "
+                            f"{surface}'s push on the ball.",
+             revisit=f"Newton's third law: the ball's force on the {surface} is equal in size and opposite in "
+                     f"direction to the {surface}'s force on the ball.",
+             mistakes=one_of_each(contact, (
+                 Mistake(f"the direction of the {surface}'s force", contact,
+                         f"That is the direction of the {surface}'s push on the ball. Its third-law partner acts "
+                         f"on the {surface}, the opposite way.", direction=on_ball, see="third-law"),
+                 Mistake("the resultant force", force,
+                         f"That is the resultant force on the ball. The ball's push on the {surface} is the "
+                         f"partner of the {surface}'s push on the ball, R, not of the resultant.",
+                         see="third-law"),
+             )), see="third-law"),
+    )
+
+
+def ball_bounce_contact_force(mass: float = 0.060, speed_in: float = 6.0, speed_out: float = 4.0,
+                              contact: float = 0.080, ceiling: int = 0) -> Question:
+    """A ball bounces vertically off a floor or a ceiling: the kinetic energy it loses, the
+    resultant force m(u + v)/t, the surface's force R = F ± mg, and the ball's force on the
+    surface (third law). The papers ask these of one bounce: 9702/23/M/J/18 Q3 (a ceiling),
+    9702/21/O/N/20 Q3(b) and 9702/22/M/J/21 Q2(c) (a floor), and 9702/21/M/J/16 Q3(a)(i) the
+    contact force on the ball at rest ("force (= mg = 0.15 × 9.81) = 1.5 (1.47) N A1")."""
+    if speed_out >= speed_in:  # a real bounce loses kinetic energy
+        raise ValueError(f"speed_out must be less than speed_in={speed_in!r} m s^-1: a ball cannot bounce "
+                         f"back faster than it arrived (got speed_out={speed_out!r})")
+    surface = "ceiling" if ceiling else "floor"
+    # away from the surface is positive: the change in momentum and the resultant force point that way
+    dp = change_in_momentum(mass, -speed_in, speed_out)
+    force = average_force(dp, contact)
+    ways = ("upwards", "downwards") if surface == "floor" else ("downwards", "upwards")  # on the ball, on it
+    lost = kinetic_energy(mass, speed_in) - kinetic_energy(mass, speed_out)
+    resting = weight(mass)
+    m, u, v = n(mass, stated_figures(mass)), n(speed_in, stated_figures(speed_in)), n(speed_out, stated_figures(speed_out))
+    t = n(contact, stated_figures(contact))
+    contact_force, on_surface = _contact_force_parts(mass, force, surface, ways)
+    sign = 1 if surface == "floor" else -1
+    # the working prints F and mg with the figures that give the printed R, as an examiner checks it
+    force_shown, weight_shown = enough_figures((force, resting), lambda f, r: f + sign * r, n(contact_force.value, 2))
+    return Question(
+        key="bounce-contact-force",
+        text=_bounce_story(m, u, v, t, surface),
+        givens=(Given("mass", mass, "kg", stated_figures(mass)), Given("speed in", speed_in, "m s^-1",
+                stated_figures(speed_in)), Given("speed out", speed_out, "m s^-1", stated_figures(speed_out)),
+                Given("contact time", contact, "s", stated_figures(contact))),
+        parts=(
+            Part("normal contact force of the table on the ball at rest", resting, "N", "force", shown_sig_figs=2,
+                 answer_for_g=lambda g: weight(mass, g=g),
+                 revisit="At rest the resultant force is zero, so the normal contact force balances the weight: "
+                         "R = mg.",
+                 mistakes=(Mistake("the mass given as the force", mass,
+                                   f"That is the mass, {m} kg. The force is the weight it balances: mg, in N.",
+                                   see="weight"),), see="weight"),
+            Part(f"decrease in kinetic energy in the collision with the {surface}", lost, "J", "energy",
+                 shown_sig_figs=2, revisit="Kinetic energy is ½mv²: the decrease is ½mu² − ½mv².",
+                 mistakes=_energy_lost_mistakes(mass, speed_in, speed_out), see="kinetic-energy"),
+            Part("average resultant force on the ball", force, "N", "force", shown_sig_figs=2,
+                 direction="choice", choices=("upwards", "downwards"), answer_direction=ways[0],
+                 direction_hint="The resultant force is in the direction of the ball's change in momentum.",
+                 revisit="Resultant force = change in momentum ÷ contact time, and the ball turns round: "
+                         "F = m(u + v) / t.",
+                 mistakes=(Mistake("u − v instead of u + v", mass * (speed_in - speed_out) / contact,
+                                   "You used m(u − v). The ball turns round, so the velocities have opposite "
+                                   "signs: Δp = m(u + v)."),
+                           Mistake("the direction the ball arrived", force,
+                                   "The ball's momentum changes from towards the surface to away from it: the "
+                                   "resultant force on it points away.", direction=ways[1])),
+                 see="second-law"),
+            contact_force, on_surface,
+        ),
+        mark_scheme=(
+            Mark(f"R = W = mg = {m} × {n(G_EARTH, 3)} = {n(resting, 2)} N", "B1", "a"),
+            Mark(f"ΔE = ½ × {m} × ({u}<sup>2</sup> − {v}<sup>2</sup>)", "C1", "b"),
+            Mark(f"= {n(lost, 2)} J", "A1", "b"),
+            Mark(f"F = Δp / Δt = {m} × ({u} + {v}) / {t}", "C1", "c"),
+            Mark(f"= {n(force, 2)} N", "A1", "c"),
+            Mark(f"{ways[0]} (away from the {surface}, the direction of the change in momentum)", "B1", "c",
+                 earns="direction"),
+            Mark(f"R {'−' if surface == 'floor' else '+'} mg = F, so R = {force_shown} "
+                 f"{'+' if surface == 'floor' else '−'} {weight_shown}", "C1", "d"),
+            Mark(f"= {n(contact_force.value, 2)} N", "A1", "d"),
+            Mark(f"{n(contact_force.value, 2)} N (Newton's third law: equal to the {surface}'s force on the ball)",
+                 "B1", "e"),
+            Mark(f"{ways[1]} (opposite to the {surface}'s force on the ball)", "B1", "e", earns="direction"),
         ),
     )
 
@@ -862,6 +1020,11 @@ TEMPLATES = checked_givens(
              ball_bounces_off_wall,
              {"mass": Draw(0.16, 0.10, 0.60, 0.01), "speed_in": Draw(15.0, 8.0, 25.0, 1.0),
               "speed_out": Draw(10.0, 4.0, 20.0, 1.0), "contact_ms": Draw(20.0, 10.0, 40.0, 1.0)}),
+    Template("bounce-contact-force", "force-momentum", ("numeric",), "A bounce: the floor's or the ceiling's force",
+             ball_bounce_contact_force,
+             {"mass": Draw(0.060, 0.050, 0.150, 0.001), "speed_in": Draw(6.0, 3.0, 9.0, 0.1),
+              "speed_out": Draw(4.0, 1.0, 6.0, 0.1), "contact": Draw(0.080, 0.060, 0.150, 0.001),
+              "ceiling": Draw(0, 0, 1, 1)}),
     Template("practice-hose", "force-momentum", ("numeric",), "Fire hose", fire_hose,
              {"per_second": Draw(4.0, 1.0, 8.0, 0.5), "speed": Draw(15.0, 8.0, 30.0, 1.0)}),
     Template("practice-stopping-time", "force-momentum", ("numeric",), "Time to stop a car", car_stopping_time,

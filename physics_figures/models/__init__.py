@@ -78,10 +78,12 @@ from .momentum import (
 )
 from .momentum_history import MomentumHistory, Segment, area_under_force_time
 from .newton import (
+    BOUNCE_SURFACES,
     Towing,
     acceleration,
     acceleration_from_distance,
     applied_force,
+    bounce_contact_force,
     gravitational_field_strength,
     lift_contact_force,
     mass_from_weight,
@@ -102,6 +104,7 @@ from .two_d import (
 
 __all__ = [
     "AIR_DENSITY",
+    "BOUNCE_SURFACES",
     "OPENING_STEPS",
     "SPHERE_DRAG_COEFFICIENT",
     "STOKES_REYNOLDS_LIMIT",
@@ -120,6 +123,7 @@ __all__ = [
     "applied_force",
     "area_under_force_time",
     "average_force",
+    "bounce_contact_force",
     "canopy_drag_constant",
     "change_in_momentum",
     "collision_with_energy_kept",

@@ -70,6 +70,35 @@ def lift_contact_force(mass, acceleration_up, *, g=G_EARTH):
     return mass * (g + acceleration_up)
 
 
+#: The surfaces a ball bounces off vertically, and which way each pushes it.
+BOUNCE_SURFACES = ("floor", "ceiling")
+
+
+def bounce_contact_force(resultant_force, mass, *, surface, g=G_EARTH):
+    """Average contact force of a floor or a ceiling on a ball bouncing off it vertically.
+
+    The resultant force F (away from the surface) is the contact force R and the weight mg
+    together. Off a floor R pushes up and mg pulls down: R - mg = F, so R = F + mg. Off a
+    ceiling R and mg both act down: R + mg = F, so R = F - mg.
+
+    resultant_force: N, the size of the average resultant force (> 0); mass: kg (> 0);
+    surface: "floor" or "ceiling"; g: m s^-2 (> 0). Returns R in N (> 0).
+    Raises ValueError for a surface not in BOUNCE_SURFACES, a force, mass or g <= 0, a
+    ceiling whose resultant force is not above the weight (a ceiling can only push), or a
+    value that is not finite.
+    """
+    if surface not in BOUNCE_SURFACES:
+        raise ValueError(f"surface must be one of {BOUNCE_SURFACES} (got surface={surface!r})")
+    resultant_force = check.positive("resultant_force", resultant_force, unit="N")
+    ball_weight = weight(mass, g=g)
+    if surface == "floor":
+        return resultant_force + ball_weight
+    check.require("resultant_force", resultant_force, resultant_force > ball_weight,
+                  f"must be above the ball's weight mg = {ball_weight!r} N off a ceiling (a ceiling "
+                  "can only push the ball down)", unit="N")
+    return resultant_force - ball_weight
+
+
 def thrust_for_acceleration(weight, acceleration_up, *, g=G_EARTH):
     """Upward thrust (or tension) that gives a vertical acceleration: T = W + (W/g) a.
 

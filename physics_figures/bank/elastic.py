@@ -511,77 +511,110 @@ def _percentage_without_sign(value: float, what: str) -> Mistake:
                    f"{n(value, 2)}, or as {n(100 * value, 2)} %.", kind="slip")
 
 
-def sticking_fraction_lost(m1: float = 3.0, u1: float = 4.0, m2: float = 1.0) -> Question:
+def _b_ahead_words(m1: float, u1: float, m2: float, speed2: float) -> dict[str, str]:
+    """How the fraction question words B: at rest (the variants), or moving ahead of A the same
+    way (9702/23/M/J/25 Q4(b))."""
+    ma, mb, ua = n(m1, 2), n(m2, 2), n(u1, 2)
+    if not speed2:
+        return {"b": "which is at rest", "energy": "the kinetic energy of A", "momentum": f"{ma} × {ua}",
+                "before": f"½ × {ma} × {ua}<sup>2</sup>"}
+    sb = n(speed2, 2)
+    return {"b": f"which moves ahead of A in the same direction at {sb} {PER_S}",
+            "energy": "the total kinetic energy of A and B", "momentum": f"{ma} × {ua} + {mb} × {sb}",
+            "before": f"½ × {ma} × {ua}<sup>2</sup> + ½ × {mb} × {sb}<sup>2</sup>"}
+
+
+def sticking_fraction_lost(m1: float = 3.0, u1: float = 4.0, m2: float = 1.0, speed2: float = 0.0) -> Question:
     """Kinetic energy lost as a fraction, when two trolleys stick (notes, "Elastic and inelastic
     collisions": 3.0 kg at 4.0 m s^-1 hits 1.0 kg at rest, 3.0 m s^-1 together, 24 J -> 18 J, so
     6.0 J, 25 % of it, is transferred; How to do it 5., "Percentage of kinetic energy lost").
     The scheme's lines follow 9702/23/M/J/16 Q3(b)(iii) (KE = ½mv² C1 … change in kinetic energy
     C1 … A1); a ratio is accepted as a decimal or a percentage, as in 9702/22/O/N/16 Q5(b)(iv)
-    ("= 0.88 or 88 % A1")."""
-    v = stick_together(m1, u1, m2, 0.0)
-    before = kinetic_energy(m1, u1)
+    ("= 0.88 or 88 % A1"). speed2: B at rest (0, the variants) or moving ahead of A the same
+    way, slower (9702/23/M/J/25 Q4(b): 4.0 kg at 6.0 m s^-1 catches 2.0 kg at 3.0 m s^-1)."""
+    if speed2 >= u1:
+        raise ValueError(f"speed2 must be below u1={u1!r} m s^-1, or A never catches B (got speed2={speed2!r})")
+    v = stick_together(m1, u1, m2, speed2)
+    before = total_kinetic_energy((m1, m2), (u1, speed2))
     after = kinetic_energy(m1 + m2, v)
     fraction = percentage_kinetic_energy_lost(before, after) / 100
     ma, mb, ua, total = n(m1, 2), n(m2, 2), n(u1, 2), w(m1 + m2)
+    words = _b_ahead_words(m1, u1, m2, speed2)
     shown = n(fraction, 2)
     # the energies with the figures the fraction needs, and the speed with the figures they need
     e_before, e_after = enough_figures((before, after), lambda b, a: (b - a) / b, shown)
     (v_carried,) = enough_figures((v,), lambda speed: kinetic_energy(m1 + m2, speed), e_after)
+    # B at rest keeps the variants' formula; B moving adds its kinetic energy before
+    energy_before = mass_1 * speed_1**2 + (mass_2 * speed_2**2 if speed2 else 0)
     return Question(
         key="sticking-fraction-lost",
         text=(f"Trolley A, of mass {ma} kg, moves at {ua} {PER_S} along a level track and hits trolley B, of "
-              f"mass {mb} kg, which is at rest. The trolleys stick together. Calculate (a) their speed just after "
-              "the collision and (b) the fraction of the kinetic energy of A that is transferred to other "
+              f"mass {mb} kg, {words['b']}. The trolleys stick together. Calculate (a) their speed just after "
+              f"the collision and (b) the fraction of {words['energy']} that is transferred to other "
               "forms in the collision. Give (b) as a decimal or as a percentage."),
         givens=(Given("mass of A", m1, "kg", 2), Given("speed of A", u1, "m s^-1", 2),
-                Given("mass of B", m2, "kg", 2)),
-        diagram=diagrams.line(((f"{ma} kg", u1), (f"{mb} kg", 0.0)), (("", None),)),
+                Given("mass of B", m2, "kg", 2), *((Given("speed of B", speed2, "m s^-1", 2),) if speed2 else ())),
+        diagram=diagrams.line(((f"{ma} kg", u1), (f"{mb} kg", speed2)), (("", None),)),
         parts=(
             Part("speed just after the collision", v, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
-                 revisit="Momentum is conserved: m₁u₁ = (m₁ + m₂)v, with the mass of both trolleys after.",
-                 mistakes=(
-                     Mistake("one body's mass used for both", velocity_from_momentum(momentum(m1, u1), m1),
+                 revisit="Momentum is conserved: m₁u₁ + m₂u₂ = (m₁ + m₂)v, with the mass of both trolleys after.",
+                 mistakes=one_of_each(v, (
+                     Mistake("one body's mass used for both", (momentum(m1, u1) + momentum(m2, speed2)) / m1,
                              f"You used A's mass for the pair after the collision. The trolleys move together: "
-                             f"{ma} × {ua} = ({ma} + {mb})v.", see="momentum"),
-                     Mistake("kinetic energy conserved", u1 * math.sqrt(m1 / (m1 + m2)),
+                             f"{words['momentum']} = ({ma} + {mb})v.", see="momentum"),
+                     Mistake("kinetic energy conserved", math.sqrt(2 * before / (m1 + m2)),
                              "You set the kinetic energies before and after equal. Trolleys that stick together "
                              "always lose kinetic energy: use momentum, which is conserved.",
                              see="kinetic-energy"),
-                 ), see="conservation"),
+                     Mistake("B's momentum left out", momentum(m1, u1) / (m1 + m2),
+                             f"You left out B's momentum: it moves at {n(speed2, 2)} {PER_S} before the collision.",
+                             see="momentum"),
+                 )), see="conservation"),
             Part("fraction of the kinetic energy transferred", fraction, "", "fraction", units=_NO_UNIT,
                  shown_sig_figs=2,
                  working=(Step("common speed", v, "m s^-1", 2),),
                  answer_from=lambda speed: percentage_kinetic_energy_lost(before, kinetic_energy(m1 + m2, speed))
                  / 100,
-                 ecf=Ecf(1 - (mass_1 + mass_2) * a_answer**2 / (mass_1 * speed_1**2),
-                         {"mass_1": m1, "speed_1": u1, "mass_2": m2}),
+                 ecf=Ecf(1 - (mass_1 + mass_2) * a_answer**2 / energy_before,
+                         {"mass_1": m1, "speed_1": u1, "mass_2": m2, **({"speed_2": speed2} if speed2 else {})}),
                  revisit="Fraction lost = (kinetic energy before − kinetic energy after) / kinetic energy "
                          "before, with ½mv² for each.",
-                 mistakes=(
-                     Mistake("kinetic energy conserved", 0.0,
-                             "Kinetic energy is conserved only in an elastic collision. Trolleys that stick "
-                             "together always lose some: work out ½mv² before and after."),
-                     Mistake("fraction kept, not lost", after / before,
-                             "That is the fraction of the kinetic energy that is kept, after / before. The "
-                             "fraction transferred is (before − after) / before."),
-                     Mistake("lost as a fraction of the energy after", (before - after) / after,
-                             "You divided the energy lost by the kinetic energy after. A fraction of the "
-                             "kinetic energy before is (before − after) / before."),
-                     Mistake("A's mass only after", percentage_kinetic_energy_lost(before, kinetic_energy(m1, v))
-                             / 100,
-                             "You worked out the kinetic energy after with A's mass only. Both trolleys move "
-                             "afterwards: ½(m₁ + m₂)v²."),
-                     _percentage_without_sign(fraction, "fraction"),
-                 ), see="kinetic-energy"),
+                 mistakes=_fraction_lost_mistakes(fraction, (m1, u1, m2, speed2), v, (before, after)),
+                 see="kinetic-energy"),
         ),
         mark_scheme=(
-            Mark(f"{ma} × {ua} = {total}v", "C1", "a"),
+            Mark(f"{words['momentum']} = {total}v", "C1", "a"),
             Mark(f"v = {n(v, 2)} {PER_S}", "A1", "a"),
-            Mark(f"E<sub>k</sub> before = ½ × {ma} × {ua}<sup>2</sup> = {e_before} J; after = ½ × {total} × "
+            Mark(f"E<sub>k</sub> before = {words['before']} = {e_before} J; after = ½ × {total} × "
                  f"{v_carried}<sup>2</sup> = {e_after} J", "C1", "b"),
             Mark(f"fraction = ({e_before} − {e_after}) / {e_before} = {shown}, or {n(100 * fraction, 2)} %", "A1", "b"),
         ),
     )
+
+
+def _fraction_lost_mistakes(fraction: float, givens: tuple[float, float, float, float], v: float,
+                            energies: tuple[float, float]) -> tuple[Mistake, ...]:
+    """The named mistakes of sticking-fraction-lost (b); those that meet the key or each other drop."""
+    (m1, u1, m2, speed2), (before, after) = givens, energies
+    a_only = kinetic_energy(m1, u1)
+    return one_of_each(fraction, (
+        Mistake("kinetic energy conserved", 0.0,
+                "Kinetic energy is conserved only in an elastic collision. Trolleys that stick "
+                "together always lose some: work out ½mv² before and after."),
+        Mistake("fraction kept, not lost", after / before,
+                "That is the fraction of the kinetic energy that is kept, after / before. The "
+                "fraction transferred is (before − after) / before."),
+        Mistake("lost as a fraction of the energy after", (before - after) / after,
+                "You divided the energy lost by the kinetic energy after. A fraction of the "
+                "kinetic energy before is (before − after) / before."),
+        Mistake("A's mass only after", percentage_kinetic_energy_lost(before, kinetic_energy(m1, v)) / 100,
+                "You worked out the kinetic energy after with A's mass only. Both trolleys move "
+                "afterwards: ½(m₁ + m₂)v²."),
+        Mistake("B's kinetic energy before left out", (a_only - after) / a_only,
+                f"B moves before the collision too: the kinetic energy before is ½ × {n(m1, 2)} × "
+                f"{n(u1, 2)}² + ½ × {n(m2, 2)} × {n(speed2, 2)}²."),
+        _percentage_without_sign(fraction, "fraction"),
+    ))
 
 
 #: What the energy part asks: the ratio after / before (the variants), or the kinetic energy the

@@ -14,7 +14,6 @@ const LEFT_TO_SPLIT = [
   "book/_ext/questions/static/answer-reading.js",
   "book/_ext/questions/static/class.js",
   "book/_ext/questions/static/mock-test.js",
-  "book/_ext/questions/static/progress-store.js",
   "book/_ext/questions/static/progress.js",
   "book/_ext/questions/static/question-draw.js",
 ];

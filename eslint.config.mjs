@@ -3,6 +3,21 @@
 import js from "@eslint/js";
 import globals from "globals";
 
+// The files whose functions are not split yet (issue 39): the list only shrinks.
+const LEFT_TO_SPLIT = [
+  "book/_ext/explorables/static/explorables/collision-lab.js",
+  "book/_ext/explorables/static/explorables/models.js",
+  "book/_ext/explorables/static/explorables/momentum-time-reader.js",
+  "book/_ext/explorables/static/explorables/momentum-triangle.js",
+  "book/_ext/explorables/static/explorables/skydiver.js",
+  "book/_ext/notation/static/notation.js",
+  "book/_ext/questions/static/answer-reading.js",
+  "book/_ext/questions/static/class.js",
+  "book/_ext/questions/static/mock-test.js",
+  "book/_ext/questions/static/progress.js",
+  "book/_ext/questions/static/question-draw.js",
+];
+
 export default [
   {
     ignores: ["node_modules/", "_build/", ".venv/"],
@@ -36,6 +51,22 @@ export default [
       sourceType: "commonjs",
       globals: globals.node,
     },
+  },
+  {
+    // Functions a reader can hold (issue 39): at most 80 lines (a file's own wrapper, an
+    // immediately called function, is not counted) and at most 15 paths through one.
+    // tests/test_function_size.py checks these limits stay here.
+    files: ["**/*.js", "**/*.mjs"],
+    rules: {
+      "max-lines-per-function": ["error", { max: 80 }],
+      complexity: ["error", 15],
+    },
+  },
+  {
+    // Not split yet (issue 39, item 4, left open): each of these files still holds a
+    // function over the limits; tests/test_function_size.py lists them as what is left.
+    files: LEFT_TO_SPLIT,
+    rules: { "max-lines-per-function": "off", complexity: "off" },
   },
   {
     files: ["eslint.config.mjs"],

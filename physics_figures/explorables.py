@@ -129,6 +129,26 @@ def _most_percent_lost(m1, u1, m2, u2):
                          total_kinetic_energy((m1, m2), (v, v)))
 
 
+def _collision_lab_options(kind, u1, u2, velocity_a_after, percent_lost):
+    """collision_lab's options checked: velocity_a_after only (and always) for an explosion
+    from rest, percent_lost only (and always) for kind="loss". Returns both, checked."""
+    if kind == "explosion":
+        if u1 != 0 or u2 != 0:
+            raise ValueError(f"u1 and u2 must be 0 for an explosion from rest (got u1={u1!r}, u2={u2!r})")
+        if velocity_a_after is None:
+            raise ValueError("velocity_a_after is needed for an explosion (got velocity_a_after=None)")
+        velocity_a_after = check.number("velocity_a_after", velocity_a_after, unit="m s^-1")
+    elif velocity_a_after is not None:
+        raise ValueError(f"velocity_a_after is only for kind='explosion' (got kind={kind!r})")
+    if kind == "loss":
+        if percent_lost is None:
+            raise ValueError("percent_lost is needed for kind='loss' (got percent_lost=None)")
+        percent_lost = check.number("percent_lost", percent_lost, unit="%")
+    elif percent_lost is not None:
+        raise ValueError(f"percent_lost is only for kind='loss' (got kind={kind!r})")
+    return velocity_a_after, percent_lost
+
+
 def collision_lab(kind, *, m1, m2, u1=0.0, u2=0.0, velocity_a_after=None, percent_lost=None):
     """The collision lab: body A (m1, u1) on the left, body B (m2, u2) on the right.
 
@@ -150,20 +170,8 @@ def collision_lab(kind, *, m1, m2, u1=0.0, u2=0.0, velocity_a_after=None, percen
     m2 = check.positive("m2", m2, unit="kg")
     u1 = check.number("u1", u1, unit="m s^-1")
     u2 = check.number("u2", u2, unit="m s^-1")
-    if kind == "explosion":
-        if u1 != 0 or u2 != 0:
-            raise ValueError(f"u1 and u2 must be 0 for an explosion from rest (got u1={u1!r}, u2={u2!r})")
-        if velocity_a_after is None:
-            raise ValueError("velocity_a_after is needed for an explosion (got velocity_a_after=None)")
-        velocity_a_after = check.number("velocity_a_after", velocity_a_after, unit="m s^-1")
-    elif velocity_a_after is not None:
-        raise ValueError(f"velocity_a_after is only for kind='explosion' (got kind={kind!r})")
-    if kind == "loss":
-        if percent_lost is None:
-            raise ValueError("percent_lost is needed for kind='loss' (got percent_lost=None)")
-        percent_lost = check.number("percent_lost", percent_lost, unit="%")
-    elif percent_lost is not None:
-        raise ValueError(f"percent_lost is only for kind='loss' (got kind={kind!r})")
+    velocity_a_after, percent_lost = _collision_lab_options(kind, u1, u2, velocity_a_after,
+                                                            percent_lost)
 
     masses = (m1, m2)
     p_before = total_momentum(masses, (u1, u2))

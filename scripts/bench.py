@@ -502,6 +502,19 @@ def offline_sizes(site: Path) -> dict[str, int]:
             "output": sum(p.stat().st_size for p in site.rglob("*") if p.is_file())}
 
 
+def marking_line(most: int, marking: float, text_marking: dict, question_marking: dict) -> str:
+    """The question data's weight and the marking times, against their goals."""
+    return (f"Largest question data on one page: {most:,} bytes gzip (goal: under 40 KB). Marking one "
+            f"answer (every part, ecf included) in Chromium takes {marking:.3f} ms (goal: at most 5 ms). "
+            f"Text marking, over the {text_marking['answers']} typed answers of tests/fixtures/text_answers.json "
+            f"(each the median of {TEXT_RUNS} runs): p95 {text_marking['p95_ms']:.3f} ms, "
+            f"{text_marking['p95_ms_cpu_4x']:.3f} ms with the CPU slowed 4 times (goals: 5 ms and 16 ms). "
+            f"Every question of the site's {question_marking['pages']} question pages marked whole "
+            f"({question_marking['questions']} questions, each the median of 25 runs): p95 "
+            f"{question_marking['p95_ms']:.3f} ms, {question_marking['p95_ms_cpu_4x']:.3f} ms with the CPU "
+            "slowed 4 times (goals: 5 ms and 16 ms).")
+
+
 def class_load_line(ms: float) -> str:
     return (f"Class page: {CLASS_FILES} progress files load (a term's practice each, {TERM_ATTEMPTS} attempts) in "
             f"{ms:.0f} ms in Chromium, dropped at once and laid out (best of {CLASS_RUNS}; goal: under "
@@ -606,15 +619,7 @@ def render(*, timings, executed, edited_page, edited_function, default, ours, sc
     most = max(d["question_data"] + d["variant_data"] for d in ours.values())
     lines += [
         "",
-        (f"Largest question data on one page: {most:,} bytes gzip (goal: under 40 KB). Marking one "
-         f"answer (every part, ecf included) in Chromium takes {marking:.3f} ms (goal: at most 5 ms). "
-         f"Text marking, over the {text_marking['answers']} typed answers of tests/fixtures/text_answers.json "
-         f"(each the median of {TEXT_RUNS} runs): p95 {text_marking['p95_ms']:.3f} ms, "
-         f"{text_marking['p95_ms_cpu_4x']:.3f} ms with the CPU slowed 4 times (goals: 5 ms and 16 ms). "
-         f"Every question of the site's {question_marking['pages']} question pages marked whole "
-         f"({question_marking['questions']} questions, each the median of 25 runs): p95 "
-         f"{question_marking['p95_ms']:.3f} ms, {question_marking['p95_ms_cpu_4x']:.3f} ms with the CPU "
-         "slowed 4 times (goals: 5 ms and 16 ms)."),
+        marking_line(most, marking, text_marking, question_marking),
         class_load_line(class_load),
     ]
     if scores:

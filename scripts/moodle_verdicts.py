@@ -124,13 +124,8 @@ def _book_fractions(cases: list[tuple[dict, str, dict]]) -> list[float]:
     return json.loads(result.stdout)
 
 
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("xml", type=Path, help="the Moodle XML file imported into the harness's Moodle")
-    parser.add_argument("--out", type=Path, default=None, help="write every verdict here (JSON)")
-    parser.add_argument("--php", default="php")
-    args = parser.parse_args(argv)
-
+def _book_table() -> dict:
+    """Every input of every part that Moodle is asked, by question, with the book's fraction."""
     table, cases = {}, []
     for template in bank.TEMPLATES.values():
         if template.try_first:
@@ -149,21 +144,30 @@ def main(argv: list[str] | None = None) -> int:
     for rows in table.values():
         for r in rows:
             r["book"] = next(book)
+    return table
+
+
+def _moodle_fractions(table: dict, php: str, xml: Path) -> list:
+    """Moodle's fraction for each input (r["moodle"], None where Moodle has no such question);
+    returns the questions not found in Moodle."""
     print(">>> Moodle's marks (scripts/moodle_verdicts.php)", file=sys.stderr)
     with tempfile.TemporaryDirectory() as folder:
         inputs, report = Path(folder) / "in.json", Path(folder) / "out.json"
         inputs.write_text(json.dumps({q: [{"label": r["label"], "parts": r["parts"]} for r in rows]
                                       for q, rows in table.items()}))
-        subprocess.run([args.php, str(ROOT / "scripts" / "moodle_verdicts.php"), f"--inputs={inputs}",
-                        f"--json={report}", f"--xml={args.xml.resolve()}"], check=True, stdout=subprocess.DEVNULL)
+        subprocess.run([php, str(ROOT / "scripts" / "moodle_verdicts.php"), f"--inputs={inputs}",
+                        f"--json={report}", f"--xml={xml.resolve()}"], check=True, stdout=subprocess.DEVNULL)
         moodle = json.loads(report.read_text())
-    missing = moodle.get("missing", [])
     for question, rows in table.items():
         for r, got in zip(rows, moodle["results"].get(question) or [{"fraction": None}] * len(rows), strict=True):
             r["moodle"] = got["fraction"]
-    # A number Moodle grades otherwise than the book: is it the figures? If the book gives
-    # Moodle's fraction to the same number written to other figures (0.7 and 0.700; 1400 read
-    # as 2 or 4 s.f.), Moodle could not tell them apart.
+    return moodle.get("missing", [])
+
+
+def _mark_trailing_zeros(table: dict) -> None:
+    """A number Moodle grades otherwise than the book: is it the figures? If the book gives
+    Moodle's fraction to the same number written to other figures (0.7 and 0.700; 1400 read
+    as 2 or 4 s.f.), Moodle could not tell them apart."""
     differing = [(q, r) for q, rows in table.items() for r in rows if not r["cannot"] and r["moodle"] is not None
                  and abs(r["moodle"] - r["book"]) >= 0.01]
     asked = [(q, r, form) for q, r in differing for form in _other_figures(r["answer"].get("value", ""))]
@@ -174,6 +178,10 @@ def main(argv: list[str] | None = None) -> int:
         for (_, r, _), fraction in zip(asked, again, strict=True):
             if abs(fraction - r["moodle"]) < 0.01:
                 r["cannot"] = "trailing-zeros"
+
+
+def _report(table: dict, missing: list) -> None:
+    """How many inputs get the same fraction from both, what is left out and why, what differs."""
     same, counted, left_out, left_agree, differ = 0, 0, Counter(), Counter(), []
     for question, rows in table.items():
         for r in rows:
@@ -194,6 +202,19 @@ def main(argv: list[str] | None = None) -> int:
     print(f"differ: {len(differ)}")
     for line in differ:
         print("  " + line)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("xml", type=Path, help="the Moodle XML file imported into the harness's Moodle")
+    parser.add_argument("--out", type=Path, default=None, help="write every verdict here (JSON)")
+    parser.add_argument("--php", default="php")
+    args = parser.parse_args(argv)
+
+    table = _book_table()
+    missing = _moodle_fractions(table, args.php, args.xml)
+    _mark_trailing_zeros(table)
+    _report(table, missing)
     if args.out:
         args.out.write_text(json.dumps(table, ensure_ascii=False, indent=1))
     return 0

@@ -165,7 +165,7 @@ def test_no_marking_rule_is_written_in_the_engine():
     loses, and every outcome they can give is in the table."""
     kinds = sorted((ENGINE.parent / "question-kinds").glob("*.js"))
     assert kinds, "no part kind scripts"
-    scripts = [ENGINE, ENGINE.parent / "answer-reading.js", *kinds]  # the engine, not the page code
+    scripts = [ENGINE, ENGINE.parent / "answer-reading.js", ENGINE.parent / "sig-figs.js", *kinds]  # the engine, not the page code
     engine = "".join(script.read_text(encoding="utf-8") for script in scripts)
     code_only = re.sub(r"/\*.*?\*/|//[^\n]*", "", engine, flags=re.DOTALL)
     assert not re.search(r"\"[ABCM]1\"", code_only), "a mark code in the engine's code"

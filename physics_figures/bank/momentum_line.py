@@ -82,6 +82,27 @@ def rifle_recoil(rifle: float = 4.0, bullet: float = 0.010, bullet_speed: float 
     )
 
 
+def _stick_wording(ahead: bool, first: tuple[str, float], second: tuple[str, float], second_name: str,
+                   wrong_sign: float) -> tuple[str, Mistake, str, str]:
+    """How practice-trolleys-stick words the second trolley: head-on, or ahead the same way."""
+    (first, u1), (second, speed2) = first, second
+    if ahead:
+        meeting = (f"catches up with a {second} kg trolley moving ahead of it in the same direction at "
+                   f"{n(speed2, 2)} {PER_S}")
+        sign_mistake = Mistake("second trolley's momentum taken as negative", wrong_sign,
+                               f"The {second_name} moves the same way as the first, so its momentum is "
+                               f"positive: {first} × {n(u1, 2)} + {second} × {n(speed2, 2)}.", see="momentum")
+        wrong_carried = f"Your velocity after is wrong: the {second_name}'s momentum is positive."
+    else:
+        meeting = f"collides head-on with a {second} kg trolley moving towards it at {n(speed2, 2)} {PER_S}"
+        sign_mistake = Mistake("momentum added as scalars", wrong_sign,
+                               f"The {second_name} moves the other way, so its momentum is negative: "
+                               f"{first} × {n(u1, 2)} + {second} × (−{n(speed2, 2)}).", see="momentum")
+        wrong_carried = f"Your velocity after is wrong: the {second_name}'s momentum is negative."
+    ignored_why = "It is moving, the same way." if ahead else "It is moving, the other way."
+    return meeting, sign_mistake, wrong_carried, ignored_why
+
+
 def trolleys_stick(m1: float = 2.0, u1: float = 3.0, m2: float = 1.0, speed2: float = 1.5,
                    same_way: float = 0) -> Question:
     """Stick together, with signs; then the kinetic energy transferred. same_way: 0, head-on (the
@@ -109,20 +130,8 @@ def trolleys_stick(m1: float = 2.0, u1: float = 3.0, m2: float = 1.0, speed2: fl
     (v_carried,) = enough_figures((v,), lambda v1: kinetic_energy(m1 + m2, v1), w(after))
     positive = f"the direction the {first_name} moves at first"
     ke_before = m1_symbol * u1_symbol**2 / 2 + m2_symbol * speed2_symbol**2 / 2
-    if ahead:
-        meeting = (f"catches up with a {second} kg trolley moving ahead of it in the same direction at "
-                   f"{n(speed2, 2)} {PER_S}")
-        sign_mistake = Mistake("second trolley's momentum taken as negative", wrong_sign,
-                               f"The {second_name} moves the same way as the first, so its momentum is "
-                               f"positive: {first} × {n(u1, 2)} + {second} × {n(speed2, 2)}.", see="momentum")
-        wrong_carried = f"Your velocity after is wrong: the {second_name}'s momentum is positive."
-    else:
-        meeting = f"collides head-on with a {second} kg trolley moving towards it at {n(speed2, 2)} {PER_S}"
-        sign_mistake = Mistake("momentum added as scalars", wrong_sign,
-                               f"The {second_name} moves the other way, so its momentum is negative: "
-                               f"{first} × {n(u1, 2)} + {second} × (−{n(speed2, 2)}).", see="momentum")
-        wrong_carried = f"Your velocity after is wrong: the {second_name}'s momentum is negative."
-    ignored_why = "It is moving, the same way." if ahead else "It is moving, the other way."
+    meeting, sign_mistake, wrong_carried, ignored_why = _stick_wording(
+        ahead, (first, u1), (second, speed2), second_name, wrong_sign)
     return Question(
         key="practice-trolleys-stick",
         diagram=diagrams.line(((f"{first} kg", u1), (f"{second} kg", u2)), (("", None),), names=("", "")),

@@ -52,38 +52,16 @@ def _arrow(ax, tail, tip, *, colour, style="-"):
     )
 
 
-@styled
-def plot_momentum_triangle(
-    collision: GlancingCollision,
-    *,
-    ax: Axes | None = None,
-    names: tuple[str, str] = ("P", "Q"),
-    figures: int = 2,
-) -> TriangleDiagram:
-    """Tip-to-tail momentum triangle with the components of both momenta after.
-
-    ``figures``: significant figures of the given momentum after (the notes give 2 for
-    the pucks, 3 for Example 4); the computed one has at least 3, like its components.
-    """
-    ax = new_axes(ax, figsize=(5.6, 4.0))
+def _triangle_labels(ax, collision: GlancingCollision, names, figures):
+    """The momentum triangle's labels: both momenta after, the one before, and the components."""
     moving, struck = names
-    origin = (0.0, 0.0)
     before_tip = collision.before_vector
     corner = collision.known_vector
     end = collision.triangle[2]
-    before = _arrow(ax, origin, before_tip, colour=GUIDE, style="--")
-    moving_after = _arrow(ax, origin, corner, colour=MAIN)
-    struck_after = _arrow(ax, corner, end, colour=SECOND)
-
-    dotted = {"color": PALETTE["black"], "linestyle": ":", "linewidth": 1.3, "zorder": 2}
-    components = [
-        ax.plot([corner[0], corner[0]], [0, corner[1]], **dotted)[0],  # across, moving body
-        ax.plot([corner[0], end[0]], [corner[1], corner[1]], **dotted)[0],  # along, struck
-    ]
     along_m, across_m = corner
     m = collision.missing
     small = {"textcoords": "offset points", "fontsize": SMALL_TEXT}
-    labels = [
+    return [
         ax.annotate(
             f"{moving} before: {format_number(collision.p_before, 3)} {IMPULSE_UNIT}",
             xy=(before_tip[0] / 2, 0),
@@ -129,6 +107,37 @@ def plot_momentum_triangle(
             **small,
         ),
     ]
+
+
+@styled
+def plot_momentum_triangle(
+    collision: GlancingCollision,
+    *,
+    ax: Axes | None = None,
+    names: tuple[str, str] = ("P", "Q"),
+    figures: int = 2,
+) -> TriangleDiagram:
+    """Tip-to-tail momentum triangle with the components of both momenta after.
+
+    ``figures``: significant figures of the given momentum after (the notes give 2 for
+    the pucks, 3 for Example 4); the computed one has at least 3, like its components.
+    """
+    ax = new_axes(ax, figsize=(5.6, 4.0))
+    origin = (0.0, 0.0)
+    before_tip = collision.before_vector
+    corner = collision.known_vector
+    end = collision.triangle[2]
+    before = _arrow(ax, origin, before_tip, colour=GUIDE, style="--")
+    moving_after = _arrow(ax, origin, corner, colour=MAIN)
+    struck_after = _arrow(ax, corner, end, colour=SECOND)
+
+    dotted = {"color": PALETTE["black"], "linestyle": ":", "linewidth": 1.3, "zorder": 2}
+    components = [
+        ax.plot([corner[0], corner[0]], [0, corner[1]], **dotted)[0],  # across, moving body
+        ax.plot([corner[0], end[0]], [corner[1], corner[1]], **dotted)[0],  # along, struck
+    ]
+    labels = _triangle_labels(ax, collision, names, figures)
+    across_m = corner[1]  # the momentum after's component across the line
     pad = 0.12 * collision.p_before
     ax.set_xlim(-pad, collision.p_before + 3 * pad)
     ax.set_ylim(-2 * pad, across_m + 2.5 * pad)

@@ -407,24 +407,9 @@ def earliest_opening(terminal_velocity_freefall, terminal_velocity_parachute, *,
     return float(v_t1 / g * np.arctanh(v_t2 * (1 + WITHIN_TERMINAL) / v_t1))
 
 
-def skydive(mass, *, terminal_velocity_freefall, terminal_velocity_parachute,
-            parachute_opens_at, opening_duration, duration, g=G_EARTH, samples=801):
-    """Model a skydive: freefall from rest, then a parachute that opens over a time τ.
-
-    Freefall: v = v_t1 tanh(g t / v_t1). From t_open the drag constant grows as
-    canopy_drag_constant and open_canopy integrates the motion over τ. Once the canopy is
-    fully open, at t_full = t_open + τ with speed v_full > v_t2:
-    v = v_t2 coth(g (t - t_full) / v_t2 + arccoth(v_full / v_t2)). Distance fallen from
-    x = (v_t² / g) ln cosh(g t / v_t), the integration, and the coth counterpart.
-
-    mass: kg (> 0); terminal_velocity_freefall, terminal_velocity_parachute: m s^-1
-    (> 0, parachute one lower); parachute_opens_at: s, once the skydiver is faster than
-    1.01 x the parachute's terminal velocity (earliest_opening), before the end;
-    opening_duration τ: s (> 0); duration: s, the length of the record, long enough to
-    reach the second terminal velocity (point E); g: m s^-2 (> 0); samples: points in
-    each closed-form phase (>= 10; the opening adds every tenth integration step).
-    Returns a Skydive. Raises ValueError for any of those rules broken, naming the argument.
-    """
+def _skydive_arguments(mass, terminal_velocity_freefall, terminal_velocity_parachute,
+                       parachute_opens_at, opening_duration, duration, g, samples):
+    """skydive's arguments checked (its rules), as (mass, g, v_t1, v_t2, t_open, tau, duration)."""
     mass = check.positive("mass", mass, unit="kg")
     g = check.positive("g", g, unit="m s^-2")
     v_t1 = check.positive("terminal_velocity_freefall", terminal_velocity_freefall,
@@ -448,15 +433,13 @@ def skydive(mass, *, terminal_velocity_freefall, terminal_velocity_parachute,
                    f"must be after {t_earliest:.3g} s, when the skydiver first falls faster "
                    f"than the parachute's terminal velocity (+1 %), so that it slows them down",
                    unit="s")
+    return mass, g, v_t1, v_t2, t_open, tau, duration
 
-    weight = mass * g
-    k1, k2 = weight / v_t1**2, weight / v_t2**2
-    v_open = v_t1 * math.tanh(g * t_open / v_t1)
-    opening = open_canopy(mass, v_open, body_drag=k1, canopy_drag=k2, opening_duration=tau, g=g)
-    t_full, v_full = t_open + tau, float(opening.velocity[-1])
+
+def _time_of_point_e(opening, t_open, t_full, v_full, v_t2, g):
+    """E: the first time the velocity is within 1 % of v_t2, during the opening (between two
+    steps, linearly) or, usually, on the coth curve after it."""
     v_e = v_t2 * (1 + WITHIN_TERMINAL)
-    # E: the first time the velocity is within 1 % of v_t2, during the opening (between
-    # two steps, linearly) or, usually, on the coth curve after it
     reached = np.flatnonzero(opening.velocity <= v_e)
     if reached.size:
         j = int(reached[0])
@@ -464,12 +447,11 @@ def skydive(mass, *, terminal_velocity_freefall, terminal_velocity_parachute,
         t_e = t_open + opening.time_since_opening[j - 1] + (v_a - v_e) / (v_a - v_b) * opening.step
     else:
         t_e = t_full + time_to_slow_to_terminal(v_full, v_t2, g=g)
-    t_e = float(t_e)
-    if t_e > duration:
-        check.fail("duration", duration,
-                   f"must reach point E, the parachute terminal velocity ({t_e:.3g} s)",
-                   unit="s")
+    return float(t_e)
 
+
+def _skydive_phases(opening, *, v_t1, v_t2, t_open, t_full, v_full, t_e, duration, g, samples):
+    """The record's time, velocity and distance fallen: freefall, the opening, fully open."""
     # Freefall phase, 0 <= t < t_open.
     t_free = np.linspace(0, t_open, samples)[:-1]
     v_free = v_t1 * np.tanh(g * t_free / v_t1)
@@ -491,13 +473,14 @@ def skydive(mass, *, terminal_velocity_freefall, terminal_velocity_parachute,
     # ln(sinh y / sinh c), written so that it cannot overflow
     x_chute = x_open + opening.distance[-1] + v_t2**2 / g * (
         (y - c) + np.log1p(-np.exp(-2 * y)) - np.log1p(-np.exp(-2 * c)))
+    return (np.concatenate([t_free, t_opening, t_chute]),
+            np.concatenate([v_free, v_opening, v_chute]),
+            np.concatenate([x_free, x_opening, x_chute]))
 
-    time = np.concatenate([t_free, t_opening, t_chute])
-    velocity = np.concatenate([v_free, v_opening, v_chute])
-    k = _canopy_k(time - t_open, k1, k2, tau)
-    drag = k * velocity * velocity
-    resultant = weight - drag
 
+def _skydive_points(opening, *, v_t1, t_open, t_e, v_e, g):
+    """The labelled points A-E of the velocity-time graph, as (t, v)."""
+    peak = int(np.argmin(opening.acceleration))
     t_b = float(v_t1 / g * np.arctanh(0.5))
     t_c = time_to_terminal_velocity(v_t1, g=g)
     points = {"A": (0.0, 0.0)}
@@ -507,6 +490,48 @@ def skydive(mass, *, terminal_velocity_freefall, terminal_velocity_parachute,
         points["C"] = (t_c, v_t1 * (1 - WITHIN_TERMINAL))
     points["D"] = (t_open + float(opening.time_since_opening[peak]), float(opening.velocity[peak]))
     points["E"] = (t_e, v_e)
+    return points
+
+
+def skydive(mass, *, terminal_velocity_freefall, terminal_velocity_parachute,
+            parachute_opens_at, opening_duration, duration, g=G_EARTH, samples=801):
+    """Model a skydive: freefall from rest, then a parachute that opens over a time τ.
+
+    Freefall: v = v_t1 tanh(g t / v_t1). From t_open the drag constant grows as
+    canopy_drag_constant and open_canopy integrates the motion over τ. Once the canopy is
+    fully open, at t_full = t_open + τ with speed v_full > v_t2:
+    v = v_t2 coth(g (t - t_full) / v_t2 + arccoth(v_full / v_t2)). Distance fallen from
+    x = (v_t² / g) ln cosh(g t / v_t), the integration, and the coth counterpart.
+
+    mass: kg (> 0); terminal_velocity_freefall, terminal_velocity_parachute: m s^-1
+    (> 0, parachute one lower); parachute_opens_at: s, once the skydiver is faster than
+    1.01 x the parachute's terminal velocity (earliest_opening), before the end;
+    opening_duration τ: s (> 0); duration: s, the length of the record, long enough to
+    reach the second terminal velocity (point E); g: m s^-2 (> 0); samples: points in
+    each closed-form phase (>= 10; the opening adds every tenth integration step).
+    Returns a Skydive. Raises ValueError for any of those rules broken, naming the argument.
+    """
+    mass, g, v_t1, v_t2, t_open, tau, duration = _skydive_arguments(
+        mass, terminal_velocity_freefall, terminal_velocity_parachute, parachute_opens_at,
+        opening_duration, duration, g, samples)
+    weight = mass * g
+    k1, k2 = weight / v_t1**2, weight / v_t2**2
+    v_open = v_t1 * math.tanh(g * t_open / v_t1)
+    opening = open_canopy(mass, v_open, body_drag=k1, canopy_drag=k2, opening_duration=tau, g=g)
+    t_full, v_full = t_open + tau, float(opening.velocity[-1])
+    v_e = v_t2 * (1 + WITHIN_TERMINAL)
+    t_e = _time_of_point_e(opening, t_open, t_full, v_full, v_t2, g)
+    if t_e > duration:
+        check.fail("duration", duration,
+                   f"must reach point E, the parachute terminal velocity ({t_e:.3g} s)",
+                   unit="s")
+    time, velocity, distance = _skydive_phases(
+        opening, v_t1=v_t1, v_t2=v_t2, t_open=t_open, t_full=t_full, v_full=v_full, t_e=t_e,
+        duration=duration, g=g, samples=samples)
+    k = _canopy_k(time - t_open, k1, k2, tau)
+    drag = k * velocity * velocity
+    resultant = weight - drag
+    points = _skydive_points(opening, v_t1=v_t1, t_open=t_open, t_e=t_e, v_e=v_e, g=g)
     point_drag = {label: float(_canopy_k(t - t_open, k1, k2, tau)) * v * v
                   for label, (t, v) in points.items()}
     return Skydive(
@@ -514,7 +539,7 @@ def skydive(mass, *, terminal_velocity_freefall, terminal_velocity_parachute,
         parachute_opens_at=t_open, opening_duration=tau, duration=duration, weight=weight,
         drag_constant_freefall=k1, drag_constant_parachute=k2, opening=opening,
         time=_read_only(time), velocity=_read_only(velocity),
-        distance=_read_only(np.concatenate([x_free, x_opening, x_chute])),
+        distance=_read_only(distance),
         acceleration=_read_only(resultant / mass), drag=_read_only(drag),
         resultant_force=_read_only(resultant), points=MappingProxyType(points),
         point_acceleration=MappingProxyType(

@@ -191,6 +191,7 @@ def add_engine_scripts(app, kinds: set[str] | None = None) -> None:
     without a sketch never loads the sketch marker), the engine, and the store of attempts."""
     add_notation_script(app)  # the engine and the page write numbers with it
     app.add_js_file("answer-reading.js", loading_method="defer", priority=440)
+    app.add_js_file("sig-figs.js", loading_method="defer", priority=442)  # the numeric kind's s.f. judge
     app.add_js_file("question-kinds.js", loading_method="defer", priority=445)  # the kinds' registry
     for script in kind_scripts(app, kinds):  # each part kind's marker, before the engine that finds them
         app.add_js_file(script, loading_method="defer", priority=450)

@@ -410,6 +410,29 @@
     return [t, ""];
   }
 
+  /* An answer's value and unit boxes, read as typed: a unit typed in the value box ("3.2 kg"
+   * with the unit box empty) is split off. */
+  function typedAnswer(answer) {
+    var valueText = answer.value || "",
+      unitText = answer.unit || "";
+    if (!normalise(unitText) && /[A-Za-zµμ°%]/.test(normalise(valueText).replace(/[eExX×]/g, ""))) {
+      var split = splitValueAndUnit(valueText);
+      valueText = split[0];
+      unitText = split[1];
+    }
+    return { valueText: valueText, unitText: unitText, direction: answer.direction || "" };
+  }
+
+  /* A unit typed in the wrong case (MS for ms; unit: parseUnit's reading of unitText): the unit
+   * meant (partUnit's own form, where it is that), or false where the unit fits or no recasing does. */
+  function unitMeant(unitText, unit, expected, partUnit) {
+    var fits = unit.ok && unit.readings.some((r) => sameDims(r.dims, expected.dims));
+    var recased = !fits && recasedUnit(unitText, expected.dims, expected.scale);
+    if (recased && recased.replace(/\s+/g, "") === normalise(partUnit).replace(/\s+/g, ""))
+      recased = normalise(partUnit);
+    return recased;
+  }
+
   function superscript(unitText) {
     return String(unitText).replace(/\^(-?\d+)/g, function (_, n) {
       return n.replace(/-/g, "⁻").replace(/\d/g, function (d) {
@@ -426,6 +449,8 @@
     sameDims: sameDims,
     recasedUnit: recasedUnit,
     splitValueAndUnit: splitValueAndUnit,
+    typedAnswer: typedAnswer,
+    unitMeant: unitMeant,
     superscript: superscript,
     // the reader's own tables: the Moodle export declares each unit's forms from them
     tables: { base: BASE_UNITS, unprefixed: UNPREFIXED, words: UNIT_WORDS, prefixes: PREFIXES },

@@ -276,102 +276,128 @@
   var Store = root.ProgressStore;
   var Schedule = root.Schedule;
 
+  function link(href, text) {
+    var a = document.createElement("a");
+    a.href = href;
+    a.textContent = text;
+    return a;
+  }
+
+  /* The plan on the page (page): its box, data, plan and Start button, and what Start serves,
+   * as last worked out (served). */
+  function line(page, selector, parts) {
+    var p = page.plan.querySelector(selector) || page.box.querySelector(selector);
+    p.textContent = "";
+    parts.forEach(function (part) {
+      p.appendChild(typeof part === "string" ? document.createTextNode(part) : part);
+    });
+  }
+
+  function renderWeakest(page, progress) {
+    var weakest = weakestType(page.data.types, progress.attempts);
+    line(
+      page,
+      ".pp-weakest",
+      weakest
+        ? [
+            "Weakest type: ",
+            link("#pp-type-" + weakest.kind.type, weakest.kind.name),
+            ", " +
+              Progress.marksText(weakest.summary.earned, weakest.summary.available) +
+              " (" +
+              count(Math.round(weakest.share * 100)) +
+              "\u202f%): the lowest share of the marks over the questions you tried.",
+          ]
+        : ["Weakest type: none yet. It shows once you have checked an answer."],
+    );
+  }
+
+  function renderMistake(page, progress) {
+    var mistake = mostFrequentMistake(progress.attempts);
+    var section = mistake && mistakeSection(page.data, mistake);
+    line(
+      page,
+      ".pp-often",
+      mistake
+        ? ["Most frequent mistake: " + mistake.name + " (" + Progress.times(mistake.count) + ")."].concat(
+            section ? [" Revisit: ", link(section.href, section.title), "."] : [],
+          )
+        : [progress.attempts.length ? "No named mistakes so far." : "Most frequent mistake: none yet."],
+    );
+  }
+
+  function renderDefinitions(page, progress, byDue) {
+    var data = page.data;
+    var defs = definitionsRecord(data, progress, byDue);
+    if (data.definitions) {
+      line(page, ".pp-defs-line", [
+        "known " +
+          count(defs.known) +
+          ", not yet " +
+          count(defs.notYet) +
+          ", of " +
+          count(defs.cards) +
+          (defs.due ? "; " + count(defs.due) + " due" : "") +
+          " (",
+        link(data.definitions.page, "the self-test"),
+        ").",
+      ]);
+    }
+  }
+
+  function render(page) {
+    var read = Store.load();
+    var progress = read.ok ? read.progress : Store.empty();
+    var now = Date.now();
+    var byDue = Schedule.cardsByDue(progress, now);
+    page.served = queue(page.data, byDue);
+    line(page, ".pp-due-text", [dueLine(page.served, byDue, now, Schedule.backText)]);
+    page.startButton.disabled = !page.served.cards.length;
+    renderWeakest(page, progress);
+    renderMistake(page, progress);
+    renderDefinitions(page, progress, byDue);
+  }
+
+  /* From disk (file://) Chromium at times gives two pages two apart localStorage areas (about
+   * 1 visit in 10 without --allow-file-access-from-files), so there the link carries the queue
+   * too, in ?review= (review.js reads it first). */
+  function carried(url, queue) {
+    if (location.protocol !== "file:") return url;
+    var to = new URL(url);
+    to.searchParams.set("review", JSON.stringify(queue));
+    return to.href;
+  }
+
+  // Start: the queue served, kept for the review pages, and its first card opened.
+  function startReview(page) {
+    var served = page.served;
+    if (!served || !served.cards.length) return;
+    var cards = served.cards.map(function (c) {
+      return { id: c.id, type: c.type, url: new URL(c.url, location.href).href };
+    });
+    var kept = { version: 1, home: location.href.split("#")[0], at: Date.now(), position: 0, cards: cards };
+    try {
+      localStorage.setItem(QUEUE, JSON.stringify(kept));
+    } catch {
+      line(page, ".pp-due-text", ["This browser does not let the page keep the queue (private mode?)."]);
+      return;
+    }
+    location.href = carried(cards[0].url, kept);
+  }
+
   function start() {
     var box = document.querySelector(".pp");
     if (!box) return;
-    var data = JSON.parse(box.querySelector("script.pp-data").textContent);
     var plan = box.querySelector(".pp-plan");
-    var startButton = plan.querySelector(".pp-start");
-    var served = null; // what Start serves, as last worked out
-
-    function link(href, text) {
-      var a = document.createElement("a");
-      a.href = href;
-      a.textContent = text;
-      return a;
-    }
-
-    function line(selector, parts) {
-      var p = plan.querySelector(selector) || box.querySelector(selector);
-      p.textContent = "";
-      parts.forEach(function (part) {
-        p.appendChild(typeof part === "string" ? document.createTextNode(part) : part);
-      });
-    }
-
-    function render() {
-      var read = Store.load();
-      var progress = read.ok ? read.progress : Store.empty();
-      var now = Date.now();
-      var byDue = Schedule.cardsByDue(progress, now);
-      served = queue(data, byDue);
-      line(".pp-due-text", [dueLine(served, byDue, now, Schedule.backText)]);
-      startButton.disabled = !served.cards.length;
-      var weakest = weakestType(data.types, progress.attempts);
-      line(
-        ".pp-weakest",
-        weakest
-          ? [
-              "Weakest type: ",
-              link("#pp-type-" + weakest.kind.type, weakest.kind.name),
-              ", " +
-                Progress.marksText(weakest.summary.earned, weakest.summary.available) +
-                " (" +
-                count(Math.round(weakest.share * 100)) +
-                "\u202f%): the lowest share of the marks over the questions you tried.",
-            ]
-          : ["Weakest type: none yet. It shows once you have checked an answer."],
-      );
-      var mistake = mostFrequentMistake(progress.attempts);
-      var section = mistake && mistakeSection(data, mistake);
-      line(
-        ".pp-often",
-        mistake
-          ? ["Most frequent mistake: " + mistake.name + " (" + Progress.times(mistake.count) + ")."].concat(
-              section ? [" Revisit: ", link(section.href, section.title), "."] : [],
-            )
-          : [progress.attempts.length ? "No named mistakes so far." : "Most frequent mistake: none yet."],
-      );
-      var defs = definitionsRecord(data, progress, byDue);
-      if (data.definitions) {
-        line(".pp-defs-line", [
-          "known " +
-            count(defs.known) +
-            ", not yet " +
-            count(defs.notYet) +
-            ", of " +
-            count(defs.cards) +
-            (defs.due ? "; " + count(defs.due) + " due" : "") +
-            " (",
-          link(data.definitions.page, "the self-test"),
-          ").",
-        ]);
-      }
-    }
-
-    /* From disk (file://) Chromium at times gives two pages two apart localStorage areas (about
-     * 1 visit in 10 without --allow-file-access-from-files), so there the link carries the queue
-     * too, in ?review= (review.js reads it first). */
-    function carried(url, queue) {
-      if (location.protocol !== "file:") return url;
-      var to = new URL(url);
-      to.searchParams.set("review", JSON.stringify(queue));
-      return to.href;
-    }
-
-    startButton.addEventListener("click", function () {
-      if (!served || !served.cards.length) return;
-      var cards = served.cards.map(function (c) {
-        return { id: c.id, type: c.type, url: new URL(c.url, location.href).href };
-      });
-      var kept = { version: 1, home: location.href.split("#")[0], at: Date.now(), position: 0, cards: cards };
-      try {
-        localStorage.setItem(QUEUE, JSON.stringify(kept));
-      } catch {
-        line(".pp-due-text", ["This browser does not let the page keep the queue (private mode?)."]);
-        return;
-      }
-      location.href = carried(cards[0].url, kept);
+    var page = {
+      box: box,
+      data: JSON.parse(box.querySelector("script.pp-data").textContent),
+      plan: plan,
+      startButton: plan.querySelector(".pp-start"),
+      served: null,
+    };
+    page.startButton.addEventListener("click", function () {
+      startReview(page);
     });
 
     // A link to a type opens its details.
@@ -380,9 +406,11 @@
       var target = a && document.getElementById(a.getAttribute("href").slice(1));
       if (target) target.open = true;
     });
-    box.addEventListener("pp-changed", render);
+    box.addEventListener("pp-changed", function () {
+      render(page);
+    });
     try {
-      render();
+      render(page);
     } finally {
       // shown now, filled: progress.css keeps the plan and the types unseen until then, so
       // their words arriving move nothing a reader sees (no layout shift)

@@ -55,30 +55,30 @@
     return Number.isInteger(n) && n >= 0;
   }
 
+  /* An attempt's rules, in the order they are checked: [what is wrong, the test that finds it]
+   * (a is an object, not an array, by the first rule). */
+  var ATTEMPT_RULES = [
+    ["names no question", (a) => typeof a.question !== "string" || !a.question],
+    ["has no question type", (a) => typeof a.type !== "string"],
+    ["has no variant number", (a) => !isCount(a.variant)],
+    ["has no marks available", (a) => !Number.isInteger(a.available) || a.available < 1],
+    [
+      "has marks earned that are not between 0 and the marks available",
+      (a) => !isCount(a.earned) || a.earned > a.available,
+    ],
+    ["has no time", (a) => typeof a.at !== "number" || !isFinite(a.at)],
+    ["has no list of mistakes", (a) => !Array.isArray(a.mistakes) || a.mistakes.some((m) => typeof m !== "string")],
+    ["has a help count that is not a whole number", (a) => "help" in a && !isCount(a.help)],
+    ["has a time taken below 0", (a) => "seconds" in a && !(typeof a.seconds === "number" && a.seconds >= 0)],
+    ["says neither yes nor no to first try", (a) => "first" in a && typeof a.first !== "boolean"],
+    ["has a rating that is not 1 to 4", (a) => "rating" in a && [1, 2, 3, 4].indexOf(a.rating) < 0],
+  ];
+
   // What is wrong with one attempt, or null.
   function attemptProblem(a) {
     if (!a || typeof a !== "object" || Array.isArray(a)) return "is not an attempt";
-    if (typeof a.question !== "string" || !a.question) return "names no question";
-    if (typeof a.type !== "string") return "has no question type";
-    if (!isCount(a.variant)) return "has no variant number";
-    if (!Number.isInteger(a.available) || a.available < 1) return "has no marks available";
-    if (!isCount(a.earned) || a.earned > a.available) {
-      return "has marks earned that are not between 0 and the marks available";
-    }
-    if (typeof a.at !== "number" || !isFinite(a.at)) return "has no time";
-    if (
-      !Array.isArray(a.mistakes) ||
-      a.mistakes.some(function (m) {
-        return typeof m !== "string";
-      })
-    ) {
-      return "has no list of mistakes";
-    }
-    if ("help" in a && !isCount(a.help)) return "has a help count that is not a whole number";
-    if ("seconds" in a && !(typeof a.seconds === "number" && a.seconds >= 0)) return "has a time taken below 0";
-    if ("first" in a && typeof a.first !== "boolean") return "says neither yes nor no to first try";
-    if ("rating" in a && [1, 2, 3, 4].indexOf(a.rating) < 0) return "has a rating that is not 1 to 4";
-    return null;
+    var broken = ATTEMPT_RULES.filter((rule) => rule[1](a))[0];
+    return broken ? broken[0] : null;
   }
 
   function mockProblem(m) {
@@ -150,6 +150,29 @@
     return null;
   }
 
+  /* What is wrong with a progress file's head (its format version, book and student), or null. */
+  function headerProblem(data) {
+    if (!data || typeof data !== "object" || Array.isArray(data) || !("version" in data)) {
+      return "it is not a progress file from this book (it has no format version).";
+    }
+    if (data.version !== 1 && data.version !== VERSION) {
+      return typeof data.version === "number" && data.version > VERSION
+        ? "it was saved by a newer version of the book (format " +
+            count(data.version) +
+            "); this page reads formats 1 and " +
+            count(VERSION) +
+            ". Open it in the newer book."
+        : "its format version (" + String(data.version).slice(0, 20) + ") is not one this book wrote.";
+    }
+    if ("book" in data && data.book !== BOOK) {
+      return "it is progress in another book (" + String(data.book).slice(0, 40) + ").";
+    }
+    if ("student" in data && typeof data.student !== "string") {
+      return "its student's name is not text.";
+    }
+    return null;
+  }
+
   /* Read stored or exported progress (text), format 1 or 2: {ok: true, progress, from} (from:
    * the format it was written in; format 1 comes back upgraded) or {ok: false, message}, the
    * message saying what is wrong. Nothing stored reads as empty progress. */
@@ -161,28 +184,8 @@
     } catch {
       return { ok: false, message: "it is not a progress file from this book (it is not JSON)." };
     }
-    if (!data || typeof data !== "object" || Array.isArray(data) || !("version" in data)) {
-      return { ok: false, message: "it is not a progress file from this book (it has no format version)." };
-    }
-    if (data.version !== 1 && data.version !== VERSION) {
-      return {
-        ok: false,
-        message:
-          typeof data.version === "number" && data.version > VERSION
-            ? "it was saved by a newer version of the book (format " +
-              count(data.version) +
-              "); this page reads formats 1 and " +
-              count(VERSION) +
-              ". Open it in the newer book."
-            : "its format version (" + String(data.version).slice(0, 20) + ") is not one this book wrote.",
-      };
-    }
-    if ("book" in data && data.book !== BOOK) {
-      return { ok: false, message: "it is progress in another book (" + String(data.book).slice(0, 40) + ")." };
-    }
-    if ("student" in data && typeof data.student !== "string") {
-      return { ok: false, message: "its student's name is not text." };
-    }
+    var wrong = headerProblem(data);
+    if (wrong) return { ok: false, message: wrong };
     if (!Array.isArray(data.attempts)) return { ok: false, message: "it has no list of attempts." };
     var problem = listProblem(data.attempts, "attempt", attemptProblem);
     if (problem) return { ok: false, message: problem };

@@ -100,15 +100,11 @@
     return (id && sections[id]) || null;
   }
 
-  function setUp(section) {
-    var data = JSON.parse(section.querySelector("script.q-data").textContent);
+  /* One question on the page (q): its section, form, data (the variant on screen), worked
+   * answer, score line and buttons; the help by steps; what Clear cleared (undone, until Undo
+   * clear or another change); when these numbers came on screen (shownAt). */
+  function questionOf(section) {
     var form = section.querySelector("form.q-form");
-    var worked = section.querySelector(".q-worked");
-    var score = form.querySelector(".q-score");
-    var newButton = form.querySelector("button.q-new");
-    var undoButton = form.querySelector("button.q-undo");
-    var undone = null; // what Clear my answers cleared, until Undo clear or another change
-    var key = form.getAttribute("data-question");
     // Help before the answer (static/help-steps.js), and when these numbers came on screen.
     var help = root.HelpSteps
       ? root.HelpSteps.attach(form, { load: load, save: save })
@@ -118,283 +114,320 @@
             return 0;
           },
         }; // a page without the help script
-    var shownAt = Date.now();
+    return {
+      section: section,
+      data: JSON.parse(section.querySelector("script.q-data").textContent),
+      form: form,
+      worked: section.querySelector(".q-worked"),
+      score: form.querySelector(".q-score"),
+      newButton: form.querySelector("button.q-new"),
+      undoButton: form.querySelector("button.q-undo"),
+      undone: null,
+      key: form.getAttribute("data-question"),
+      help: help,
+      shownAt: Date.now(),
+    };
+  }
 
-    function storeId() {
-      return data.id + (key ? "@" + form.getAttribute("data-variant") : "");
+  function storeId(q) {
+    return q.data.id + (q.key ? "@" + q.form.getAttribute("data-variant") : "");
+  }
+
+  function fields(q, part) {
+    var box = q.form.querySelector('[data-part="' + part.id + '"]');
+    return {
+      box: box,
+      feedback: box.querySelector(".q-feedback"),
+      marks: box.querySelector(".q-part-marks"),
+      points: box.querySelector(".q-points"),
+    };
+  }
+
+  // each part's kind reads its own fieldset (static/question-kinds.js)
+  function answerOf(q, part) {
+    return Kinds.of(part).read(fields(q, part).box, part);
+  }
+
+  function answers(q) {
+    var out = {};
+    q.data.parts.forEach(function (part) {
+      out[part.id] = answerOf(q, part);
+    });
+    return out;
+  }
+
+  function fill(q, part, a) {
+    Kinds.of(part).fill(fields(q, part).box, part, a);
+  }
+
+  /* On a Check, a kind may tick in its part what its marker found, for the student to confirm
+   * (an explain part with rules: preTick, true when it ticked any). */
+  function preTick(q, marked) {
+    var ticked = false;
+    q.data.parts.forEach(function (part) {
+      var kind = Kinds.of(part);
+      if (kind.preTick) ticked = kind.preTick(fields(q, part).box, marked.results[part.id]) || ticked;
+    });
+    return ticked;
+  }
+
+  /* One part's feedback after a Check: ✓ or ✗ with the marker's message, what it lost, a
+   * section to revisit, and its marks. */
+  function showPartResult(q, part, marked) {
+    var f = fields(q, part),
+      result = marked.results[part.id],
+      got = marked.marks.byPart[part.id];
+    // ✓ only for a part that earned every one of its marks; a part that lost some says which
+    var right = got[0] === got[1] && result.code !== "wrong";
+    var selfMarked = result.code === "self-marked";
+    if (f.points && selfMarked) f.points.hidden = false;
+    if (Kinds.of(part).show) Kinds.of(part).show(f.box, result); // what the marker found (text)
+    var lost = engine.lostText(q.data, marked.marks, part.id);
+    // a value in the message stays on one line with its unit, as everywhere in the book
+    f.feedback.textContent =
+      (selfMarked ? "" : right ? "✓ " : "✗ ") + Notation.joinUnits(result.message) + (lost ? " " + lost : "");
+    var idea = !right && !selfMarked && sectionLink(part, result);
+    if (idea) {
+      var link = document.createElement("a");
+      link.className = "q-idea";
+      link.href = idea.href;
+      link.textContent = idea.title;
+      f.feedback.appendChild(document.createTextNode(" Revisit: "));
+      f.feedback.appendChild(link);
     }
-
-    function fields(part) {
-      var box = form.querySelector('[data-part="' + part.id + '"]');
-      return {
-        box: box,
-        feedback: box.querySelector(".q-feedback"),
-        marks: box.querySelector(".q-part-marks"),
-        points: box.querySelector(".q-points"),
-      };
+    // One part alone: its marks are the question's, shown once in .q-score.
+    if (f.marks && q.data.parts.length > 1) {
+      f.marks.textContent = marksText(got[0], got[1]) + (result.code === "ecf" ? " (ecf)" : "");
     }
+    f.feedback.className = "q-feedback " + (right ? "q-right" : "q-wrong");
+    f.feedback.setAttribute("data-code", result.code);
+  }
 
-    // each part's kind reads its own fieldset (static/question-kinds.js)
-    function answerOf(part) {
-      return Kinds.of(part).read(fields(part).box, part);
+  /* The Check's attempt, for Your practice. record: true for a Check, "ticks" for a marking
+   * point ticked; confirmed: the marker's ticks were there to confirm. */
+  function recordCheck(q, marked, record, confirmed) {
+    var data = q.data,
+      form = q.form;
+    var attempt = {
+      question: q.key,
+      type: form.getAttribute("data-type"),
+      variant: Number(form.getAttribute("data-variant")),
+      earned: marked.marks.earned,
+      available: marked.marks.available,
+      at: Date.now(),
+      // the template's named mistakes, and the sign, unit and 1 s.f. slips the engine names
+      mistakes: data.parts
+        .map(function (p) {
+          var result = marked.results[p.id];
+          return result.mistake || engine.slipName(result.code);
+        })
+        .filter(Boolean),
+    };
+    // marks the student gave themselves (ticks), and whether the marker's ticks were there to confirm
+    if (data.parts.some((p) => marked.results[p.id].code === "self-marked")) attempt.selfMarked = true;
+    if (confirmed || (record === "ticks" && load("confirm:" + storeId(q)))) attempt.selfConfirmed = true;
+    if (record === true) save("confirm:" + storeId(q), confirmed);
+    // A tick re-scores its Check's attempt, which keeps the help, time and first try it had.
+    if (record !== "ticks") {
+      attempt.help = q.help.used();
+      attempt.seconds = Math.round((Date.now() - q.shownAt) / 1000);
+      attempt.first = !load("tried:" + storeId(q));
+      save("tried:" + storeId(q), true);
     }
+    recordAttempt(attempt, record === "ticks");
+  }
 
-    function answers() {
-      var out = {};
-      data.parts.forEach(function (part) {
-        out[part.id] = answerOf(part);
-      });
-      return out;
+  /* record: a Check (a new attempt); "ticks": a marking point ticked (updates it). */
+  function check(q, record) {
+    var marked = markQuestion(q.data, answers(q));
+    var confirmed = record === true && preTick(q, marked);
+    if (confirmed) marked = markQuestion(q.data, answers(q));
+    q.data.parts.forEach(function (part) {
+      showPartResult(q, part, marked);
+    });
+    // marks earned with help say so ("4/4 marks, with 3 steps of help"), as the record does
+    var steps = q.help.used();
+    if (q.score) {
+      q.score.textContent =
+        marksText(marked.marks.earned, marked.marks.available) +
+        (steps ? ", with " + steps + (steps === 1 ? " step" : " steps") + " of help" : "");
     }
+    if (q.worked) q.worked.hidden = false;
+    // Others listen for an attempt (a worked example's solution opens on it, below).
+    q.section.dispatchEvent(
+      new CustomEvent("q-checked", {
+        bubbles: true,
+        detail: { question: q.data.id, earned: marked.marks.earned, available: marked.marks.available },
+      }),
+    );
+    save(storeId(q), { answers: answers(q), checked: true });
+    // A Check with nothing written is no attempt: it is not kept.
+    var tried = q.data.parts.some(function (part) {
+      return Kinds.of(part).answered(answerOf(q, part));
+    });
+    if (record && q.key && tried) recordCheck(q, marked, record, confirmed);
+  }
 
-    function fill(part, a) {
-      Kinds.of(part).fill(fields(part).box, part, a);
+  function clear(q) {
+    q.data.parts.forEach(function (part) {
+      var f = fields(q, part);
+      fill(q, part, {});
+      if (f.points) f.points.hidden = true;
+      f.feedback.textContent = "";
+      f.feedback.className = "q-feedback";
+      if (f.marks) f.marks.textContent = "";
+    });
+    if (q.score) q.score.textContent = "";
+    if (q.worked) {
+      q.worked.open = false;
+      q.worked.hidden = true;
     }
+    dropUndo(q);
+  }
 
-    /* On a Check, a kind may tick in its part what its marker found, for the student to confirm
-     * (an explain part with rules: preTick, true when it ticked any). */
-    function preTick(marked) {
-      var ticked = false;
-      data.parts.forEach(function (part) {
-        var kind = Kinds.of(part);
-        if (kind.preTick) ticked = kind.preTick(fields(part).box, marked.results[part.id]) || ticked;
-      });
-      return ticked;
+  function dropUndo(q) {
+    q.undone = null;
+    if (q.undoButton) q.undoButton.hidden = true;
+  }
+
+  function restore(q) {
+    var saved = load(storeId(q));
+    if (!saved || !saved.answers) return;
+    q.data.parts.forEach(function (part) {
+      fill(q, part, saved.answers[part.id] || {});
+    });
+    if (saved.checked) check(q, false);
+  }
+
+  /* A variant's own graph and diagram, drawn from its numbers. */
+  function showFigures(section, variant) {
+    var graph = section.querySelector("img.q-graph");
+    if (graph && variant.graph) {
+      // its own graph, drawn from its numbers
+      graph.src = contentRoot() + "_static/questions/" + variant.graph.src;
+      graph.alt = variant.graph.alt;
+      // its grid, for the enlarged view (static/graph-view.js)
+      var opener = graph.closest(".q-graph-open");
+      if (opener && variant.graph.square) opener.setAttribute("data-square", variant.graph.square);
+      if (opener && variant.graph.cursor) opener.setAttribute("data-cursor", JSON.stringify(variant.graph.cursor));
     }
-
-    /* record: a Check (a new attempt); "ticks": a marking point ticked (updates it). */
-    function check(record) {
-      var marked = markQuestion(data, answers());
-      var confirmed = record === true && preTick(marked);
-      if (confirmed) marked = markQuestion(data, answers());
-      data.parts.forEach(function (part) {
-        var f = fields(part),
-          result = marked.results[part.id],
-          got = marked.marks.byPart[part.id];
-        // ✓ only for a part that earned every one of its marks; a part that lost some says which
-        var right = got[0] === got[1] && result.code !== "wrong";
-        var selfMarked = result.code === "self-marked";
-        if (f.points && selfMarked) f.points.hidden = false;
-        if (Kinds.of(part).show) Kinds.of(part).show(f.box, result); // what the marker found (text)
-        var lost = engine.lostText(data, marked.marks, part.id);
-        // a value in the message stays on one line with its unit, as everywhere in the book
-        f.feedback.textContent =
-          (selfMarked ? "" : right ? "✓ " : "✗ ") + Notation.joinUnits(result.message) + (lost ? " " + lost : "");
-        var idea = !right && !selfMarked && sectionLink(part, result);
-        if (idea) {
-          var link = document.createElement("a");
-          link.className = "q-idea";
-          link.href = idea.href;
-          link.textContent = idea.title;
-          f.feedback.appendChild(document.createTextNode(" Revisit: "));
-          f.feedback.appendChild(link);
-        }
-        // One part alone: its marks are the question's, shown once in .q-score.
-        if (f.marks && data.parts.length > 1) {
-          f.marks.textContent = marksText(got[0], got[1]) + (result.code === "ecf" ? " (ecf)" : "");
-        }
-        f.feedback.className = "q-feedback " + (right ? "q-right" : "q-wrong");
-        f.feedback.setAttribute("data-code", result.code);
-      });
-      // marks earned with help say so ("4/4 marks, with 3 steps of help"), as the record does
-      var steps = help.used();
-      if (score) {
-        score.textContent =
-          marksText(marked.marks.earned, marked.marks.available) +
-          (steps ? ", with " + steps + (steps === 1 ? " step" : " steps") + " of help" : "");
-      }
-      if (worked) worked.hidden = false;
-      // Others listen for an attempt (a worked example's solution opens on it, below).
-      section.dispatchEvent(
-        new CustomEvent("q-checked", {
-          bubbles: true,
-          detail: { question: data.id, earned: marked.marks.earned, available: marked.marks.available },
-        }),
-      );
-      save(storeId(), { answers: answers(), checked: true });
-      // A Check with nothing written is no attempt: it is not kept.
-      var tried = data.parts.some(function (part) {
-        return Kinds.of(part).answered(answerOf(part));
-      });
-      if (record && key && tried) {
-        var attempt = {
-          question: key,
-          type: form.getAttribute("data-type"),
-          variant: Number(form.getAttribute("data-variant")),
-          earned: marked.marks.earned,
-          available: marked.marks.available,
-          at: Date.now(),
-          // the template's named mistakes, and the sign, unit and 1 s.f. slips the engine names
-          mistakes: data.parts
-            .map(function (p) {
-              var result = marked.results[p.id];
-              return result.mistake || engine.slipName(result.code);
-            })
-            .filter(Boolean),
-        };
-        // marks the student gave themselves (ticks), and whether the marker's ticks were there to confirm
-        if (data.parts.some((p) => marked.results[p.id].code === "self-marked")) attempt.selfMarked = true;
-        if (confirmed || (record === "ticks" && load("confirm:" + storeId()))) attempt.selfConfirmed = true;
-        if (record === true) save("confirm:" + storeId(), confirmed);
-        // A tick re-scores its Check's attempt, which keeps the help, time and first try it had.
-        if (record !== "ticks") {
-          attempt.help = help.used();
-          attempt.seconds = Math.round((Date.now() - shownAt) / 1000);
-          attempt.first = !load("tried:" + storeId());
-          save("tried:" + storeId(), true);
-        }
-        recordAttempt(attempt, record === "ticks");
-      }
+    var diagram = section.querySelector("img.q-diagram");
+    if (diagram && variant.diagram) {
+      // its own diagram, labelled with its numbers
+      diagram.src = contentRoot() + "_static/questions/" + variant.diagram.src;
+      diagram.alt = variant.diagram.alt;
     }
+  }
 
-    function clear() {
-      data.parts.forEach(function (part) {
-        var f = fields(part);
-        fill(part, {});
-        if (f.points) f.points.hidden = true;
-        f.feedback.textContent = "";
-        f.feedback.className = "q-feedback";
-        if (f.marks) f.marks.textContent = "";
-      });
-      if (score) score.textContent = "";
-      if (worked) {
-        worked.open = false;
-        worked.hidden = true;
-      }
-      dropUndo();
-    }
+  /* fresh: New numbers pressed (not the numbers a student had, brought back): no help yet. */
+  function show(q, index, variant, fresh) {
+    q.data = { id: q.data.id, parts: variant.parts, marks: variant.marks };
+    q.section.querySelector(".q-text").innerHTML = variant.text;
+    showFigures(q.section, variant);
+    var scheme = q.worked && q.worked.querySelector(".q-scheme");
+    if (scheme) scheme.outerHTML = variant.scheme.replace("<ul>", '<ul class="' + scheme.className + '">');
+    q.form.setAttribute("data-variant", String(index));
+    save("variant:" + q.key, { variant: index });
+    q.shownAt = Date.now();
+    q.help.show(q.data, "help:" + storeId(q), !!fresh);
+    // A variant's prompts, options and marking points (question-relabel.js, shared with the mock test).
+    root.QuestionRelabel.relabel(q.form, q.data);
+    clear(q);
+    restore(q);
+  }
 
-    function dropUndo() {
-      undone = null;
-      if (undoButton) undoButton.hidden = true;
-    }
-
-    function restore() {
-      var saved = load(storeId());
-      if (!saved || !saved.answers) return;
-      data.parts.forEach(function (part) {
-        fill(part, saved.answers[part.id] || {});
-      });
-      if (saved.checked) check(false);
-    }
-
-    /* A variant's prompts, options and marking points (question-relabel.js, shared with the
-     * mock test). */
-    function relabel() {
-      root.QuestionRelabel.relabel(form, data);
-    }
-
-    /* fresh: New numbers pressed (not the numbers a student had, brought back): no help yet. */
-    function show(index, variant, fresh) {
-      data = { id: data.id, parts: variant.parts, marks: variant.marks };
-      section.querySelector(".q-text").innerHTML = variant.text;
-      var graph = section.querySelector("img.q-graph");
-      if (graph && variant.graph) {
-        // its own graph, drawn from its numbers
-        graph.src = contentRoot() + "_static/questions/" + variant.graph.src;
-        graph.alt = variant.graph.alt;
-        // its grid, for the enlarged view (static/graph-view.js)
-        var opener = graph.closest(".q-graph-open");
-        if (opener && variant.graph.square) opener.setAttribute("data-square", variant.graph.square);
-        if (opener && variant.graph.cursor) opener.setAttribute("data-cursor", JSON.stringify(variant.graph.cursor));
-      }
-      var diagram = section.querySelector("img.q-diagram");
-      if (diagram && variant.diagram) {
-        // its own diagram, labelled with its numbers
-        diagram.src = contentRoot() + "_static/questions/" + variant.diagram.src;
-        diagram.alt = variant.diagram.alt;
-      }
-      var scheme = worked && worked.querySelector(".q-scheme");
-      if (scheme) scheme.outerHTML = variant.scheme.replace("<ul>", '<ul class="' + scheme.className + '">');
-      form.setAttribute("data-variant", String(index));
-      save("variant:" + key, { variant: index });
-      shownAt = Date.now();
-      help.show(data, "help:" + storeId(), !!fresh);
-      relabel();
-      clear();
-      restore();
-    }
-
+  /* Check, typing, a ticked marking point, and Clear my answers (which can be undone: the
+   * cleared answers come back, until the next change). */
+  function listenToForm(q) {
+    var form = q.form;
     form.addEventListener("submit", function (event) {
       event.preventDefault();
-      check(true);
+      check(q, true);
     });
     form.addEventListener("input", function () {
-      dropUndo();
-      save(storeId(), { answers: answers(), checked: !!(load(storeId()) || {}).checked });
+      dropUndo(q);
+      save(storeId(q), { answers: answers(q), checked: !!(load(storeId(q)) || {}).checked });
     });
     form.addEventListener("change", function (event) {
       // a ticked marking point re-scores at once
-      if (event.target.classList.contains("q-tick")) check("ticks");
+      if (event.target.classList.contains("q-tick")) check(q, "ticks");
     });
-    // Clear my answers can be undone: the cleared answers come back (until the next change).
     form.addEventListener("reset", function (event) {
       event.preventDefault();
-      var before = load(storeId());
-      forget(storeId());
-      clear();
-      if (before && undoButton) {
-        undone = before;
-        undoButton.hidden = false;
-        undoButton.focus();
-        if (score) score.textContent = "Your answers are cleared. Undo clear brings them back.";
+      var before = load(storeId(q));
+      forget(storeId(q));
+      clear(q);
+      if (before && q.undoButton) {
+        q.undone = before;
+        q.undoButton.hidden = false;
+        q.undoButton.focus();
+        if (q.score) q.score.textContent = "Your answers are cleared. Undo clear brings them back.";
       }
     });
-    if (undoButton) {
-      undoButton.addEventListener("click", function () {
-        var state = undone;
-        dropUndo();
+  }
+
+  function listenToButtons(q) {
+    if (q.undoButton) {
+      q.undoButton.addEventListener("click", function () {
+        var state = q.undone;
+        dropUndo(q);
         if (!state) return;
-        save(storeId(), state);
-        if (score) score.textContent = "";
-        restore();
-        form.querySelector("button.q-clear").focus();
+        save(storeId(q), state);
+        if (q.score) q.score.textContent = "";
+        restore(q);
+        q.form.querySelector("button.q-clear").focus();
       });
     }
-    if (newButton) {
-      newButton.addEventListener("click", function () {
-        newButton.disabled = true;
-        loadVariants(key, function (variants) {
-          newButton.disabled = false;
+    if (q.newButton) {
+      q.newButton.addEventListener("click", function () {
+        q.newButton.disabled = true;
+        loadVariants(q.key, function (variants) {
+          q.newButton.disabled = false;
           if (!variants) {
-            score.textContent = "New numbers could not be loaded.";
+            q.score.textContent = "New numbers could not be loaded.";
             return;
           }
-          var index = nextVariant(key, variants.length, Number(form.getAttribute("data-variant")));
-          show(index, variants[index], true);
-          section.querySelector(".q-text").focus();
+          var index = nextVariant(q.key, variants.length, Number(q.form.getAttribute("data-variant")));
+          show(q, index, variants[index], true);
+          q.section.querySelector(".q-text").focus();
         });
       });
     }
+  }
+
+  /* "Practise this type" (progress.js) links to page.html?new=KEY#question-KEY: this
+   * question, with new numbers at once and focus in it. The request is used up, so a
+   * reload keeps the numbers on screen. */
+  function arrive(q, text, fresh) {
+    if (!fresh) return;
+    var params = new URLSearchParams(location.search);
+    params.delete("new");
+    var query = params.toString();
+    history.replaceState(history.state, "", location.pathname + (query ? "?" + query : "") + location.hash);
+    if (q.newButton) q.newButton.click();
+    else if (text) text.focus();
+  }
+
+  function setUp(section) {
+    var q = questionOf(section);
+    listenToForm(q);
+    listenToButtons(q);
     var text = section.querySelector(".q-text");
     if (text) text.setAttribute("tabindex", "-1"); // New numbers moves focus to the new text
 
-    // "Practise this type" (progress.js) links to page.html?new=KEY#question-KEY: this
-    // question, with new numbers at once and focus in it. The request is used up, so a
-    // reload keeps the numbers on screen.
-    var fresh = !!key && new URLSearchParams(location.search).get("new") === key;
-    function arrive() {
-      if (!fresh) return;
-      var params = new URLSearchParams(location.search);
-      params.delete("new");
-      var query = params.toString();
-      history.replaceState(history.state, "", location.pathname + (query ? "?" + query : "") + location.hash);
-      if (newButton) newButton.click();
-      else if (text) text.focus();
-    }
-
-    help.show(data, "help:" + storeId(), false);
+    var fresh = !!q.key && new URLSearchParams(location.search).get("new") === q.key;
+    q.help.show(q.data, "help:" + storeId(q), false);
     // A student who had new numbers comes back to the same numbers.
-    var last = key && load("variant:" + key);
+    var last = q.key && load("variant:" + q.key);
     if (last && last.variant) {
-      loadVariants(key, function (variants) {
-        if (variants && variants[last.variant]) show(last.variant, variants[last.variant]);
-        else restore();
-        arrive();
+      loadVariants(q.key, function (variants) {
+        if (variants && variants[last.variant]) show(q, last.variant, variants[last.variant]);
+        else restore(q);
+        arrive(q, text, fresh);
       });
     } else {
-      restore();
-      arrive();
+      restore(q);
+      arrive(q, text, fresh);
     }
   }
 

@@ -41,91 +41,124 @@
     return read.ok ? read.progress : null;
   }
 
+  /* One list item made a card: its definition in a span that hides, and its controls
+   * (reveal, the two marks, what is kept). */
+  function makeCard(item, i, index) {
+    var paragraph = item.querySelector("p") || item;
+    var strong = paragraph.querySelector("strong");
+    var term = strong ? strong.textContent.replace(/:\s*$/, "").trim() : "Definition " + (i + 1);
+    var definition = document.createElement("span");
+    definition.className = "st-definition";
+    definition.id = "st-" + index + "-" + i;
+    var node = strong ? strong.nextSibling : paragraph.firstChild;
+    while (node) {
+      var next = node.nextSibling;
+      definition.appendChild(node);
+      node = next;
+    }
+    paragraph.appendChild(definition);
+    var controls = document.createElement("span");
+    controls.className = "st-controls";
+    controls.hidden = true;
+    controls.innerHTML =
+      '<span class="st-say">Say it, then </span>' +
+      '<button type="button" class="st-reveal" aria-expanded="false"></button>' +
+      '<span class="st-marking" hidden><button type="button" class="st-mark" data-mark="known" aria-pressed="false">' +
+      'I knew it</button><button type="button" class="st-mark" data-mark="not-yet" aria-pressed="false">' +
+      "Not yet</button></span>" +
+      '<span class="st-kept"></span>';
+    item.appendChild(controls);
+    var reveal = controls.querySelector(".st-reveal");
+    var named = /^Newton/.test(term) ? term : term.charAt(0).toLowerCase() + term.slice(1);
+    reveal.textContent = "Show the definition of " + named;
+    reveal.setAttribute("aria-controls", definition.id);
+    item.classList.add("st-card");
+    item.id = "st-card-" + slug(term);
+    return {
+      item: item,
+      key: slug(term),
+      term: term,
+      definition: definition,
+      controls: controls,
+      reveal: reveal,
+      marking: controls.querySelector(".st-marking"),
+      kept: controls.querySelector(".st-kept"),
+      buttons: controls.querySelectorAll(".st-mark"),
+    };
+  }
+
+  /* One box's test (test): its cards, its Test yourself toggle and its status line. */
+  function render(test) {
+    var marks = readCards(stored()),
+      known = 0;
+    test.cards.forEach(function (card) {
+      var mark = marks[card.key] && marks[card.key].mark;
+      if (mark === "known") known += 1;
+      card.item.setAttribute("data-mark", mark || "");
+      card.kept.textContent = MARKS[mark] ? " (" + MARKS[mark].toLowerCase() + ")" : "";
+      Array.prototype.forEach.call(card.buttons, function (b) {
+        b.setAttribute("aria-pressed", String(b.getAttribute("data-mark") === mark));
+      });
+    });
+    test.status.textContent = "Known: " + known + " of " + test.cards.length + " definitions.";
+  }
+
+  function show(card, shown) {
+    card.definition.hidden = !shown;
+    card.reveal.setAttribute("aria-expanded", String(shown));
+    card.reveal.hidden = shown;
+    card.controls.querySelector(".st-say").hidden = shown;
+    card.marking.hidden = !shown;
+  }
+
+  function toggleTesting(test) {
+    var toggle = test.toggle;
+    var testing = toggle.getAttribute("aria-pressed") !== "true";
+    toggle.setAttribute("aria-pressed", String(testing));
+    toggle.textContent = testing ? "Stop testing: show every definition" : "Test yourself: hide the definitions";
+    test.box.classList.toggle("st-testing", testing);
+    test.cards.forEach(function (card) {
+      card.controls.hidden = !testing;
+      show(card, !testing);
+      if (!testing) card.marking.hidden = true;
+    });
+    if (testing) test.cards[0].reveal.focus();
+  }
+
+  // A mark given to card i: kept, shown, announced, and the focus on to the next card.
+  function markCard(test, i, button) {
+    var card = test.cards[i];
+    var known = button.getAttribute("data-mark") === "known";
+    if (!stored()) {
+      test.status.textContent = "Your marks cannot be kept: the progress stored in this browser is in another format.";
+      return;
+    }
+    if (!Store.recordDefinition(card.key, known, Date.now())) {
+      test.status.textContent = "This browser does not let the page keep your marks (private mode?).";
+      return;
+    }
+    render(test);
+    card.item.dispatchEvent(new CustomEvent("st-marked", { bubbles: true, detail: { slug: card.key, known: known } }));
+    var next = test.cards[i + 1];
+    if (next && !next.controls.hidden) (next.reveal.hidden ? next.buttons[0] : next.reveal).focus();
+    else test.toggle.focus();
+  }
+
   function setUp(box, index) {
     var items = box.querySelectorAll(":scope > ul > li, :scope > ol > li");
     if (!items.length) return;
     var bar = box.querySelector(".st-bar"); // in the page (the build puts it there): no layout shift
-    var toggle = bar.querySelector(".st-toggle");
-    var status = bar.querySelector(".st-status");
-
-    var cards = Array.prototype.map.call(items, function (item, i) {
-      var paragraph = item.querySelector("p") || item;
-      var strong = paragraph.querySelector("strong");
-      var term = strong ? strong.textContent.replace(/:\s*$/, "").trim() : "Definition " + (i + 1);
-      var definition = document.createElement("span");
-      definition.className = "st-definition";
-      definition.id = "st-" + index + "-" + i;
-      var node = strong ? strong.nextSibling : paragraph.firstChild;
-      while (node) {
-        var next = node.nextSibling;
-        definition.appendChild(node);
-        node = next;
-      }
-      paragraph.appendChild(definition);
-      var controls = document.createElement("span");
-      controls.className = "st-controls";
-      controls.hidden = true;
-      controls.innerHTML =
-        '<span class="st-say">Say it, then </span>' +
-        '<button type="button" class="st-reveal" aria-expanded="false"></button>' +
-        '<span class="st-marking" hidden><button type="button" class="st-mark" data-mark="known" aria-pressed="false">' +
-        'I knew it</button><button type="button" class="st-mark" data-mark="not-yet" aria-pressed="false">' +
-        "Not yet</button></span>" +
-        '<span class="st-kept"></span>';
-      item.appendChild(controls);
-      var reveal = controls.querySelector(".st-reveal");
-      var named = /^Newton/.test(term) ? term : term.charAt(0).toLowerCase() + term.slice(1);
-      reveal.textContent = "Show the definition of " + named;
-      reveal.setAttribute("aria-controls", definition.id);
-      item.classList.add("st-card");
-      item.id = "st-card-" + slug(term);
-      return {
-        item: item,
-        key: slug(term),
-        term: term,
-        definition: definition,
-        controls: controls,
-        reveal: reveal,
-        marking: controls.querySelector(".st-marking"),
-        kept: controls.querySelector(".st-kept"),
-        buttons: controls.querySelectorAll(".st-mark"),
-      };
-    });
-
-    function render() {
-      var marks = readCards(stored()),
-        known = 0;
-      cards.forEach(function (card) {
-        var mark = marks[card.key] && marks[card.key].mark;
-        if (mark === "known") known += 1;
-        card.item.setAttribute("data-mark", mark || "");
-        card.kept.textContent = MARKS[mark] ? " (" + MARKS[mark].toLowerCase() + ")" : "";
-        Array.prototype.forEach.call(card.buttons, function (b) {
-          b.setAttribute("aria-pressed", String(b.getAttribute("data-mark") === mark));
-        });
-      });
-      status.textContent = "Known: " + known + " of " + cards.length + " definitions.";
-    }
-
-    function show(card, shown) {
-      card.definition.hidden = !shown;
-      card.reveal.setAttribute("aria-expanded", String(shown));
-      card.reveal.hidden = shown;
-      card.controls.querySelector(".st-say").hidden = shown;
-      card.marking.hidden = !shown;
-    }
-
-    toggle.addEventListener("click", function () {
-      var testing = toggle.getAttribute("aria-pressed") !== "true";
-      toggle.setAttribute("aria-pressed", String(testing));
-      toggle.textContent = testing ? "Stop testing: show every definition" : "Test yourself: hide the definitions";
-      box.classList.toggle("st-testing", testing);
-      cards.forEach(function (card) {
-        card.controls.hidden = !testing;
-        show(card, !testing);
-        if (!testing) card.marking.hidden = true;
-      });
-      if (testing) cards[0].reveal.focus();
+    var test = {
+      box: box,
+      toggle: bar.querySelector(".st-toggle"),
+      status: bar.querySelector(".st-status"),
+      cards: Array.prototype.map.call(items, function (item, i) {
+        return makeCard(item, i, index);
+      }),
+    };
+    var cards = test.cards;
+    test.toggle.addEventListener("click", function () {
+      toggleTesting(test);
     });
 
     cards.forEach(function (card, i) {
@@ -135,30 +168,15 @@
       });
       Array.prototype.forEach.call(card.buttons, function (button) {
         button.addEventListener("click", function () {
-          var known = button.getAttribute("data-mark") === "known";
-          if (!stored()) {
-            status.textContent = "Your marks cannot be kept: the progress stored in this browser is in another format.";
-            return;
-          }
-          if (!Store.recordDefinition(card.key, known, Date.now())) {
-            status.textContent = "This browser does not let the page keep your marks (private mode?).";
-            return;
-          }
-          render();
-          card.item.dispatchEvent(
-            new CustomEvent("st-marked", { bubbles: true, detail: { slug: card.key, known: known } }),
-          );
-          var next = cards[i + 1];
-          if (next && !next.controls.hidden) (next.reveal.hidden ? next.buttons[0] : next.reveal).focus();
-          else toggle.focus();
+          markCard(test, i, button);
         });
       });
     });
 
     window.addEventListener("storage", function (event) {
-      if (event.key === Store.STORE || event.key === Store.OLD_STORE || event.key === null) render();
+      if (event.key === Store.STORE || event.key === Store.OLD_STORE || event.key === null) render(test);
     });
-    render();
+    render(test);
 
     // One card asked for (?card=SLUG): the test opens, at that card.
     var asked = new URLSearchParams(location.search).get("card");
@@ -166,7 +184,7 @@
       return card.key === asked;
     })[0];
     if (one) {
-      toggle.click();
+      test.toggle.click();
       one.item.scrollIntoView({ block: "center" });
       one.reveal.focus({ preventScroll: true });
     }

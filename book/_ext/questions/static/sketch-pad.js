@@ -61,119 +61,144 @@
 
   var SHAPE_WORDS = { straight: "straight", steeper: "getting steeper", less: "getting less steep" };
 
-  function attach(box, options) {
-    var svg = box.querySelector("svg.q-sketch-axes");
-    var map = mapping(svg);
-    var unit = box.getAttribute("data-unit") || "";
-    var status = box.querySelector(".q-sketch-status");
-    var line = [],
-      history = [];
-    var drawn = document.createElementNS(SVG, "polyline");
-    drawn.setAttribute("class", "q-sketch-line");
-    drawn.setAttribute("fill", "none");
-    svg.appendChild(drawn);
+  /* One pad (pad state s): its axes (svg, map), the y unit, the status line that says what
+   * happened, the line drawn (points [t, y]), its history for Undo, and the polyline drawn. */
+  function say(s, text) {
+    if (s.status) s.status.textContent = text;
+  }
 
-    function say(text) {
-      if (status) status.textContent = text;
-    }
-    // a point as announced: a value within a thousandth of its axis of zero is zero
-    function where(point) {
-      var near = function (v, range) {
-        return Math.abs(v) < (range[1] - range[0]) / 1000 ? 0 : v;
-      };
-      return "t = " + fmt(near(point[0], map.t)) + " s, " + fmt(near(point[1], map.y)) + " " + unit;
-    }
-    function render() {
-      drawn.setAttribute(
-        "points",
-        line
-          .map(function (point) {
-            var p = map.toBox(point);
-            return Math.round(p[0] * 10) / 10 + "," + Math.round(p[1] * 10) / 10;
-          })
-          .join(" "),
-      );
-    }
-    function changed() {
-      render();
-      if (options && options.onChange) options.onChange(line.slice());
-    }
-    function remember() {
-      history.push(line.slice());
-    }
+  // a point as announced: a value within a thousandth of its axis of zero is zero
+  function where(s, point) {
+    var near = function (v, range) {
+      return Math.abs(v) < (range[1] - range[0]) / 1000 ? 0 : v;
+    };
+    return "t = " + fmt(near(point[0], s.map.t)) + " s, " + fmt(near(point[1], s.map.y)) + " " + s.unit;
+  }
 
-    var pad = {
+  function renderLine(s) {
+    s.drawn.setAttribute(
+      "points",
+      s.line
+        .map(function (point) {
+          var p = s.map.toBox(point);
+          return Math.round(p[0] * 10) / 10 + "," + Math.round(p[1] * 10) / 10;
+        })
+        .join(" "),
+    );
+  }
+
+  function lineChanged(s) {
+    renderLine(s);
+    if (s.options && s.options.onChange) s.options.onChange(s.line.slice());
+  }
+
+  function remember(s) {
+    s.history.push(s.line.slice());
+  }
+
+  // What the page asks of a pad: its line, set it, Undo and Clear.
+  function padApi(s) {
+    return {
       line: function () {
-        return line.slice();
+        return s.line.slice();
       },
       set: function (points) {
-        line = (points || []).map(function (p) {
+        s.line = (points || []).map(function (p) {
           return [Number(p[0]), Number(p[1])];
         });
-        history = [];
-        render();
+        s.history = [];
+        renderLine(s);
       },
       undo: function () {
-        if (!history.length) return say("Nothing to undo.");
-        line = history.pop();
-        changed();
-        say(line.length ? "Undone. The line now ends at " + where(line[line.length - 1]) + "." : "Undone: no line.");
+        if (!s.history.length) return say(s, "Nothing to undo.");
+        s.line = s.history.pop();
+        lineChanged(s);
+        say(
+          s,
+          s.line.length
+            ? "Undone. The line now ends at " + where(s, s.line[s.line.length - 1]) + "."
+            : "Undone: no line.",
+        );
       },
       clear: function () {
-        if (line.length) remember();
-        line = [];
-        changed();
-        say("Line cleared.");
+        if (s.line.length) remember(s);
+        s.line = [];
+        lineChanged(s);
+        say(s, "Line cleared.");
       },
     };
-    drawing(svg, map, {
+  }
+
+  // A stroke of the pointer: a new stroke redraws the line from where it starts, left to right.
+  function strokes(s) {
+    return {
       begin: function (point) {
-        remember();
-        // a new stroke redraws the line from where it starts
-        line = line.filter(function (p) {
+        remember(s);
+        s.line = s.line.filter(function (p) {
           return p[0] < point[0];
         });
-        line.push(point);
-        render();
+        s.line.push(point);
+        renderLine(s);
       },
       move: function (point) {
-        var last = line[line.length - 1];
+        var last = s.line[s.line.length - 1];
         if (point[0] >= last[0]) {
-          line.push(point);
-          render();
+          s.line.push(point);
+          renderLine(s);
         }
       },
       end: function () {
-        changed();
-        if (line.length) say("Line drawn from " + where(line[0]) + " to " + where(line[line.length - 1]) + ".");
+        lineChanged(s);
+        if (s.line.length)
+          say(s, "Line drawn from " + where(s, s.line[0]) + " to " + where(s, s.line[s.line.length - 1]) + ".");
       },
-    });
-    keyboard(box, map, {
+    };
+  }
+
+  function addSegment(s, kind, shape, until, to) {
+    if (!s.line.length) s.line = [[s.map.t[0], 0]];
+    var from = s.line[s.line.length - 1];
+    var problem = segmentProblem(kind, from, until, to, s.map);
+    if (problem) return say(s, problem);
+    remember(s);
+    var end = kind === "level" ? [until, from[1]] : kind.indexOf("step") === 0 ? [from[0], to] : [until, to];
+    s.line = s.line.concat(segment(from, end, kind === "level" || kind.indexOf("step") === 0 ? "straight" : shape));
+    lineChanged(s);
+    var words = kind.indexOf("step") === 0 ? kind.replace("-", " ") : kind;
+    if (kind === "rising" || kind === "falling") words += ", " + SHAPE_WORDS[shape];
+    say(s, "Added " + words + ", from " + where(s, from) + " to " + where(s, end) + ".");
+  }
+
+  function attach(box, options) {
+    var svg = box.querySelector("svg.q-sketch-axes");
+    var s = {
+      svg: svg,
+      map: mapping(svg),
+      unit: box.getAttribute("data-unit") || "",
+      status: box.querySelector(".q-sketch-status"),
+      options: options,
+      line: [],
+      history: [],
+      drawn: document.createElementNS(SVG, "polyline"),
+    };
+    s.drawn.setAttribute("class", "q-sketch-line");
+    s.drawn.setAttribute("fill", "none");
+    svg.appendChild(s.drawn);
+
+    var pad = padApi(s);
+    drawing(svg, s.map, strokes(s));
+    keyboard(box, s.map, {
       start: function (value) {
-        remember();
-        line = [[map.t[0], value]];
-        changed();
-        say("The line starts at " + where(line[0]) + ".");
+        remember(s);
+        s.line = [[s.map.t[0], value]];
+        lineChanged(s);
+        say(s, "The line starts at " + where(s, s.line[0]) + ".");
       },
       add: function (kind, shape, until, to) {
-        return addSegment(kind, shape, until, to);
+        return addSegment(s, kind, shape, until, to);
       },
     });
     buttons(box, pad);
-
-    function addSegment(kind, shape, until, to) {
-      if (!line.length) line = [[map.t[0], 0]];
-      var from = line[line.length - 1];
-      var problem = segmentProblem(kind, from, until, to, map);
-      if (problem) return say(problem);
-      remember();
-      var end = kind === "level" ? [until, from[1]] : kind.indexOf("step") === 0 ? [from[0], to] : [until, to];
-      line = line.concat(segment(from, end, kind === "level" || kind.indexOf("step") === 0 ? "straight" : shape));
-      changed();
-      var words = kind.indexOf("step") === 0 ? kind.replace("-", " ") : kind;
-      if (kind === "rising" || kind === "falling") words += ", " + SHAPE_WORDS[shape];
-      say("Added " + words + ", from " + where(from) + " to " + where(end) + ".");
-    }
     return pad;
   }
 

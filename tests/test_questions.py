@@ -273,14 +273,23 @@ def test_feedback_names_the_variants_own_numbers(question):
                 assert not re.search(rf"(?<![\d.]){re.escape(number)}(?![\d.])", text), (question.key, number, text)
 
 
-@pytest.mark.parametrize("key", ["quick-check-4", "practice-trolleys-stick"])
-def test_a_question_that_names_its_objects_by_mass_gives_them_different_masses(key):
+def test_a_question_that_names_its_objects_by_mass_gives_them_different_masses():
     """"The 2.0 kg trolley" must say which trolley: the generator never draws equal masses,
     and a build with them is refused (ValueError naming both)."""
-    template = bank.TEMPLATES[key]
+    template = bank.TEMPLATES["quick-check-4"]
     assert all(values["m1"] != values["m2"] for values in template.values)
     with pytest.raises(ValueError, match=r"m2 must .* \(got m1=2\.0, m2=2\.0"):
         template.build(m1=2.0, m2=2.0)
+
+
+def test_trolleys_of_equal_mass_are_named_first_and_second_not_by_their_mass():
+    """9702/12/M/J/14 Q7's two 5000 kg carriages: "the 5000 kg trolley" would not say which."""
+    question = bank.TEMPLATES["practice-trolleys-stick"].build(m1=5000.0, u1=2.0, m2=5000.0, speed2=1.0)
+    words = " ".join([question.text, *(mark.text for mark in question.mark_scheme),
+                      *(m.feedback for part in question.parts for m in part.mistakes)])
+    assert "the first trolley" in words and "5000 kg trolley's" not in words
+    assert "kg trolley's" in " ".join(mark.text for mark in bank.TEMPLATES["practice-trolleys-stick"]
+                                      .build(m1=2.0, u1=3.0, m2=1.0, speed2=1.5).mark_scheme)
 
 
 def test_the_key_prints_the_notes_values_in_the_mark_scheme():

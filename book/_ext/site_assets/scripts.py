@@ -44,7 +44,8 @@ def _bundled(js) -> bool:
 def bundle_page_scripts(app, context: dict[str, Any]) -> None:
     """Take the page's deferred scripts out of its script tags and name the bundle that holds
     them, then the theme's (context["site_js_bundle"], linked by layout.html)."""
-    scripts = context.get("script_files", [])
+    # in the order Sphinx writes the tags (by priority, then as added), which is the order they ran in
+    scripts = sorted(context.get("script_files", []), key=lambda js: js.priority)
     bundled = [js for js in scripts if _bundled(js)]
     names = [*dict.fromkeys(js.filename.split("?")[0] for js in bundled), THEME_SCRIPT]
     name = script_bundle_name(names)

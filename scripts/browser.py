@@ -218,6 +218,15 @@ def _landed(stub: str):
     return lambda url: url != stub and url.startswith("http")
 
 
+#: The page-weight budget (CLARIFICATIONS: House, and the standing "Page weight"): a first visit,
+#: counted as Chromium counts a cold load (bytes on the wire, headers included), transfers at most
+#: this share of the default Jupyter Book 1 page, in at most FIRST_VISIT_REQUESTS requests.
+FIRST_VISIT_SHARE = 0.10
+FIRST_VISIT_REQUESTS = 15
+#: Question data: a template's, inline and its variants' file together, gzip (issue 39).
+QUESTION_DATA_BYTES = 40_000
+
+
 @dataclass
 class PageLoad:
     """What loading one page cost and what went wrong while loading it."""

@@ -80,8 +80,7 @@ def _answer(page, key: str, values: list[float | None] | None = None):
             const ready = () => window.QuestionVariants && window.QuestionVariants[key];
             if (ready()) return done(ready()[index].parts);
             const s = document.createElement("script");
-            s.src = document.querySelector('script[src*="questions.js"]').src.replace(/questions\\.js.*/,
-                "questions/" + key + ".js");
+            s.src = (document.documentElement.dataset.content_root || "") + "_static/questions/" + key + ".js";
             s.onload = () => done(ready()[index].parts);
             document.head.appendChild(s);
         })""", [key, variant])

@@ -17,6 +17,7 @@ class PageReport:
 
     path: str
     total_bytes: int = 0
+    requests: int = 0  # on the first visit
     layout_shift: float = 0.0  # what Lighthouse calls CLS, while it loads: the worst of its loads
     layout_shift_load: str = ""  # which load shifted most ("first visit", "desktop", "mobile")
     foreign: list[str] = field(default_factory=list)
@@ -68,6 +69,7 @@ async def weigh(browser, base: str, pages: list[str], reports) -> None:
         await context.close()
         report = reports[path]
         report.total_bytes = load.total_bytes
+        report.requests = sum(not url.startswith("data:") for url in load.requests)  # on the wire
         report.shifted(shift, "first visit")
         report.failed += [f"first visit: {failure}" for failure in load.failed]
         report.console += [f"first visit: {message}" for message in load.console_errors]

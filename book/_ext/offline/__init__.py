@@ -46,12 +46,17 @@ BACKGROUND = colour("manifest.background")
 #: Downloads and fallbacks no page needs offline.
 # (and the theme's Font Awesome fonts, 300 kB: its stylesheet names them, but the site's own subset,
 # site_assets/icons.woff, declared after it, is the one every page loads)
-NOT_PRECACHED = re.compile(r"^pdf/|^teachers/|\.ttf$|\.map$|\.zip$|^_static/vendor/fontawesome/webfonts/")
+# (and _static/search-texts.js, 62 kB: the search's snippets for a copy opened from disk, where no
+# service worker runs; a page served over HTTP never asks for it)
+NOT_PRECACHED = re.compile(
+    r"^pdf/|^teachers/|\.ttf$|\.map$|\.zip$|^_static/vendor/fontawesome/webfonts/|^_static/search-texts\.js$")
 #: Loaded by script on demand: New numbers' variants and graphs, the search index.
 ON_DEMAND = ("_static/questions/", "searchindex.js")
 _REFERENCE = re.compile(r'(?:src|href)="([^"#?]+)')
 _CSS_URL = re.compile(r"""url\(\s*["']?([^"')#?]+)""")
-_NAMED = re.compile(r"""["']([\w@./-]+\.[a-z0-9]{2,5})["']""")
+# (not a require("./x.js"): the scripts that node's tests also load name each other so, and a
+# browser never runs it; each of them comes in the page's script bundle, site_assets/scripts.py)
+_NAMED = re.compile(r"""(?<!require\()["']([\w@./-]+\.[a-z0-9]{2,5})["']""")
 
 
 def _pages(site: Path) -> list[str]:

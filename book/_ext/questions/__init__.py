@@ -93,4 +93,4 @@ def setup(app):
     app.connect("html-page-context", form.add_assets)
     app.connect("build-finished", variants.write_variants)
     return {"version": __version__, "parallel_read_safe": True, "parallel_write_safe": True,
-            "env_version": 4}
+            "env_version": 5}  # 5: question figures written compact (svg_compact.py)

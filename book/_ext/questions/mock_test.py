@@ -23,6 +23,8 @@ from docutils import nodes
 from fresh_figures import uses_modules  # book/_ext: re-read the page when the bank changes
 from sphinx.util.docutils import SphinxDirective
 
+from physics_figures.parts import KINDS
+
 from . import form, store
 
 DIRECTIVE = "mock-test"
@@ -53,6 +55,13 @@ def mock_index(env, config) -> dict:
     """What the draw reads, from the templates the book's pages place (index_of)."""
     placed = {key for keys in store.templates_used(env).values() for key in keys}
     return index_of(store.topics(config), placed)
+
+
+def mock_asks(template) -> bool:
+    """A template a paper of the mock test can ask: its parts all of the kinds one paper asks
+    (static/mock-draw.js, asks). An explanation is self-marked: no paper asks it."""
+    papers = {KINDS[kind].mock_paper for kind in template.kinds}
+    return len(papers) == 1 and "" not in papers
 
 
 def index_of(topics, placed: set[str]) -> dict:

@@ -1,7 +1,8 @@
 """Each template's other site variants (Template.site_variants, never the teacher's reserve), for New numbers: a small script of data per template and
 an SVG per variant's graph, under the site's _static/questions/, written when the HTML
 build finishes. The script also holds the template's answer form as form.py writes it on a
-page (window.QuestionForms), for the mock test, whose page holds no form until it draws one.
+page (window.QuestionForms), for the mock test, whose page holds no form until it draws one:
+only a template the mock test can ask (mock_test.mock_asks) carries it.
 
 Working them out (every variant of every template) and drawing 60-odd graphs with
 matplotlib takes longer than the rest of a no-op rebuild, so the last build's inputs and
@@ -24,7 +25,7 @@ from types import SimpleNamespace
 from docutils import nodes
 from fresh_figures import modules_digest  # book/_ext: the files a module runs, by content
 
-from . import form, store
+from . import form, mock_test, store
 from .directive import (
     _template_data,
     cursor_text,
@@ -39,7 +40,7 @@ VARIANTS_DIR = "questions"  # under the site's _static/: one file of variants pe
 
 #: The code that writes the variants, and the one that draws a graph: an edit redoes them.
 WRITERS = (Path(__file__), Path(__file__).with_name("directive.py"), Path(__file__).with_name("form.py"))
-GRAPH_WRITER = WRITERS[1]  # directive.write_graph
+GRAPH_WRITERS = (WRITERS[1], Path(__file__).parents[1] / "svg_compact.py")  # write_graph, svg_file
 
 
 def record_path(outdir: Path) -> Path:
@@ -93,7 +94,7 @@ def write_variants(app, exception):
     if last.get("inputs") == inputs and _unchanged(folder, last.get("files", {})):
         return
     folder.mkdir(parents=True, exist_ok=True)
-    graph_code = _code(app, [store.GRAPH_MODULE, store.DIAGRAM_MODULE], [GRAPH_WRITER])
+    graph_code = _code(app, [store.GRAPH_MODULE, store.DIAGRAM_MODULE], list(GRAPH_WRITERS))
     graphs = last.get("graphs", {}) if last.get("graph_code") == graph_code else {}
     files, drawn_graphs = {}, {}
     for key in keys:
@@ -118,8 +119,9 @@ def write_variants(app, exception):
             variants.append(data)
         payload = json.dumps(variants, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
         script = f"(window.QuestionVariants = window.QuestionVariants || {{}})[{json.dumps(key)}] = {payload};\n"
-        answer_form = json.dumps(form_html(template), ensure_ascii=False).replace("</", "<\\/")
-        script += f"(window.QuestionForms = window.QuestionForms || {{}})[{json.dumps(key)}] = {answer_form};\n"
+        if mock_test.mock_asks(template):  # its form, for the mock test (no other page draws one)
+            answer_form = json.dumps(form_html(template), ensure_ascii=False).replace("</", "<\\/")
+            script += f"(window.QuestionForms = window.QuestionForms || {{}})[{json.dumps(key)}] = {answer_form};\n"
         files[f"{key}.js"] = _write(folder / f"{key}.js", script.encode())
     for name in set(last.get("files", {})) - set(files):  # a template no page places any more
         (folder / name).unlink(missing_ok=True)

@@ -10,9 +10,10 @@ What this extension does to the HTML build (the PDF build is untouched):
   Font Awesome font; a subset with only the glyphs the theme uses (a few kB) replaces
   the 150 kB font (``_static/site.css`` points at it), and the template ``layout.html``
   drops the script.
-- **One stylesheet, no blocking scripts.** Every screen stylesheet (the theme's and each
+- **One stylesheet, one script, none blocking.** Every screen stylesheet (the theme's and each
   extension's, root ``_static/*.css`` included) is joined into one bundle per set of
-  stylesheets; scripts are deferred. A phone on a slow network paints sooner.
+  stylesheets; every deferred script into one bundle per set of scripts, a kind of page's
+  (scripts.py). A phone on a slow network paints sooner.
 - **No dead weight or errors.** Thebe (live code via Binder: not used, and its script is
   added twice) is removed; the search index is loaded on the search page only; myst-nb's
   code toggles and the navigation's toggles get names that match what they show.
@@ -25,7 +26,7 @@ What this extension does to the HTML build (the PDF build is untouched):
 Needs ``node`` and ``npm ci`` (package.json at the repository root pins mathjax).
 
 One module per job: maths.py, icons.py, stylesheets.py (bundles, pruning, minified
-scripts), page_context.py (what each page gets); this one wires them to the build.
+scripts), scripts.py (a script bundle per kind of page), page_context.py (what each page gets); this one wires them to the build.
 """
 
 from __future__ import annotations
@@ -37,11 +38,13 @@ import shutil
 from pathlib import Path
 
 from sphinx.application import Sphinx
+from svg_compact import is_compact, svg_file  # book/_ext: a figure in fewer bytes
 
 from .icons import write_icon_font
 from .maths import TexToSvg, visit_displaymath, visit_math
 from .page_context import add_page_context, theme_digest
 from .paths import HERE
+from .scripts import page_scripts, write_script_bundles
 from .stylesheets import (
     bundle_registry,
     linked_bundles,
@@ -51,7 +54,7 @@ from .stylesheets import (
     write_bundle,
 )
 
-__all__ = ["bundle_registry", "unpruned_bundle"]  # the tests read the bundles through these
+__all__ = ["bundle_registry", "page_scripts", "unpruned_bundle"]  # the tests read the bundles through these
 
 
 def _config_inited(app: Sphinx, config) -> None:
@@ -64,6 +67,7 @@ def _config_inited(app: Sphinx, config) -> None:
     app._site_tex = TexToSvg(Path(app.confdir) / "node_modules" / "mathjax")
     app._site_theme_digest = theme_digest()
     app._site_bundles = {}
+    app._site_script_bundles = {}
 
 
 def static_digests(app: Sphinx) -> dict[str, str]:
@@ -125,11 +129,22 @@ def write_root_redirect(app: Sphinx) -> None:
     )
 
 
+def compact_images(outdir: Path) -> None:
+    """The pages' own figures (matplotlib's SVG, as myst-nb saved them) in fewer bytes, drawn the
+    same (svg_compact): a figure Sphinx copied this build is compacted, one compacted before is
+    left as it is (a no-op build keeps the site's bytes, and the service worker's hashes)."""
+    for image in sorted((outdir / "_images").glob("*.svg")):
+        text = image.read_text(encoding="utf-8")
+        if not is_compact(text):
+            image.write_text(svg_file(text), encoding="utf-8")
+
+
 def _build_finished(app: Sphinx, exception) -> None:
     app._site_tex.close()
     if exception is not None or app.builder.format != "html":
         return
     write_icon_font(app)
+    compact_images(Path(app.outdir))
     # Rewrite every bundle any page links (also those of pages not written this time:
     # a stylesheet may have changed), listed between builds beside the site (bundle_registry).
     outdir = Path(app.outdir)
@@ -150,9 +165,12 @@ def _build_finished(app: Sphinx, exception) -> None:
         unpruned = unpruned_bundle(outdir, name)
         unpruned.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(outdir / name, unpruned)
+    # the scripts minified, then joined into each page's one bundle (scripts.py), before the
+    # stylesheets are pruned to the rules the pages and their bundles use
+    minify_scripts(app, outdir)
+    write_script_bundles(outdir, app._site_script_bundles)
     if copied:
         prune_bundles(app, outdir, sorted(bundles))
-    minify_scripts(app, outdir)
     registry.write_text(json.dumps(bundles, indent=1, sort_keys=True))
     write_root_redirect(app)
     _static_record(app).write_text(json.dumps(static_digests(app), indent=1))

@@ -15,6 +15,7 @@ logger = logging.getLogger(__name__)
 
 from .icons import theme_dirs
 from .image_sizes import sized_images
+from .scripts import bundle_page_scripts
 from .stylesheets import THEME_CSS, bundle_name
 
 
@@ -102,6 +103,8 @@ def add_page_context(app: Sphinx, pagename: str, templatename: str, context: dic
     for js in context["script_files"]:
         if js.filename and "documentation_options" not in js.filename and "async" not in js.attributes:
             js.attributes.setdefault("defer", "defer")
+    # ... and come in one file: the page's kind's bundle (scripts.py)
+    bundle_page_scripts(app, context)
     context["site_theme_digest"] = app._site_theme_digest
     # myst-nb labels its "Show code cell source" toggles "Toggle hidden content": a name
     # that hides the visible text (axe: label-content-name-mismatch). The text is the name.

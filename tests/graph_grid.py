@@ -9,8 +9,22 @@ import re
 #: A path clipped to the plot area: the labelled grid lines (one path each) and the small
 #: squares' lines (one path of many pieces, physics_figures/figures/question_graph.py).
 _CLIPPED_PATH = re.compile(r'<path d="([^"]+)" clip-path=')
-#: One straight piece of such a path: a move, then a line to the next point.
-_PIECE = re.compile(r"M (-?[\d.]+) (-?[\d.]+)\s+L (-?[\d.]+) (-?[\d.]+)\s*(?=M|$)")
+#: A command of path data and its numbers, as matplotlib writes it ("M 52.16 200.36 L …") or
+#: as the site compacts it ("M52.16 200.36V10.32", book/_ext/svg_compact.py).
+_COMMAND = re.compile(r"([MLHV])\s*((?:-?[\d.]+(?:e-?\d+)?[\s,]*)*)")
+
+
+def _pieces(d: str):
+    """Each straight piece (x1, y1, x2, y2) of absolute path data made of moves and lines."""
+    x = y = None
+    for command, numbers in _COMMAND.findall(d):
+        values = [float(v) for v in re.findall(r"-?[\d.]+(?:e-?\d+)?", numbers)]
+        if command == "M":
+            x, y = values[-2:]
+            continue
+        end = {"L": tuple(values[-2:]), "H": (values[-1], y), "V": (x, values[-1])}[command]
+        yield x, y, *end
+        x, y = end
 
 
 def grid_lines(svg: str) -> tuple[float, float, list[float], list[float]]:
@@ -18,14 +32,28 @@ def grid_lines(svg: str) -> tuple[float, float, list[float], list[float]]:
     y of every horizontal one (top first), in the SVG's own units."""
     width, height = map(float, re.search(r'viewBox="([^"]+)"', svg)[1].split()[2:])
     across, up = set(), set()
-    pieces = (piece.groups() for path in _CLIPPED_PATH.finditer(svg) for piece in _PIECE.finditer(path[1]))
-    for x1, y1, x2, y2 in (map(float, piece) for piece in pieces):
+    for x1, y1, x2, y2 in (piece for path in _CLIPPED_PATH.finditer(svg) for piece in _pieces(path[1])):
         if x1 == x2 and y1 != y2:
             across.add(round(x1, 3))
         elif y1 == y2 and x1 != x2:
             up.add(round(y1, 3))
+    across, up = _one_each(across), _one_each(up)
     assert len(across) > 5 and len(up) > 5, "the SVG shows no grid of small squares"
-    return width, height, sorted(across), sorted(up)
+    return width, height, across, up
+
+
+#: Lines nearer than this (SVG units, a tenth of a pixel) are one line: the compacted SVG writes
+#: coordinates to 0.01, so a grid line and the spine over it may differ in the last place.
+SAME_LINE = 0.1
+
+
+def _one_each(lines: set[float]) -> list[float]:
+    """The lines, left to right (or top to bottom), each drawn line once."""
+    kept: list[float] = []
+    for line in sorted(lines):
+        if not kept or line - kept[-1] >= SAME_LINE:
+            kept.append(line)
+    return kept
 
 
 def grid_squares(svg: str) -> tuple[float, float, float, float]:

@@ -10,7 +10,9 @@ graphs apart.
 The bank grows (the sketch templates added 90 graphs), so the graphs' budget is per graph, and
 the rest of the file (the sheets' and keys' text) has a budget of its own. With the statements
 and the sketches (issue 38; 20 variants a sketch) the file weighs 4,109,916 bytes: 395 graphs
-take 1,725,144 (4,367 B each), the text 2,384,772."""
+take 1,725,144 (4,367 B each), the text 2,384,772. The two templates the real papers asked for
+(bounce-contact-force, stokes-drag-acceleration; 20 variants each) bring the text to 2,529,407:
+its budget is now 2.6 MB, so issue 39's 2.6 MB for the whole file is further away still."""
 
 from __future__ import annotations
 
@@ -21,7 +23,7 @@ import pytest
 pytestmark = [pytest.mark.site]
 
 GRAPH_BYTES_EACH = 5_000  # the graphs' inline SVG, on average (4,367 B measured)
-TEXT_BUDGET_BYTES = 2_400_000  # everything but the graphs (2,384,772 B measured)
+TEXT_BUDGET_BYTES = 2_600_000  # everything but the graphs (2,529,407 B measured)
 
 
 def test_the_sheet_builder_s_data_keeps_within_its_budget(site_dir):

@@ -270,9 +270,25 @@ def _plot_area(svg: str) -> tuple[float, float, float, float, float, float]:
         raise ValueError(f"svg must hold a viewBox and the plot area <g id={PLOT_AREA_ID!r}> "
                          "(plot_question_graph draws it)")
     width, height = (float(x) for x in view[1].split()[2:4])
-    numbers = [float(x) for x in re.findall(r"-?\d+(?:\.\d+)?", area[1])]
-    xs, ys = numbers[0::2], numbers[1::2]
+    xs, ys = zip(*_path_points(area[1]), strict=True)
     return min(xs), min(ys), max(xs), max(ys), width, height
+
+
+def _path_points(d: str) -> list[tuple[float, float]]:
+    """The points of absolute path data of moves and lines, as matplotlib writes it
+    ("M 52.16 200.36 L 293.38 200.36 …") or as the site compacts it ("M52.16 200.36H293.38V10.32z",
+    book/_ext/svg_compact.py)."""
+    points: list[tuple[float, float]] = []
+    for command, numbers in re.findall(r"([MLHVz])([^MLHVz]*)", d):
+        values = [float(x) for x in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", numbers)]
+        x, y = points[-1] if points else (0.0, 0.0)
+        if command in "ML":
+            points += list(zip(values[0::2], values[1::2], strict=True))
+        elif command == "H":
+            points += [(value, y) for value in values]
+        elif command == "V":
+            points += [(x, value) for value in values]
+    return points
 
 
 def small_square(svg: str, graph: Graph) -> tuple[float, float]:

@@ -76,6 +76,9 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
   {\end{minipage}\par}
 """
 
+#: A cover's marks table keeps its roomy rows up to this many questions.
+COVER_ROOMY_ROWS = 15
+
 
 #: Unicode subscript letters that FreeSerif lacks (vₜ in feedback), as \textsubscript.
 _SUBSCRIPTS = {chr(code): letter for code, letter in zip(range(0x2090, 0x209D), "aeoxəhklmnpst", strict=True)}
@@ -164,8 +167,11 @@ def _cover(sheet: Sheet, version: Version) -> str:
         r"{\sffamily\bfseries\Large Total: " + str(version.marks) + r" marks\par}",
         r"\vspace{12pt}",
     ]
+    # A worksheet of every template of a type runs to 17 questions: rows closer together keep
+    # its table (and the grid beside it) on the cover.
+    stretch = "1.5" if len(version.items) <= COVER_ROOMY_ROWS else "1.2"
     marks_table = [
-        r"\renewcommand{\arraystretch}{1.5}",
+        r"\renewcommand{\arraystretch}{" + stretch + "}",
         r"\begin{tabular}{|c|c|c|}\hline",
         r"\textbf{Question} & \textbf{Marks available} & \textbf{Marks awarded} \\ \hline",
         rows,

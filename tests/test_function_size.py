@@ -22,7 +22,6 @@ PYTHON_DIRS = ("physics_figures", "tests", "book/_ext", "book/_latex", "scripts"
 # Python functions over MAX_LINES, not split yet (issue 39, left open): path -> function names.
 # The bank's templates are long for their question text; other sessions were rewriting them.
 PYTHON_LEFT = {
-    "scripts/bench.py": {"main"},
 }
 
 

@@ -407,13 +407,82 @@ def machine() -> str:
     return f"{platform.platform()}, {os.cpu_count()} cores ({cpu}){memory}; Python {platform.python_version()}; {chromium}"
 
 
-def main() -> None:
+def parse_args() -> argparse.Namespace:
+    """The command line: skip Lighthouse, or time the builds only, and where the report goes."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--no-lighthouse", action="store_true", help="skip Lighthouse (faster)")
     parser.add_argument("--builds-only", action="store_true",
                         help="time the four builds and rewrite only BENCHMARKS.md's build times")
     parser.add_argument("--output", default=str(ROOT / "BENCHMARKS.md"))
-    args = parser.parse_args()
+    return parser.parse_args()
+
+
+def time_builds(project: Path, env: dict) -> tuple[dict, dict, str, str]:
+    """The four builds of the copy (cold, no-op, after a page's text edit, after a figure function's
+    edit): their seconds, the pages each executed, and what was edited."""
+    timings = {}
+    print(">>> cold build (empty cache)", flush=True)
+    timings["cold"], log = build(project, env=env)
+    cold_executed = executed_pages(log, project)
+    print(">>> no-op rebuild", flush=True)
+    timings["noop"], log = build(project, env=env)
+    noop_executed = executed_pages(log, project)
+    edited_page = edit_text_of_a_page(project)
+    print(f">>> rebuild after editing {edited_page}", flush=True)
+    timings["page"], log = build(project, env=env)
+    page_executed = executed_pages(log, project)
+    edited_function = edit_a_figure_function(project)
+    print(f">>> rebuild after editing {edited_function}", flush=True)
+    timings["figure"], log = build(project, env=env)
+    figure_executed = executed_pages(log, project)
+    print(">>> seconds: " + ", ".join(f"{k} {v:.1f}" for k, v in timings.items()), flush=True)
+    print(f">>> pages executed: cold {len(cold_executed)}, no-op {len(noop_executed)}, "
+          f"page edit {len(page_executed)}, figure-module edit {len(figure_executed)}: "
+          f"{', '.join(figure_executed) or 'none'}", flush=True)
+    executed = {"cold": cold_executed, "noop": noop_executed, "page": page_executed, "figure": figure_executed}
+    return timings, executed, edited_page, edited_function
+
+
+def write_build_times(output: Path, timings: dict, executed: dict, edited_page: str, edited_function: str) -> None:
+    """--builds-only: print the ratios to the cold build and rewrite only the report's build times."""
+    print(f">>> ratio to cold: no-op {timings['noop'] / timings['cold']:.3f}, "
+          f"page {timings['page'] / timings['cold']:.3f}, "
+          f"figure module {timings['figure'] / timings['cold']:.3f}", flush=True)
+    when = datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC")
+    section = render_builds(timings, executed, edited_page, edited_function)
+    section = section.replace("of a copy of the repository.",
+                              f"of a copy of the repository (`scripts/bench.py --builds-only`, {when}).", 1)
+    output.write_text(replace_section(output.read_text(), section, BUILDS_HEADING))
+
+
+def measure_site(site: Path, tmp: Path, lighthouse: bool) -> dict:
+    """The built site's measurements: page bytes beside a default Jupyter Book page, marking times in
+    Chromium, the class page's load, the offline sizes and (unless skipped) Lighthouse's scores."""
+    pages = site_pages(site)
+    print(">>> default Jupyter Book page", flush=True)
+    default_site = default_book(tmp / "default")
+    default = asyncio.run(page_bytes(default_site, ["intro.html"]))["intro.html"]
+    print(f">>> bytes of {len(pages)} pages", flush=True)
+    ours = asyncio.run(page_bytes(site, pages))
+    print(">>> marking time in Chromium", flush=True)
+    marking = asyncio.run(marking_time(site))
+    print(">>> text marking time in Chromium", flush=True)
+    text_marking = asyncio.run(text_marking_times(site))
+    print(">>> marking every question in Chromium", flush=True)
+    question_marking = asyncio.run(question_marking_times(site))
+    print(f">>> the class page loading {CLASS_FILES} progress files", flush=True)
+    class_load = asyncio.run(class_page_load_time(site))
+    offline = offline_sizes(site)
+    scores = {}
+    if lighthouse:
+        print(f">>> lighthouse on {len(pages)} pages (mobile)", flush=True)
+        scores = lighthouse_scores(site, pages)
+    return {"default": default, "ours": ours, "scores": scores, "marking": marking, "class_load": class_load,
+            "offline": offline, "text_marking": text_marking, "question_marking": question_marking}
+
+
+def main() -> None:
+    args = parse_args()
     node_module("axe-core")
 
     with tempfile.TemporaryDirectory(prefix="bench-") as tmp:
@@ -421,80 +490,20 @@ def main() -> None:
         project = copy_project(tmp / "book")
         # The copy's physics_figures is the one the build and the kernels import.
         env = {**ENV, "PYTHONPATH": str(project)}
-        timings = {}
-        print(">>> cold build (empty cache)", flush=True)
-        timings["cold"], log = build(project, env=env)
-        cold_executed = executed_pages(log, project)
-        print(">>> no-op rebuild", flush=True)
-        timings["noop"], log = build(project, env=env)
-        noop_executed = executed_pages(log, project)
-        edited_page = edit_text_of_a_page(project)
-        print(f">>> rebuild after editing {edited_page}", flush=True)
-        timings["page"], log = build(project, env=env)
-        page_executed = executed_pages(log, project)
-        edited_function = edit_a_figure_function(project)
-        print(f">>> rebuild after editing {edited_function}", flush=True)
-        timings["figure"], log = build(project, env=env)
-        figure_executed = executed_pages(log, project)
-        print(">>> seconds: " + ", ".join(f"{k} {v:.1f}" for k, v in timings.items()), flush=True)
-        print(f">>> pages executed: cold {len(cold_executed)}, no-op {len(noop_executed)}, "
-              f"page edit {len(page_executed)}, figure-module edit {len(figure_executed)}: "
-              f"{', '.join(figure_executed) or 'none'}", flush=True)
+        timings, executed, edited_page, edited_function = time_builds(project, env)
         if args.builds_only:
-            print(f">>> ratio to cold: no-op {timings['noop'] / timings['cold']:.3f}, "
-                  f"page {timings['page'] / timings['cold']:.3f}, "
-                  f"figure module {timings['figure'] / timings['cold']:.3f}", flush=True)
-            output = Path(args.output)
-            when = datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC")
-            section = render_builds(timings, {"cold": cold_executed, "noop": noop_executed,
-                                              "page": page_executed, "figure": figure_executed},
-                                    edited_page, edited_function)
-            section = section.replace("of a copy of the repository.",
-                                      f"of a copy of the repository (`scripts/bench.py --builds-only`, {when}).", 1)
-            output.write_text(replace_section(output.read_text(), section, BUILDS_HEADING))
+            write_build_times(Path(args.output), timings, executed, edited_page, edited_function)
             return
+        measured = measure_site(project / "_build" / "html", tmp, not args.no_lighthouse)
 
-        site = project / "_build" / "html"
-        pages = site_pages(site)
-        print(">>> default Jupyter Book page", flush=True)
-        default_site = default_book(tmp / "default")
-        default = asyncio.run(page_bytes(default_site, ["intro.html"]))["intro.html"]
-        print(f">>> bytes of {len(pages)} pages", flush=True)
-        ours = asyncio.run(page_bytes(site, pages))
-        print(">>> marking time in Chromium", flush=True)
-        marking = asyncio.run(marking_time(site))
-        print(">>> text marking time in Chromium", flush=True)
-        text_marking = asyncio.run(text_marking_times(site))
-        print(">>> marking every question in Chromium", flush=True)
-        question_marking = asyncio.run(question_marking_times(site))
-        print(f">>> the class page loading {CLASS_FILES} progress files", flush=True)
-        class_load = asyncio.run(class_page_load_time(site))
-        offline = offline_sizes(site)
-        scores = {}
-        if not args.no_lighthouse:
-            print(f">>> lighthouse on {len(pages)} pages (mobile)", flush=True)
-            scores = lighthouse_scores(site, pages)
-
-    report = render(
-        timings=timings,
-        executed={"cold": cold_executed, "noop": noop_executed, "page": page_executed, "figure": figure_executed},
-        edited_page=edited_page,
-        edited_function=edited_function,
-        default=default,
-        ours=ours,
-        scores=scores,
-        marking=marking,
-        class_load=class_load,
-        offline=offline,
-        text_marking=text_marking,
-        question_marking=question_marking,
-    )
+    report = render(timings=timings, executed=executed, edited_page=edited_page, edited_function=edited_function,
+                    **measured)
     output = Path(args.output)
     # the side-by-side `make test` times (scripts/bench_make_test.py) stay
     report = carry_over(output.read_text() if output.exists() else "", report)
     output.write_text(report)
     print(report)
-    broken = broken_budgets(default, ours, offline)
+    broken = broken_budgets(measured["default"], measured["ours"], measured["offline"])
     if broken:
         raise SystemExit("page-weight budgets broken:\n  " + "\n  ".join(broken))
 

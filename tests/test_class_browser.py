@@ -199,6 +199,23 @@ def test_thirty_files_load_and_every_total_matches_the_files_and_the_bad_ones_ar
     bad = _bad_files(exports, tmp_path)
     load_progress_files(page, [*exports[:15], *bad.values(), *exports[15:]])
 
+    _check_refused(page, bad)
+    expected = _expected(data, exports)
+    _check_class_table(page, expected, len(exports))
+    _check_common_mistakes(page, expected)
+    _check_question_shares(page, expected)
+
+    with page.expect_download() as download:
+        page.get_by_role("button", name="Download CSV").click()
+    raw = download.value.path().read_bytes()
+    assert raw.startswith(b"\xef\xbb\xbf")
+    _check_csv(list(csv.reader(io.StringIO(raw.decode("utf-8-sig"), newline=""))), data, expected)
+    assert not errors
+    context.close()
+
+
+def _check_refused(page, bad: dict) -> None:
+    """The status line counts the loaded and the refused files, and each bad file is refused with why."""
     assert page.locator(".cp-status").inner_text() == "Loaded 30 files; refused 3 (below, with why). The class: 30 students."
     refused = {li.get_attribute("data-file"): li.inner_text() for li in page.locator(".cp-refused li").all()}
     assert set(refused) == set(bad)
@@ -206,9 +223,11 @@ def test_thirty_files_load_and_every_total_matches_the_files_and_the_bad_ones_ar
     assert 'another book ("waves")' in refused["other-book.json"]
     assert "do not match their checksum: it was changed after it was exported" in refused["edited.json"]
 
-    expected = _expected(data, exports)
+
+def _check_class_table(page, expected: dict, students: int) -> None:
+    """Each student's row and the class's: every cell's marks and attempts as the files give them."""
     rows = page.locator(".cp-table tr[data-student]")
-    assert rows.count() == len(exports) + 1  # the students and the class
+    assert rows.count() == students + 1  # the students and the class
     shown = {}
     for row in rows.all():
         cells = {}
@@ -224,6 +243,9 @@ def test_thirty_files_load_and_every_total_matches_the_files_and_the_bad_ones_ar
     assert shown == expected["table"]
     assert any(cells["total"][0] < cells["total"][1] for cells in shown.values())  # not every answer right
 
+
+def _check_common_mistakes(page, expected: dict) -> None:
+    """The ten commonest mistakes, most made first, each with its count and the students who made it."""
     mistakes = page.locator(".cp-mistakes li")
     assert mistakes.count() == min(10, len(expected["mistakes"])) > 0
     counts = []
@@ -236,6 +258,9 @@ def test_thirty_files_load_and_every_total_matches_the_files_and_the_bad_ones_ar
     assert counts == sorted(counts, reverse=True)
     assert counts[-1] >= sorted((c for c, _ in expected["mistakes"].values()), reverse=True)[len(counts) - 1]
 
+
+def _check_question_shares(page, expected: dict) -> None:
+    """Each question's row: students who tried it, with full marks, attempts and the share of full marks."""
     questions = page.locator(".cp-questions tbody tr")
     assert questions.count() == len(expected["questions"])
     for tr in questions.all():
@@ -244,14 +269,6 @@ def test_thirty_files_load_and_every_total_matches_the_files_and_the_bad_ones_ar
         share = round(100 * entry["full"] / entry["attempts"])
         assert cells[1:] == [str(len(entry["students"])), str(len(entry["best"])), str(entry["attempts"]),
                              f"{share}% ({entry['full']} of {entry['attempts']})"]
-
-    with page.expect_download() as download:
-        page.get_by_role("button", name="Download CSV").click()
-    raw = download.value.path().read_bytes()
-    assert raw.startswith(b"\xef\xbb\xbf")
-    _check_csv(list(csv.reader(io.StringIO(raw.decode("utf-8-sig"), newline=""))), data, expected)
-    assert not errors
-    context.close()
 
 
 def _check_csv(lines: list[list[str]], data: dict, expected: dict) -> None:

@@ -505,12 +505,6 @@ def sphere_in_liquid(grams: float = 6.3, volume_cm3: float = 0.80, density: floa
     d = drag_at_terminal_velocity(w_, u)
     a = falling_acceleration(mass, d / 2, upthrust=u)
     gr, vol, rho = n(grams, 2), n(volume_cm3, 2), n(density, 3)
-    # the upthrust and the half drag with the figures the steps' results need (W is exact)
-    (u_b,) = enough_figures((u,), lambda u1: w_ - u1, n(d, 3))
-    (u_c, _) = enough_figures((u, d / 2), lambda u1, d1: (w_ - u1 - d1) / mass, n(a, 3))
-    u_b = u_c = max(u_b, u_c, key=len)  # one printing of U in both steps...
-    # ...and the half drag printed with the figures that this U needs (a longer U moves the result)
-    (half_d,) = enough_figures((d / 2,), lambda d1: (w_ - float(u_c) - d1) / mass, n(a, 3))
     return Question(
         key="sphere-in-liquid",
         text=(f"A metal sphere of mass {gr} g and volume {vol} cm<sup>3</sup> sinks through a liquid of "
@@ -571,18 +565,31 @@ def sphere_in_liquid(grams: float = 6.3, volume_cm3: float = 0.80, density: floa
                              "upwards: resultant = weight − upthrust − drag."),
                  ), see="skydiver"),
         ),
-        mark_scheme=(
-            Mark(f"U = ρgV = {rho} × {n(G_EARTH, 3)} × {vol} × 10<sup>−6</sup>", "C1", "a"),
-            Mark(f"= {n(u, 3)} N", "A1", "a"),
-            Mark(f"W = mg = {n(mass, 2)} × {n(G_EARTH, 3)} = {working(w_)} N", "C1", "b"),
-            Mark("At terminal velocity weight = drag + upthrust, so drag = W − U "
-                 f"= {working(w_)} − {u_b}", "C1", "b"),
-            Mark(f"= {n(d, 3)} N", "A1", "b"),
-            Mark(f"At half the speed the drag is half: {half_d} N", "C1", "c"),
-            Mark(f"a = (W − U − D) / m = ({working(w_)} − {u_c} − {half_d}) / {n(mass, 2)}",
-                 "C1", "c"),
-            Mark(f"= {n(a, 3)} {PER_S2} (downwards)", "A1", "c"),
-        ),
+        mark_scheme=_sphere_in_liquid_scheme(mass, w_, u, d, a, rho, vol),
+    )
+
+
+def _sphere_in_liquid_scheme(mass: float, w_: float, u: float, d: float, a: float, rho: str,
+                             vol: str) -> tuple[Mark, ...]:
+    """sphere_in_liquid's mark scheme: the upthrust, the terminal drag (W − U) and the acceleration at
+    half the speed, each step's numbers printed with the figures its result needs."""
+    # the upthrust and the half drag with the figures the steps' results need (W is exact)
+    (u_b,) = enough_figures((u,), lambda u1: w_ - u1, n(d, 3))
+    (u_c, _) = enough_figures((u, d / 2), lambda u1, d1: (w_ - u1 - d1) / mass, n(a, 3))
+    u_b = u_c = max(u_b, u_c, key=len)  # one printing of U in both steps...
+    # ...and the half drag printed with the figures that this U needs (a longer U moves the result)
+    (half_d,) = enough_figures((d / 2,), lambda d1: (w_ - float(u_c) - d1) / mass, n(a, 3))
+    return (
+        Mark(f"U = ρgV = {rho} × {n(G_EARTH, 3)} × {vol} × 10<sup>−6</sup>", "C1", "a"),
+        Mark(f"= {n(u, 3)} N", "A1", "a"),
+        Mark(f"W = mg = {n(mass, 2)} × {n(G_EARTH, 3)} = {working(w_)} N", "C1", "b"),
+        Mark("At terminal velocity weight = drag + upthrust, so drag = W − U "
+             f"= {working(w_)} − {u_b}", "C1", "b"),
+        Mark(f"= {n(d, 3)} N", "A1", "b"),
+        Mark(f"At half the speed the drag is half: {half_d} N", "C1", "c"),
+        Mark(f"a = (W − U − D) / m = ({working(w_)} − {u_c} − {half_d}) / {n(mass, 2)}",
+             "C1", "c"),
+        Mark(f"= {n(a, 3)} {PER_S2} (downwards)", "A1", "c"),
     )
 
 
@@ -984,19 +991,8 @@ def stokes_terminal_speed(grams: float = 0.11, radius_mm: float = 1.5, density: 
                          {"mass": mass, "g_earth": G_EARTH, "viscosity": viscosity, "radius": radius}),
                  revisit="At terminal speed the resultant force is zero: mg = 6πηrv + U, so "
                          "v = (mg − U) / (6πηr), with r in m.",
-                 mistakes=(
-                     Mistake("upthrust forgotten", power_law_terminal_velocity(mass, k, power=1),
-                             "You set the drag equal to the weight. In a liquid the upthrust helps to hold "
-                             "the ball up: weight = drag + upthrust."),
-                     Mistake("upthrust added to the weight", (w_ + u) / k,
-                             "The upthrust acts upwards, with the drag: weight = drag + upthrust, so subtract "
-                             "it from the weight."),
-                     Mistake("radius left in mm", (w_ - u) / stokes_constant(viscosity, radius_mm),
-                             f"You used the radius in mm in 6πηr. Convert it to m first: {r} mm = {r} × 10⁻³ m.",
-                             kind="slip"),
-                     Mistake("diameter used for the radius", (w_ - u) / stokes_constant(viscosity, 2 * radius),
-                             f"You used 2 × {r} mm, the diameter. Stokes' law uses the radius."),
-                 ), see="skydiver"),
+                 mistakes=_stokes_speed_mistakes(mass, k, w_, u, viscosity, radius_mm, r),
+                 see="skydiver"),
         ),
         mark_scheme=(
             Mark(f"U = ρgV with V = 4/3 πr<sup>3</sup>: U = {rho} × {n(G_EARTH, 3)} × 4/3 π × "
@@ -1009,6 +1005,26 @@ def stokes_terminal_speed(grams: float = 0.11, radius_mm: float = 1.5, density: 
         ),
     )
 
+
+
+def _stokes_speed_mistakes(mass: float, k: float, w_: float, u: float, viscosity: float, radius_mm: float,
+                           r: str) -> tuple[Mistake, ...]:
+    """stokes_terminal_speed's wrong terminal speeds: the upthrust left out or added, the radius in mm
+    or the diameter in 6πηr (k is 6πηr with the radius in m)."""
+    radius = radius_mm / 1000
+    return (
+        Mistake("upthrust forgotten", power_law_terminal_velocity(mass, k, power=1),
+                "You set the drag equal to the weight. In a liquid the upthrust helps to hold "
+                "the ball up: weight = drag + upthrust."),
+        Mistake("upthrust added to the weight", (w_ + u) / k,
+                "The upthrust acts upwards, with the drag: weight = drag + upthrust, so subtract "
+                "it from the weight."),
+        Mistake("radius left in mm", (w_ - u) / stokes_constant(viscosity, radius_mm),
+                f"You used the radius in mm in 6πηr. Convert it to m first: {r} mm = {r} × 10⁻³ m.",
+                kind="slip"),
+        Mistake("diameter used for the radius", (w_ - u) / stokes_constant(viscosity, 2 * radius),
+                f"You used 2 × {r} mm, the diameter. Stokes' law uses the radius."),
+    )
 
 #: The density of water, kg m^-3, as the papers give it (9702/22/M/J/11 Q2(a)(ii)).
 _WATER_DENSITY = 1000.0

@@ -946,14 +946,6 @@ def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 
     t_end = n(begins + lasts, decimals=1)
     # an axis of 10⁵ N s and more is labelled in its power of ten ("momentum / 10⁵ N s")
     power = axis_power(top, division)
-
-    def unscaled(value: float) -> tuple[Mistake, ...]:
-        if not power:
-            return ()
-        return (Mistake("the axis's number without its power of ten", value / 10.0**power,
-                        f"The axis is labelled momentum / {power_text(power)} N s: each number on it stands for "
-                        f"that many {power_text(power)} N s. Multiply your reading by {power_text(power)}."),)
-
     return Question(
         key="graph-lorry-speed-momentum-time",
         text=(f"A lorry of mass {m} kg {change} along a straight, level road. The graph shows how its "
@@ -962,26 +954,17 @@ def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 
         graph=graph,
         parts=(
             GraphPart("momentum of the lorry at time 0", before, "N s", "momentum", units=_N_S,
-                      tolerance=tolerance, see="momentum", mistakes=unscaled(before),
+                      tolerance=tolerance, see="momentum", mistakes=_unscaled_mistakes(before, power),
                       revisit=f"Read {start_words} against the momentum axis."),
             GraphPart(f"momentum of the lorry after {t_end} s", after, "N s", "momentum", units=_N_S,
-                      tolerance=tolerance, see="momentum", mistakes=unscaled(after),
+                      tolerance=tolerance, see="momentum", mistakes=_unscaled_mistakes(after, power),
                       revisit="Read the flat part of the line at the end against the momentum axis."),
             Part(f"speed of the lorry after {t_end} s", speed, "m s^-1", "speed", units=_M_S,
                  shown_sig_figs=2, ecf=Ecf(b_answer / mass_given, {"mass_given": mass}),
                  readings=(Reading("momentum after", after, tolerance),),
                  answer_from_readings=lambda read_after: velocity_from_momentum(read_after, mass),
                  revisit="Momentum = mass × velocity, so the speed is v = p / m.",
-                 mistakes=(
-                     Mistake("the momentum at the start", velocity_from_momentum(before, mass),
-                             f"That is the speed at the start. Read the momentum after {t_end} s, where the "
-                             "line is flat again."),
-                     Mistake("divided by the weight", after / weight(mass),
-                             f"You divided by the weight, mg. Momentum = mass × velocity: divide by the mass, "
-                             f"{m} kg.", see="weight"),
-                     Mistake("the change in momentum ÷ mass", gain,
-                             "That is the gain in speed, Δp / m. The speed is the whole momentum ÷ the mass."),
-                 ), see="momentum"),
+                 mistakes=_lorry_speed_mistakes(mass, before, after, t_end), see="momentum"),
             Part(f"{change_words} in the speed of the lorry", gain, "m s^-1", "speed", units=_M_S, shown_sig_figs=2,
                  ecf=Ecf(((a_answer - b_answer) if brakes else (b_answer - a_answer)) / mass_given,
                          {"mass_given": mass}),
@@ -989,16 +972,7 @@ def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 
                  answer_from_readings=lambda read_before, read_after: abs(velocity_from_momentum(
                      read_after - read_before, mass)),
                  revisit="The change in speed is the change in momentum ÷ the mass: Δv = Δp / m.",
-                 mistakes=(
-                     Mistake("the final speed, not the change", speed,
-                             "That is the speed at the end. Subtract the momentum at the start first: "
-                             "Δv = (p₂ − p₁) / m."),
-                     Mistake("the gradient: change in momentum ÷ time", abs(average_force(after - before, lasts)),
-                             "That is Δp / Δt, the gradient: the resultant force, in N. The change in speed is "
-                             "Δp / m.", see="momentum-time-graph"),
-                     Mistake("divided by the weight", abs(after - before) / weight(mass),
-                             f"You divided by the weight, mg. Δv = Δp / m, with the mass {m} kg.", see="weight"),
-                 ), see="momentum"),
+                 mistakes=_lorry_change_mistakes(mass, before, after, lasts), see="momentum"),
         ),
         mark_scheme=(
             Mark(f"{p1} N s", "B1", "a"),
@@ -1008,6 +982,47 @@ def lorry_speed_from_momentum_graph(mass: float = 4000.0, speed_before: float = 
             Mark(f"Δv = Δp / m = ({p1} − {p2}) / {m}" if brakes else f"Δv = Δp / m = ({p2} − {p1}) / {m}", "C1", "d"),
             Mark(f"= {n(gain, 2)} {PER_S}", "A1", "d"),
         ),
+    )
+
+
+def _unscaled_mistakes(value: float, power: int) -> tuple[Mistake, ...]:
+    """A reading off an axis labelled in a power of ten (momentum / 10ⁿ N s) taken without it; none
+    when the axis has no power."""
+    if not power:
+        return ()
+    return (Mistake("the axis's number without its power of ten", value / 10.0**power,
+                    f"The axis is labelled momentum / {power_text(power)} N s: each number on it stands for "
+                    f"that many {power_text(power)} N s. Multiply your reading by {power_text(power)}."),)
+
+
+def _lorry_speed_mistakes(mass: float, before: float, after: float, t_end: str) -> tuple[Mistake, ...]:
+    """lorry_speed_from_momentum_graph's wrong final speeds: the momentum at the start, the weight for
+    the mass, the change in momentum for the whole."""
+    gain = abs(velocity_from_momentum(after - before, mass))
+    return (
+        Mistake("the momentum at the start", velocity_from_momentum(before, mass),
+                f"That is the speed at the start. Read the momentum after {t_end} s, where the "
+                "line is flat again."),
+        Mistake("divided by the weight", after / weight(mass),
+                f"You divided by the weight, mg. Momentum = mass × velocity: divide by the mass, "
+                f"{n(mass, 2)} kg.", see="weight"),
+        Mistake("the change in momentum ÷ mass", gain,
+                "That is the gain in speed, Δp / m. The speed is the whole momentum ÷ the mass."),
+    )
+
+
+def _lorry_change_mistakes(mass: float, before: float, after: float, lasts: float) -> tuple[Mistake, ...]:
+    """lorry_speed_from_momentum_graph's wrong changes in speed: the final speed, the gradient (the
+    force), the weight for the mass."""
+    return (
+        Mistake("the final speed, not the change", velocity_from_momentum(after, mass),
+                "That is the speed at the end. Subtract the momentum at the start first: "
+                "Δv = (p₂ − p₁) / m."),
+        Mistake("the gradient: change in momentum ÷ time", abs(average_force(after - before, lasts)),
+                "That is Δp / Δt, the gradient: the resultant force, in N. The change in speed is "
+                "Δp / m.", see="momentum-time-graph"),
+        Mistake("divided by the weight", abs(after - before) / weight(mass),
+                f"You divided by the weight, mg. Δv = Δp / m, with the mass {n(mass, 2)} kg.", see="weight"),
     )
 
 

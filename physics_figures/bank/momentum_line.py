@@ -406,6 +406,80 @@ def collision_third_law(mass_a: float = 0.60, speed_a: float = 2.5, mass_b: floa
         givens.append(Given("speed of A after", after_a, "m s^-1", 2))
     third_law = ("By Newton's third law B pushes A and A pushes B with equal and opposite forces, for the same "
                  "time, so their changes in momentum are equal and opposite: Δp of B = −Δp of A.")
+    # (c) asks the force on B, or on A (force_on=1): the same size, opposite ways (third law)
+    body, _, way, _ = _force_bodies(on_a)
+    return Question(
+        key="collision-third-law",
+        diagram=diagrams.line(((f"{ma} kg", speed_a), (f"{mb} kg", u_b)), (("", after_a), ("", None))),
+        text=(f"Trolley A, of mass {ma} kg, moves at {ua} {PER_S} to the right along a straight, level track "
+              f"towards trolley B, of mass {mb} kg, which is {b_before}. The trolleys collide and are in contact "
+              f"for {t} s. After the collision A {a_after}.\n\n"
+              "(a) Calculate the change in momentum of B and give its direction.\n\n"
+              "(b) Calculate the speed of B just after the collision.\n\n"
+              f"(c) Calculate the average force on {body} during the collision and give its direction."),
+        givens=tuple(givens),
+        parts=(
+            Part("change in momentum of B", dp_b, "N s", "change in momentum", units=N_S, shown_sig_figs=2,
+                 direction="choice", choices=ways, answer_direction="to the right",
+                 direction_hint="A loses momentum to the right; B gains what A loses (Newton's third law).",
+                 revisit=third_law, mistakes=_momentum_change_mistakes(mass_a, speed_a, mass_b, after_a),
+                 see="third-law"),
+            Part("speed of B just after the collision", v_b, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
+                 ecf=Ecf(a_answer / mass_b_third - speed_b_third,
+                         {"mass_b_third": mass_b, "speed_b_third": speed_b}),
+                 revisit="B's change in momentum is m(v − u), with B's velocity before negative if it moved "
+                         "to the left: v = u + Δp / m.",
+                 mistakes=_speed_of_b_mistakes(mass_a, speed_a, mass_b, speed_b, after_a), see="conservation"),
+            Part(f"average force on {body}", force_b, "N", "force", shown_sig_figs=2,
+                 direction="choice", choices=ways, answer_direction=way,
+                 ecf=Ecf(a_answer / contact_third, {"contact_third": contact}),
+                 direction_hint=f"The force on {body} is in the direction of {body}'s change in momentum.",
+                 revisit="The force on one body is its own change in momentum ÷ the contact time.",
+                 mistakes=_third_law_force_mistakes(mass_a, speed_a, mass_b, speed_b, after_a, contact, on_a),
+                 see="second-law"),
+        ),
+        mark_scheme=_collision_third_law_scheme(mass_a, speed_a, mass_b, speed_b, after_a, contact, on_a),
+    )
+
+
+def _force_bodies(on_a: bool) -> tuple[str, str, str, str]:
+    """The body whose force (c) asks, the other body, and the ways of the force on each (right is
+    positive; A's change in momentum is to the left, B's to the right)."""
+    ways = ("to the right", "to the left")
+    body, other = ("A", "B") if on_a else ("B", "A")
+    way, other_way = (ways[1], ways[0]) if on_a else ways
+    return body, other, way, other_way
+
+
+def _momentum_change_mistakes(mass_a: float, speed_a: float, mass_b: float, after_a: float) -> tuple[Mistake, ...]:
+    """collision_third_law's wrong changes in B's momentum (a): B's mass with A's change in velocity,
+    the direction of A's change, and all of A's momentum when A moves on."""
+    dp_b = -change_in_momentum(mass_a, speed_a, after_a)
+    ma, ua, va = n(mass_a, 2), n(speed_a, 2), n(after_a, 2)
+    a_mistakes = [
+        Mistake("one body's mass used for both", momentum(mass_b, speed_a - after_a),
+                f"You multiplied B's mass by A's change in velocity. The changes in momentum are equal and "
+                f"opposite, so work out A's with A's mass: {ma} × ({va} − {ua})."),
+        Mistake("the same direction as A's change", dp_b,
+                "The size is right, but B's change in momentum is opposite to A's (Newton's third law): A "
+                "loses momentum to the right, so B gains momentum to the right.", direction="to the left",
+                see="third-law"),
+    ]
+    if after_a:
+        a_mistakes.append(
+            Mistake("as if A stopped", momentum(mass_a, speed_a),
+                    f"That is all of A's momentum, as if A stopped. A moves on at {va} m s⁻¹: B gains only "
+                    "what A loses.", see="conservation"))
+    return tuple(a_mistakes)
+
+
+def _speed_of_b_mistakes(mass_a: float, speed_a: float, mass_b: float, speed_b: float,
+                         after_a: float) -> tuple[Mistake, ...]:
+    """collision_third_law's wrong speeds of B after (b): A's change in velocity given to B, and when B
+    moved towards A, its speed added as a scalar or left out."""
+    u_b = -speed_b  # right is positive: B moves left, towards A
+    dp_b = -change_in_momentum(mass_a, speed_a, after_a)
+    ub, mb = n(speed_b, 2), n(mass_b, 2)
     # B's velocity change with "one body's mass used for both": A's change in velocity given to B
     same_velocity_change = u_b + (speed_a - after_a)
     b_mistakes = [
@@ -422,23 +496,18 @@ def collision_third_law(mass_a: float = 0.60, speed_a: float = 2.5, mass_b: floa
                     f"Δp / m = {w(velocity_from_momentum(dp_b, mass_b))} m s⁻¹ is B's change in velocity. Add it "
                     f"to B's velocity before, −{ub} m s⁻¹."),
         ]
-    a_mistakes = [
-        Mistake("one body's mass used for both", momentum(mass_b, speed_a - after_a),
-                f"You multiplied B's mass by A's change in velocity. The changes in momentum are equal and "
-                f"opposite, so work out A's with A's mass: {ma} × ({va} − {ua})."),
-        Mistake("the same direction as A's change", dp_b,
-                "The size is right, but B's change in momentum is opposite to A's (Newton's third law): A "
-                "loses momentum to the right, so B gains momentum to the right.", direction="to the left",
-                see="third-law"),
-    ]
-    if after_a:
-        a_mistakes.append(
-            Mistake("as if A stopped", momentum(mass_a, speed_a),
-                    f"That is all of A's momentum, as if A stopped. A moves on at {va} m s⁻¹: B gains only "
-                    "what A loses.", see="conservation"))
-    # (c) asks the force on B, or on A (force_on=1): the same size, opposite ways (third law)
-    body, other = ("A", "B") if on_a else ("B", "A")
-    way, other_way = (ways[1], ways[0]) if on_a else ways
+    return tuple(b_mistakes)
+
+
+def _third_law_force_mistakes(mass_a: float, speed_a: float, mass_b: float, speed_b: float, after_a: float,
+                              contact: float, on_a: bool) -> tuple[Mistake, ...]:
+    """collision_third_law's wrong forces (c): the acceleration, Δp times t, the other body's direction, and
+    when B moved before, B's final momentum ÷ time."""
+    u_b = -speed_b
+    dp_b = -change_in_momentum(mass_a, speed_a, after_a)
+    v_b = velocity_after_collision(mass_a, speed_a, mass_b, u_b, after_a)
+    force_b = average_force(dp_b, contact)
+    body, other, way, other_way = _force_bodies(on_a)
     f_mistakes = [
         Mistake("mass left out", (speed_a - after_a if on_a else v_b - u_b) / contact,
                 f"You divided {body}'s change in velocity by the time: that is its acceleration, in m s⁻². The "
@@ -455,45 +524,29 @@ def collision_third_law(mass_a: float = 0.60, speed_a: float = 2.5, mass_b: floa
             Mistake("B's final momentum ÷ time", average_force(momentum(mass_b, v_b), contact),
                     "You used B's momentum after the collision. The force comes from B's change in momentum: "
                     "it was moving before.", see="momentum"))
-    return Question(
-        key="collision-third-law",
-        diagram=diagrams.line(((f"{ma} kg", speed_a), (f"{mb} kg", u_b)), (("", after_a), ("", None))),
-        text=(f"Trolley A, of mass {ma} kg, moves at {ua} {PER_S} to the right along a straight, level track "
-              f"towards trolley B, of mass {mb} kg, which is {b_before}. The trolleys collide and are in contact "
-              f"for {t} s. After the collision A {a_after}.\n\n"
-              "(a) Calculate the change in momentum of B and give its direction.\n\n"
-              "(b) Calculate the speed of B just after the collision.\n\n"
-              f"(c) Calculate the average force on {body} during the collision and give its direction."),
-        givens=tuple(givens),
-        parts=(
-            Part("change in momentum of B", dp_b, "N s", "change in momentum", units=N_S, shown_sig_figs=2,
-                 direction="choice", choices=ways, answer_direction="to the right",
-                 direction_hint="A loses momentum to the right; B gains what A loses (Newton's third law).",
-                 revisit=third_law, mistakes=tuple(a_mistakes), see="third-law"),
-            Part("speed of B just after the collision", v_b, "m s^-1", "speed", units=M_S, shown_sig_figs=2,
-                 ecf=Ecf(a_answer / mass_b_third - speed_b_third,
-                         {"mass_b_third": mass_b, "speed_b_third": speed_b}),
-                 revisit="B's change in momentum is m(v − u), with B's velocity before negative if it moved "
-                         "to the left: v = u + Δp / m.",
-                 mistakes=tuple(b_mistakes), see="conservation"),
-            Part(f"average force on {body}", force_b, "N", "force", shown_sig_figs=2,
-                 direction="choice", choices=ways, answer_direction=way,
-                 ecf=Ecf(a_answer / contact_third, {"contact_third": contact}),
-                 direction_hint=f"The force on {body} is in the direction of {body}'s change in momentum.",
-                 revisit="The force on one body is its own change in momentum ÷ the contact time.",
-                 mistakes=tuple(f_mistakes), see="second-law"),
-        ),
-        mark_scheme=(
-            Mark(f"Δp of A = {ma} × ({va} − {ua}) = {w(dp_a)} N s", "C1", "a"),
-            Mark(f"Equal and opposite forces for the same time (Newton's third law): Δp of B = {n(dp_b, 2)} N s",
-                 "A1", "a"),
-            Mark("to the right (opposite to A's change)", "B1", "a", earns="direction"),
-            Mark(f"v = u + Δp / m = {'0' if not speed_b else '−' + ub} + {w(dp_b)} / {mb}", "C1", "b"),
-            Mark(f"= {n(v_b, 2)} {PER_S}", "A1", "b"),
-            Mark(f"F = Δp / Δt = {w(dp_b)} / {t}", "C1", "c"),
-            Mark(f"= {n(force_b, 2)} N", "A1", "c"),
-            Mark(f"{way} (the direction of {body}'s change in momentum)", "B1", "c", earns="direction"),
-        ),
+    return tuple(f_mistakes)
+
+
+def _collision_third_law_scheme(mass_a: float, speed_a: float, mass_b: float, speed_b: float, after_a: float,
+                                contact: float, on_a: bool) -> tuple[Mark, ...]:
+    """collision_third_law's mark scheme: A's Δp and the third law (a), v = u + Δp / m (b), F = Δp / Δt
+    and its direction (c)."""
+    dp_a = change_in_momentum(mass_a, speed_a, after_a)
+    dp_b = -dp_a
+    v_b = velocity_after_collision(mass_a, speed_a, mass_b, -speed_b, after_a)
+    force_b = average_force(dp_b, contact)
+    ma, ua, mb, ub, va, t = n(mass_a, 2), n(speed_a, 2), n(mass_b, 2), n(speed_b, 2), n(after_a, 2), n(contact, 2)
+    body, _, way, _ = _force_bodies(on_a)
+    return (
+        Mark(f"Δp of A = {ma} × ({va} − {ua}) = {w(dp_a)} N s", "C1", "a"),
+        Mark(f"Equal and opposite forces for the same time (Newton's third law): Δp of B = {n(dp_b, 2)} N s",
+             "A1", "a"),
+        Mark("to the right (opposite to A's change)", "B1", "a", earns="direction"),
+        Mark(f"v = u + Δp / m = {'0' if not speed_b else '−' + ub} + {w(dp_b)} / {mb}", "C1", "b"),
+        Mark(f"= {n(v_b, 2)} {PER_S}", "A1", "b"),
+        Mark(f"F = Δp / Δt = {w(dp_b)} / {t}", "C1", "c"),
+        Mark(f"= {n(force_b, 2)} N", "A1", "c"),
+        Mark(f"{way} (the direction of {body}'s change in momentum)", "B1", "c", earns="direction"),
     )
 
 

@@ -432,15 +432,8 @@ def puck_components(m1: float = 0.40, speed_before: float = 2.5, m2: float = 0.6
                          f"less than its momentum before, {n(p_before, 3)} N s (got angle={angle!r})")
     a_x, a_y = hit.known_vector
     b = hit.missing
-    swapped = missing_momentum(p_before, p_after, 90.0 - angle)
     ma, mb, u, v, theta = n(m1, 2), n(m2, 2), n(speed_before, 2), n(speed_after, 2), n(angle, 2)
     sym_a, sym_b, sym_p, sym_m2 = sympy.symbols("a b p_before m_b")
-    # B's components with the figures that the speed and the angle need, from (a) and (b) as printed
-    b_x_text = n(b.along, 3)
-    (a_x_carried,) = enough_figures((a_x,), lambda x: p_before - x, b_x_text)
-    b_x, b_y = enough_figures((b.along, b.across), lambda x, y: math.hypot(x, y), n(b.magnitude, 3))
-    b_x_t, b_y_t = enough_figures((b.along, b.across), lambda x, y: math.degrees(math.atan2(y, x)),
-                                  n(b.angle_deg, 3))
     return Question(
         key="puck-components",
         diagram=diagrams.glancing(m1, speed_before, speed_after, angle, m2),
@@ -480,23 +473,7 @@ def puck_components(m1: float = 0.40, speed_before: float = 2.5, m2: float = 0.6
                  revisit="Conserve each component: B's x-component = A's momentum before − A's x-component "
                          "after; B's y-component cancels A's. Combine them with Pythagoras, then divide by "
                          "B's mass.",
-                 mistakes=(
-                     Mistake("momentum added as scalars", velocity_after_collision(m1, speed_before, m2, 0.0,
-                                                                                      speed_after),
-                             "You subtracted the sizes of A's momenta as if A carried straight on. Momentum "
-                             "is a vector: conserve the x- and y-components separately.", see="conservation"),
-                     Mistake("sin and cos swapped", velocity_from_momentum(swapped.magnitude, m2),
-                             f"You swapped sin and cos. The angle is from the x-direction, so A's x-component "
-                             f"is p cos {theta}° and its y-component p sin {theta}°."),
-                     Mistake("y-component forgotten", velocity_from_momentum(b.along, m2),
-                             "That uses only B's x-component. B also has a y-component, equal and opposite to "
-                             "A's: combine them with Pythagoras."),
-                     Mistake("components added", velocity_from_momentum(b.along + b.across, m2),
-                             "You added B's two components. They are at right angles: p = √(x² + y²)."),
-                     Mistake("divided by A's mass", velocity_from_momentum(b.magnitude, m1),
-                             f"You divided B's momentum by A's mass. v = p / m with B's own mass, {mb} kg.",
-                             see="momentum"),
-                 ), see="two-d"),
+                 mistakes=_puck_b_speed_mistakes(m1, speed_before, m2, speed_after, angle), see="two-d"),
             Part("angle between B's velocity and the x-direction", b.angle_deg, "°", "angle", units="° (degrees)",
                  shown_sig_figs=3, direction="choice", choices=_SIDES, answer_direction=_SIDES[0],
                  ecf=Ecf(sympy.atan(sym_b / (sym_p - sym_a)) * 180 / sympy.pi, {"p_before": p_before}),
@@ -504,35 +481,90 @@ def puck_components(m1: float = 0.40, speed_before: float = 2.5, m2: float = 0.6
                                 "cancels A's: B moves to the other side.",
                  revisit="tan θ = (B's y-component) / (B's x-component), on the other side of the "
                          "x-direction from A.",
-                 mistakes=(
-                     Mistake("tan the wrong way up", 90.0 - b.angle_deg,
-                             "You measured the angle from the y-direction. tan θ = y-component / "
-                             "x-component gives it from the x-direction."),
-                     Mistake("same angle as A", angle,
-                             "B need not move at A's angle. Work out B's components and use tan θ = y / x."),
-                     Mistake("sin and cos swapped", swapped.angle_deg,
-                             "You swapped sin and cos in resolving A's momentum: its x-component is p cos θ, "
-                             "its y-component p sin θ."),
-                     Mistake("same side as A", b.angle_deg,
-                             "The y-momentum is zero before, so B's y-component is opposite to A's: B moves "
-                             "to the other side of the x-direction.", direction=_SIDES[1]),
-                 ), see="two-d"),
+                 mistakes=_puck_b_angle_mistakes(m1, speed_before, m2, speed_after, angle), see="two-d"),
         ),
-        mark_scheme=(
-            Mark(f"p<sub>A</sub> after = {ma} × {v} = {w(p_after)} N s; x-component = {w(p_after)} cos {theta}°",
-                 "C1", "a"),
-            Mark(f"= {n(a_x, 2)} N s", "A1", "a"),
-            Mark(f"y-component = {w(p_after)} sin {theta}°", "C1", "b"),
-            Mark(f"= {n(a_y, 2)} N s", "A1", "b"),
-            Mark(f"B, x: {ma} × {u} = {w(p_before)} = {a_x_carried} + p<sub>x</sub>, so p<sub>x</sub> = "
-                 f"{b_x_text} N s; y: p<sub>y</sub> = {n(b.across, 3)} N s, opposite to A's", "C1", "c"),
-            Mark(f"p<sub>B</sub> = √({b_x}<sup>2</sup> + {b_y}<sup>2</sup>) = {n(b.magnitude, 3)} N s", "C1", "c"),
-            Mark(f"v = {n(b.magnitude, 3)} / {mb} = {n(b.magnitude / m2, 2)} {PER_S}", "A1", "c"),
-            Mark(f"tan θ = {b_y_t} / {b_x_t}", "C1", "d"),
-            Mark(f"θ = {n(b.angle_deg, 3)}°", "A1", "d"),
-            Mark("on the other side of the x-direction from A (the y-components cancel)", "B1", "d",
-                 earns="direction"),
-        ),
+        mark_scheme=_puck_components_scheme(m1, speed_before, m2, speed_after, angle),
+    )
+
+
+def _puck_b_speed_mistakes(m1: float, speed_before: float, m2: float, speed_after: float,
+                           angle: float) -> tuple[Mistake, ...]:
+    """puck_components' wrong speeds of B (c): momentum as scalars, sin and cos swapped, a component
+    left out or the two added, A's mass for B's."""
+    p_before, p_after = momentum(m1, speed_before), momentum(m1, speed_after)
+    b = glancing_collision(p_before, p_after, angle, mass_moving=m1, mass_struck=m2).missing
+    swapped = missing_momentum(p_before, p_after, 90.0 - angle)
+    mb, theta = n(m2, 2), n(angle, 2)
+    return (
+        Mistake("momentum added as scalars", velocity_after_collision(m1, speed_before, m2, 0.0,
+                                                                         speed_after),
+                "You subtracted the sizes of A's momenta as if A carried straight on. Momentum "
+                "is a vector: conserve the x- and y-components separately.", see="conservation"),
+        Mistake("sin and cos swapped", velocity_from_momentum(swapped.magnitude, m2),
+                f"You swapped sin and cos. The angle is from the x-direction, so A's x-component "
+                f"is p cos {theta}° and its y-component p sin {theta}°."),
+        Mistake("y-component forgotten", velocity_from_momentum(b.along, m2),
+                "That uses only B's x-component. B also has a y-component, equal and opposite to "
+                "A's: combine them with Pythagoras."),
+        Mistake("components added", velocity_from_momentum(b.along + b.across, m2),
+                "You added B's two components. They are at right angles: p = √(x² + y²)."),
+        Mistake("divided by A's mass", velocity_from_momentum(b.magnitude, m1),
+                f"You divided B's momentum by A's mass. v = p / m with B's own mass, {mb} kg.",
+                see="momentum"),
+    )
+
+
+def _puck_b_angle_mistakes(m1: float, speed_before: float, m2: float, speed_after: float,
+                           angle: float) -> tuple[Mistake, ...]:
+    """puck_components' wrong angles of B (d): from the y-direction, A's angle, sin and cos swapped,
+    and A's side of the x-direction."""
+    p_before, p_after = momentum(m1, speed_before), momentum(m1, speed_after)
+    b = glancing_collision(p_before, p_after, angle, mass_moving=m1, mass_struck=m2).missing
+    swapped = missing_momentum(p_before, p_after, 90.0 - angle)
+    return (
+        Mistake("tan the wrong way up", 90.0 - b.angle_deg,
+                "You measured the angle from the y-direction. tan θ = y-component / "
+                "x-component gives it from the x-direction."),
+        Mistake("same angle as A", angle,
+                "B need not move at A's angle. Work out B's components and use tan θ = y / x."),
+        Mistake("sin and cos swapped", swapped.angle_deg,
+                "You swapped sin and cos in resolving A's momentum: its x-component is p cos θ, "
+                "its y-component p sin θ."),
+        Mistake("same side as A", b.angle_deg,
+                "The y-momentum is zero before, so B's y-component is opposite to A's: B moves "
+                "to the other side of the x-direction.", direction=_SIDES[1]),
+    )
+
+
+def _puck_components_scheme(m1: float, speed_before: float, m2: float, speed_after: float,
+                            angle: float) -> tuple[Mark, ...]:
+    """puck_components' mark scheme: each component of A's momentum after (a, b), then B's components,
+    Pythagoras and v = p / m (c), and tan θ with B's side (d)."""
+    p_before, p_after = momentum(m1, speed_before), momentum(m1, speed_after)
+    hit = glancing_collision(p_before, p_after, angle, mass_moving=m1, mass_struck=m2)
+    a_x, a_y = hit.known_vector
+    b = hit.missing
+    ma, mb, u, v, theta = n(m1, 2), n(m2, 2), n(speed_before, 2), n(speed_after, 2), n(angle, 2)
+    # B's components with the figures that the speed and the angle need, from (a) and (b) as printed
+    b_x_text = n(b.along, 3)
+    (a_x_carried,) = enough_figures((a_x,), lambda x: p_before - x, b_x_text)
+    b_x, b_y = enough_figures((b.along, b.across), lambda x, y: math.hypot(x, y), n(b.magnitude, 3))
+    b_x_t, b_y_t = enough_figures((b.along, b.across), lambda x, y: math.degrees(math.atan2(y, x)),
+                                  n(b.angle_deg, 3))
+    return (
+        Mark(f"p<sub>A</sub> after = {ma} × {v} = {w(p_after)} N s; x-component = {w(p_after)} cos {theta}°",
+             "C1", "a"),
+        Mark(f"= {n(a_x, 2)} N s", "A1", "a"),
+        Mark(f"y-component = {w(p_after)} sin {theta}°", "C1", "b"),
+        Mark(f"= {n(a_y, 2)} N s", "A1", "b"),
+        Mark(f"B, x: {ma} × {u} = {w(p_before)} = {a_x_carried} + p<sub>x</sub>, so p<sub>x</sub> = "
+             f"{b_x_text} N s; y: p<sub>y</sub> = {n(b.across, 3)} N s, opposite to A's", "C1", "c"),
+        Mark(f"p<sub>B</sub> = √({b_x}<sup>2</sup> + {b_y}<sup>2</sup>) = {n(b.magnitude, 3)} N s", "C1", "c"),
+        Mark(f"v = {n(b.magnitude, 3)} / {mb} = {n(b.magnitude / m2, 2)} {PER_S}", "A1", "c"),
+        Mark(f"tan θ = {b_y_t} / {b_x_t}", "C1", "d"),
+        Mark(f"θ = {n(b.angle_deg, 3)}°", "A1", "d"),
+        Mark("on the other side of the x-direction from A (the y-components cancel)", "B1", "d",
+             earns="direction"),
     )
 
 
@@ -558,21 +590,9 @@ def explosion_two_pieces(mass: float = 2.0, speed: float = 5.0, piece: float = 0
     first = "north" if north else "south"
     other = "south" if north else "north"
     answer = f"{other} of {'east' if east > 0 else 'west'}"
-    wrong_side = f"{first} of {'east' if east > 0 else 'west'}"
-    swapped = split_in_two(mass, speed, piece, piece_speed, 90.0 - angle)
     sym_a, sym_b, sym_m = sympy.symbols("a b m_rest")
     mm, uu, m1, v1, theta, rest = n(mass, 2), n(speed, 2), n(piece, 2), n(piece_speed, 2), n(angle, 2), n(split.mass, 2)
-    # the momentum printed with the figures its speed needs (19.45 / 3.5 = 5.6, where 19.4 gives 5.5)
-    (magnitude,) = enough_figures((split.magnitude,), lambda p: p / split.mass, n(split.speed, 2))
-    (east_c, across_c) = enough_figures((abs(east), across), lambda x, y: math.hypot(x, y), magnitude)
-    (east_d, across_d) = enough_figures((abs(east), across), lambda x, y: math.degrees(math.atan2(y, x)),
-                                        n(angle_other, 3))
     moving = f"moving horizontally due east at {uu} {PER_S}" if speed else "at rest"  # papers' fireworks start at rest
-    # at rest there is no momentum before, so routes that differ for a moving shell meet the key or
-    # each other: keep one of each (a moving shell's variants keep every mistake, as drawn)
-    def distinct(key: float, mistakes: tuple[Mistake, ...], *, signed: bool = False) -> tuple[Mistake, ...]:
-        return mistakes if speed else one_of_each(key, mistakes, signed=signed)
-
     return Question(
         key="explosion-two-pieces",
         diagram=diagrams.explosion_moving(mass, speed, piece, piece_speed, angle, north),
@@ -589,7 +609,7 @@ def explosion_two_pieces(mass: float = 2.0, speed: float = 5.0, piece: float = 0
                  direction="signed", positive="east",
                  revisit=f"Eastward momentum is conserved: {mm} × {uu} = (the piece's p cos {theta}°) + (the "
                          "other piece's eastward momentum).",
-                 mistakes=distinct(east, (
+                 mistakes=_distinct_at_rest(speed, east, (
                      Mistake("sin and cos swapped", p_before - p_piece * math.sin(math.radians(angle)),
                              f"You used sin. The angle {theta}° is measured from east, so the piece's eastward "
                              "component is p cos θ."),
@@ -601,7 +621,7 @@ def explosion_two_pieces(mass: float = 2.0, speed: float = 5.0, piece: float = 0
                  shown_sig_figs=2,
                  revisit="There is no north–south momentum before, so the other piece's north–south component "
                          f"cancels the piece's, p sin {theta}°.",
-                 mistakes=distinct(across, (
+                 mistakes=_distinct_at_rest(speed, across, (
                      Mistake("sin and cos swapped", p_piece * math.cos(math.radians(angle)),
                              f"You used cos. The angle {theta}° is measured from east, so the north–south "
                              "component is p sin θ."),
@@ -613,21 +633,7 @@ def explosion_two_pieces(mass: float = 2.0, speed: float = 5.0, piece: float = 0
                  ecf=Ecf(sympy.sqrt(sym_a**2 + sym_b**2) / sym_m, {"m_rest": split.mass}),
                  revisit=f"Combine the two components with Pythagoras, then divide by the other piece's mass, "
                          f"{mm} − {m1} = {rest} kg.",
-                 mistakes=distinct(split.speed, (
-                     Mistake("momentum added as scalars", abs(p_before - p_piece) / split.mass,
-                             "You subtracted the sizes of the momenta as if both moved along one line. "
-                             "Momentum is a vector: conserve the east and north components separately.",
-                             see="conservation"),
-                     Mistake("sin and cos swapped", swapped.speed,
-                             "You swapped sin and cos: the angle is from east, so the piece's eastward "
-                             "component is p cos θ and its north–south one p sin θ."),
-                     Mistake("north–south component forgotten", abs(east) / split.mass,
-                             "That uses only the eastward component. The other piece also has a north–south "
-                             "component: combine them with Pythagoras."),
-                     Mistake("divided by the shell's mass", split.magnitude / mass,
-                             f"You divided by the whole shell's mass. The other piece's mass is {mm} − {m1} = "
-                             f"{rest} kg.", see="momentum"),
-                 )), see="two-d"),
+                 mistakes=_other_piece_speed_mistakes(mass, speed, piece, piece_speed, angle), see="two-d"),
             Part("angle between the other piece's direction and the east–west line", angle_other, "°", "angle",
                  units="° (degrees)", shown_sig_figs=3, direction="choice", choices=_COMPASS,
                  answer_direction=answer,
@@ -636,32 +642,95 @@ def explosion_two_pieces(mass: float = 2.0, speed: float = 5.0, piece: float = 0
                                 f"eastward momentum in (a) says east or west.",
                  revisit="tan θ = (north–south momentum) / (east–west momentum); the north–south component "
                          "is opposite to the first piece's.",
-                 mistakes=distinct(angle_other, (
-                     Mistake("tan the wrong way up", 90.0 - angle_other,
-                             "You measured the angle from north–south. tan θ = (north–south momentum) / "
-                             "(east–west momentum) gives it from the east–west line."),
-                     Mistake("sin and cos swapped", math.degrees(math.atan2(abs(swapped.across), abs(swapped.along))),
-                             "You swapped sin and cos in resolving the piece's momentum: eastward p cos θ, "
-                             "north–south p sin θ."),
-                     Mistake("same angle as the first piece", angle,
-                             "The other piece need not move at the first piece's angle. Work out its "
-                             "components and use tan θ = (north–south) / (east–west)."),
-                     Mistake("same side as the first piece", angle_other,
-                             f"The north–south momentum is zero before, so the other piece moves {other}, "
-                             "opposite to the first piece.", direction=wrong_side),
-                 )), see="two-d"),
+                 mistakes=_other_piece_angle_mistakes(mass, speed, piece, piece_speed, angle, north),
+                 see="two-d"),
         ),
-        mark_scheme=(
-            Mark(f"East: {mm} × {uu} = {m1} × {v1} cos {theta}° + p<sub>E</sub>", "C1", "a"),
-            Mark(f"p<sub>E</sub> = {w(p_before)} − {w(p_piece)} cos {theta}° = {n(east, 2)} N s", "A1", "a"),
-            Mark(f"North–south: 0 = {w(p_piece)} sin {theta}° − p<sub>N</sub>", "C1", "b"),
-            Mark(f"p<sub>N</sub> = {n(across, 2)} N s", "A1", "b"),
-            Mark(f"p = √({east_c}<sup>2</sup> + {across_c}<sup>2</sup>) = {magnitude} N s", "C1", "c"),
-            Mark(f"v = {magnitude} / ({mm} − {m1}) = {n(split.speed, 2)} {PER_S}", "A1", "c"),
-            Mark(f"tan θ = {across_d} / {east_d}", "C1", "d"),
-            Mark(f"θ = {n(angle_other, 3)}°", "A1", "d"),
-            Mark(f"{answer} (the north–south momentum cancels the first piece's)", "B1", "d", earns="direction"),
-        ),
+        mark_scheme=_explosion_two_pieces_scheme(mass, speed, piece, piece_speed, angle, answer),
+    )
+
+
+def _distinct_at_rest(speed: float, key: float, mistakes: tuple[Mistake, ...], *,
+                      signed: bool = False) -> tuple[Mistake, ...]:
+    """A shell's mistakes, one of each value when it was at rest: with no momentum before, routes that
+    differ for a moving shell meet the key or each other (a moving shell keeps every mistake, as drawn)."""
+    return mistakes if speed else one_of_each(key, mistakes, signed=signed)
+
+
+def _other_piece_speed_mistakes(mass: float, speed: float, piece: float, piece_speed: float,
+                                angle: float) -> tuple[Mistake, ...]:
+    """explosion_two_pieces' wrong speeds of the other piece (c): momentum as scalars, sin and cos
+    swapped, the north-south component left out, the shell's mass for the piece's."""
+    split = split_in_two(mass, speed, piece, piece_speed, angle)
+    swapped = split_in_two(mass, speed, piece, piece_speed, 90.0 - angle)
+    p_before, p_piece = momentum(mass, speed), momentum(piece, piece_speed)
+    mm, m1, rest = n(mass, 2), n(piece, 2), n(split.mass, 2)
+    return _distinct_at_rest(speed, split.speed, (
+        Mistake("momentum added as scalars", abs(p_before - p_piece) / split.mass,
+                "You subtracted the sizes of the momenta as if both moved along one line. "
+                "Momentum is a vector: conserve the east and north components separately.",
+                see="conservation"),
+        Mistake("sin and cos swapped", swapped.speed,
+                "You swapped sin and cos: the angle is from east, so the piece's eastward "
+                "component is p cos θ and its north–south one p sin θ."),
+        Mistake("north–south component forgotten", abs(split.along) / split.mass,
+                "That uses only the eastward component. The other piece also has a north–south "
+                "component: combine them with Pythagoras."),
+        Mistake("divided by the shell's mass", split.magnitude / mass,
+                f"You divided by the whole shell's mass. The other piece's mass is {mm} − {m1} = "
+                f"{rest} kg.", see="momentum"),
+    ))
+
+
+def _other_piece_angle_mistakes(mass: float, speed: float, piece: float, piece_speed: float, angle: float,
+                                north: bool) -> tuple[Mistake, ...]:
+    """explosion_two_pieces' wrong angles of the other piece (d): from north-south, sin and cos swapped,
+    the first piece's angle, and the first piece's side."""
+    split = split_in_two(mass, speed, piece, piece_speed, angle)
+    swapped = split_in_two(mass, speed, piece, piece_speed, 90.0 - angle)
+    east = split.along
+    angle_other = math.degrees(math.atan2(abs(split.across), abs(east)))  # from the east-west line
+    first, other = ("north", "south") if north else ("south", "north")
+    wrong_side = f"{first} of {'east' if east > 0 else 'west'}"
+    return _distinct_at_rest(speed, angle_other, (
+        Mistake("tan the wrong way up", 90.0 - angle_other,
+                "You measured the angle from north–south. tan θ = (north–south momentum) / "
+                "(east–west momentum) gives it from the east–west line."),
+        Mistake("sin and cos swapped", math.degrees(math.atan2(abs(swapped.across), abs(swapped.along))),
+                "You swapped sin and cos in resolving the piece's momentum: eastward p cos θ, "
+                "north–south p sin θ."),
+        Mistake("same angle as the first piece", angle,
+                "The other piece need not move at the first piece's angle. Work out its "
+                "components and use tan θ = (north–south) / (east–west)."),
+        Mistake("same side as the first piece", angle_other,
+                f"The north–south momentum is zero before, so the other piece moves {other}, "
+                "opposite to the first piece.", direction=wrong_side),
+    ))
+
+
+def _explosion_two_pieces_scheme(mass: float, speed: float, piece: float, piece_speed: float, angle: float,
+                                 answer: str) -> tuple[Mark, ...]:
+    """explosion_two_pieces' mark scheme: each component conserved (a, b), Pythagoras and v = p / m (c),
+    tan θ and the direction (d), the momentum printed with the figures its results need."""
+    split = split_in_two(mass, speed, piece, piece_speed, angle)
+    p_before, p_piece = momentum(mass, speed), momentum(piece, piece_speed)
+    east, across = split.along, abs(split.across)
+    angle_other = math.degrees(math.atan2(across, abs(east)))
+    mm, uu, m1, v1, theta = n(mass, 2), n(speed, 2), n(piece, 2), n(piece_speed, 2), n(angle, 2)
+    # the momentum printed with the figures its speed needs (19.45 / 3.5 = 5.6, where 19.4 gives 5.5)
+    (magnitude,) = enough_figures((split.magnitude,), lambda p: p / split.mass, n(split.speed, 2))
+    (east_c, across_c) = enough_figures((abs(east), across), lambda x, y: math.hypot(x, y), magnitude)
+    (east_d, across_d) = enough_figures((abs(east), across), lambda x, y: math.degrees(math.atan2(y, x)),
+                                        n(angle_other, 3))
+    return (
+        Mark(f"East: {mm} × {uu} = {m1} × {v1} cos {theta}° + p<sub>E</sub>", "C1", "a"),
+        Mark(f"p<sub>E</sub> = {w(p_before)} − {w(p_piece)} cos {theta}° = {n(east, 2)} N s", "A1", "a"),
+        Mark(f"North–south: 0 = {w(p_piece)} sin {theta}° − p<sub>N</sub>", "C1", "b"),
+        Mark(f"p<sub>N</sub> = {n(across, 2)} N s", "A1", "b"),
+        Mark(f"p = √({east_c}<sup>2</sup> + {across_c}<sup>2</sup>) = {magnitude} N s", "C1", "c"),
+        Mark(f"v = {magnitude} / ({mm} − {m1}) = {n(split.speed, 2)} {PER_S}", "A1", "c"),
+        Mark(f"tan θ = {across_d} / {east_d}", "C1", "d"),
+        Mark(f"θ = {n(angle_other, 3)}°", "A1", "d"),
+        Mark(f"{answer} (the north–south momentum cancels the first piece's)", "B1", "d", earns="direction"),
     )
 
 

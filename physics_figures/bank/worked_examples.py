@@ -23,6 +23,7 @@ import sympy
 from .. import scenarios
 from ..constants import G_EARTH
 from ..models import (
+    GlancingCollision,
     acceleration,
     average_force,
     change_in_momentum,
@@ -295,9 +296,8 @@ def pucks_on_an_air_table() -> Question:
     key = "example-4-try"
     pucks = scenarios.EXAMPLE_4
     m_x, m_y, angle = pucks.mass_moving, pucks.mass_struck, pucks.angle_known_deg
-    u_x, v_x = pucks.speed_before, pucks.speed_known
+    v_x = pucks.speed_known
     y = pucks.missing
-    x_along, x_across = pucks.known_vector
     ke_x, ke_y = pucks.kinetic_energies_after
     mass_x, mass_y, speed_x = sympy.symbols("mass_x mass_y speed_x")
     angle_text = f"{n(angle, 2)}°"
@@ -311,32 +311,12 @@ def pucks_on_an_air_table() -> Question:
                  units=_N_S, shown_sig_figs=2,
                  revisit="Conserve momentum along the line: momentum before = X's component along "
                          f"the line after (p cos {angle_text}) + Y's.",
-                 mistakes=(
-                     Mistake("X's momentum after not resolved", pucks.p_before - pucks.p_known,
-                             f"You took all of X's momentum after as along the line. Only its "
-                             f"component counts: {n(m_x, 2)} × {n(v_x, 2)} cos {angle_text}."),
-                     Mistake("sine instead of cosine", pucks.p_before - pucks.p_known * math.sin(math.radians(angle)),
-                             f"The component along the line is p cos θ, not p sin θ, with θ = "
-                             f"{angle_text} measured from the line."),
-                     Mistake("masses left out", u_x - v_x * math.cos(math.radians(angle)),
-                             "You conserved velocities, not momenta. Multiply each speed by its "
-                             "puck's mass first.", see="conservation"),
-                 ), see="two-d"),
+                 mistakes=_pucks_along_mistakes(pucks), see="two-d"),
             Part("component of Y's momentum at right angles to X's original direction", y.across, "N s",
                  "momentum", units=_N_S, shown_sig_figs=3,
                  revisit="Across the line the momentum before is zero, so Y's component cancels X's: "
                          f"p sin {angle_text}.",
-                 mistakes=(
-                     Mistake("cosine instead of sine", x_along,
-                             f"That is X's component along the line. Across it is p sin θ, with θ = "
-                             f"{angle_text} measured from the line."),
-                     Mistake("X's momentum after not resolved", pucks.p_known,
-                             f"That is all of X's momentum after. Only its component across the line, "
-                             f"p sin {angle_text}, must be cancelled by Y's."),
-                     Mistake("masses left out", v_x * math.sin(math.radians(angle)),
-                             "That is a component of X's velocity. Multiply by X's mass to get "
-                             "momentum."),
-                 ), see="two-d"),
+                 mistakes=_pucks_across_mistakes(pucks), see="two-d"),
             Part("speed of Y", pucks.speed_missing, "m s^-1", "speed", units=_M_S, shown_sig_figs=3,
                  ecf=Ecf(sympy.sqrt(a_**2 + b_**2) / mass_y, {"mass_y": m_y}),
                  revisit="Combine the components with Pythagoras, p = √(along² + across²), then "
@@ -385,24 +365,73 @@ def pucks_on_an_air_table() -> Question:
                              "X's and Y's."),
                  ), see="kinetic-energy"),
         ),
-        mark_scheme=(
-            Mark(f"Along: {n(m_x, 2)} × {n(u_x, 2)} = {n(m_x, 2)} × {n(v_x, 2)} cos {angle_text} + "
-                 f"p<sub>along</sub>; across: 0 = {n(m_x, 2)} × {n(v_x, 2)} sin {angle_text} − "
-                 "p<sub>across</sub>", "C1", "ab"),
-            Mark(f"{n(pucks.p_before, 2)} = {n(x_along, 2)} + p<sub>along</sub>, so p<sub>along</sub> = "
-                 f"{n(y.along, 2)} N s", "A1", "a"),
-            Mark(f"p<sub>across</sub> = {n(x_across, 3)} N s, on the other side of the line from X", "A1", "b"),
-            Mark(f"p<sub>Y</sub> = √({n(y.along, 2)}² + {n(y.across, 3)}²) = {n(y.magnitude, 3)} N s, so "
-                 f"v<sub>Y</sub> = {n(y.magnitude, 3)} / {n(m_y, 2)} = {n(pucks.speed_missing, 3)} "
-                 "m s<sup>−1</sup>", "B1", "c"),
-            Mark(f"angle = tan<sup>−1</sup> ({n(y.across, 3)} / {n(y.along, 2)}) = {n(y.angle_deg, 3)}° to "
-                 "X's original direction", "B1", "d"),
-            Mark(f"Kinetic energy before = ½ × {n(m_x, 2)} × {n(u_x, 2)}² = "
-                 f"{n(pucks.kinetic_energy_before, 2)} J", "C1", "e"),
-            Mark(f"after = ½ × {n(m_x, 2)} × {n(v_x, 2)}² + ½ × {n(m_y, 2)} × {n(pucks.speed_missing, 4)}² "
-                 f"= {n(ke_x, 3)} + {n(ke_y, 3)} = {n(pucks.kinetic_energy_after, 2)} J: less than before, "
-                 "so it is inelastic", "A1", "e"),
-        ),
+        mark_scheme=_pucks_on_an_air_table_scheme(pucks),
+    )
+
+
+def _pucks_along_mistakes(pucks: GlancingCollision) -> tuple[Mistake, ...]:
+    """Example 4's wrong components of Y's momentum along the line (a): X's momentum after not
+    resolved, sine for cosine, velocities conserved for momenta."""
+    m_x, angle, u_x, v_x = pucks.mass_moving, pucks.angle_known_deg, pucks.speed_before, pucks.speed_known
+    angle_text = f"{n(angle, 2)}°"
+    return (
+        Mistake("X's momentum after not resolved", pucks.p_before - pucks.p_known,
+                f"You took all of X's momentum after as along the line. Only its "
+                f"component counts: {n(m_x, 2)} × {n(v_x, 2)} cos {angle_text}."),
+        Mistake("sine instead of cosine", pucks.p_before - pucks.p_known * math.sin(math.radians(angle)),
+                f"The component along the line is p cos θ, not p sin θ, with θ = "
+                f"{angle_text} measured from the line."),
+        Mistake("masses left out", u_x - v_x * math.cos(math.radians(angle)),
+                "You conserved velocities, not momenta. Multiply each speed by its "
+                "puck's mass first.", see="conservation"),
+    )
+
+
+def _pucks_across_mistakes(pucks: GlancingCollision) -> tuple[Mistake, ...]:
+    """Example 4's wrong components of Y's momentum across the line (b): cosine for sine, X's momentum
+    after not resolved, X's velocity for its momentum."""
+    angle, v_x = pucks.angle_known_deg, pucks.speed_known
+    x_along, _ = pucks.known_vector
+    angle_text = f"{n(angle, 2)}°"
+    return (
+        Mistake("cosine instead of sine", x_along,
+                f"That is X's component along the line. Across it is p sin θ, with θ = "
+                f"{angle_text} measured from the line."),
+        Mistake("X's momentum after not resolved", pucks.p_known,
+                f"That is all of X's momentum after. Only its component across the line, "
+                f"p sin {angle_text}, must be cancelled by Y's."),
+        Mistake("masses left out", v_x * math.sin(math.radians(angle)),
+                "That is a component of X's velocity. Multiply by X's mass to get "
+                "momentum."),
+    )
+
+
+def _pucks_on_an_air_table_scheme(pucks: GlancingCollision) -> tuple[Mark, ...]:
+    """Example 4's mark scheme: each component conserved (a, b), Y's speed and angle (c, d), and the
+    kinetic energy before and after (e)."""
+    m_x, m_y, angle = pucks.mass_moving, pucks.mass_struck, pucks.angle_known_deg
+    u_x, v_x = pucks.speed_before, pucks.speed_known
+    y = pucks.missing
+    x_along, x_across = pucks.known_vector
+    ke_x, ke_y = pucks.kinetic_energies_after
+    angle_text = f"{n(angle, 2)}°"
+    return (
+        Mark(f"Along: {n(m_x, 2)} × {n(u_x, 2)} = {n(m_x, 2)} × {n(v_x, 2)} cos {angle_text} + "
+             f"p<sub>along</sub>; across: 0 = {n(m_x, 2)} × {n(v_x, 2)} sin {angle_text} − "
+             "p<sub>across</sub>", "C1", "ab"),
+        Mark(f"{n(pucks.p_before, 2)} = {n(x_along, 2)} + p<sub>along</sub>, so p<sub>along</sub> = "
+             f"{n(y.along, 2)} N s", "A1", "a"),
+        Mark(f"p<sub>across</sub> = {n(x_across, 3)} N s, on the other side of the line from X", "A1", "b"),
+        Mark(f"p<sub>Y</sub> = √({n(y.along, 2)}² + {n(y.across, 3)}²) = {n(y.magnitude, 3)} N s, so "
+             f"v<sub>Y</sub> = {n(y.magnitude, 3)} / {n(m_y, 2)} = {n(pucks.speed_missing, 3)} "
+             "m s<sup>−1</sup>", "B1", "c"),
+        Mark(f"angle = tan<sup>−1</sup> ({n(y.across, 3)} / {n(y.along, 2)}) = {n(y.angle_deg, 3)}° to "
+             "X's original direction", "B1", "d"),
+        Mark(f"Kinetic energy before = ½ × {n(m_x, 2)} × {n(u_x, 2)}² = "
+             f"{n(pucks.kinetic_energy_before, 2)} J", "C1", "e"),
+        Mark(f"after = ½ × {n(m_x, 2)} × {n(v_x, 2)}² + ½ × {n(m_y, 2)} × {n(pucks.speed_missing, 4)}² "
+             f"= {n(ke_x, 3)} + {n(ke_y, 3)} = {n(pucks.kinetic_energy_after, 2)} J: less than before, "
+             "so it is inelastic", "A1", "e"),
     )
 
 

@@ -349,6 +349,16 @@
       }
     }
 
+    /* From disk (file://) Chromium at times gives two pages two apart localStorage areas (about
+     * 1 visit in 10 without --allow-file-access-from-files), so there the link carries the queue
+     * too, in ?review= (review.js reads it first). */
+    function carried(url, queue) {
+      if (location.protocol !== "file:") return url;
+      var to = new URL(url);
+      to.searchParams.set("review", JSON.stringify(queue));
+      return to.href;
+    }
+
     startButton.addEventListener("click", function () {
       if (!served || !served.cards.length) return;
       var cards = served.cards.map(function (c) {
@@ -361,7 +371,7 @@
         line(".pp-due-text", ["This browser does not let the page keep the queue (private mode?)."]);
         return;
       }
-      location.href = cards[0].url;
+      location.href = carried(cards[0].url, kept);
     });
 
     // A link to a type opens its details.

@@ -10,13 +10,32 @@
   var QUEUE = "dynamics-review-v1";
   var DEFINITION = "definition:";
 
+  /* The queue this page was sent with (from disk, the link carries it: progress-plan.js's
+   * carried), kept in this page's storage too; else the stored one. */
   function read() {
     try {
-      var queue = JSON.parse(localStorage.getItem(QUEUE));
+      var sent = new URLSearchParams(location.search).get("review");
+      var queue = JSON.parse(sent || localStorage.getItem(QUEUE));
+      if (sent) keep(queue);
       return queue && queue.version === 1 && Array.isArray(queue.cards) ? queue : null;
     } catch {
       return null;
     }
+  }
+
+  function keep(queue) {
+    try {
+      localStorage.setItem(QUEUE, JSON.stringify(queue));
+    } catch {
+      /* private mode: the links still carry it on */
+    }
+  }
+
+  function carried(url, queue) {
+    if (location.protocol !== "file:") return url;
+    var to = new URL(url, location.href);
+    to.searchParams.set("review", JSON.stringify(queue));
+    return to.href;
   }
 
   function start() {
@@ -43,15 +62,11 @@
       bar.textContent = which + " · ";
       var go = document.createElement("a");
       go.className = "rv-next";
-      go.href = last ? queue.home : queue.cards[queue.position + 1].url;
+      var next = Object.assign({}, queue, { position: queue.position + 1 }); // the last one done: used up
+      go.href = last ? queue.home : carried(queue.cards[next.position].url, next);
       go.textContent = last ? "Back to Your practice" : "Next card";
       go.addEventListener("click", function () {
-        queue.position += 1; // the last one done: the queue is used up
-        try {
-          localStorage.setItem(QUEUE, JSON.stringify(queue));
-        } catch {
-          /* private mode: the link still goes on */
-        }
+        keep(next);
       });
       bar.appendChild(go);
       place.insertAdjacentElement(definition ? "beforeend" : "afterend", bar);

@@ -9,6 +9,7 @@ offline; the zip holds every PDF and the Moodle file."""
 
 from __future__ import annotations
 
+import json
 import re
 import shutil
 import zipfile

@@ -8,12 +8,12 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from .. import textformat
-from .common import SCRIPTS, NoValue, _require, feedback_html, prompt_html
-from .text import TextPoint, point_needs
+from .common import SCRIPTS, _require, feedback_html, prompt_html
+from .text import TextPoint, WrittenInWords, point_needs
 
 
 @dataclass(frozen=True)
-class ExplainPart(NoValue):
+class ExplainPart(WrittenInWords):
     """A describe-and-explain part. The student writes an answer, then ticks the marking points
     of its mark-scheme lines that they made, and scores themselves against them. points: the rules
     of the text kind for its lines, in their order (optional): the marker finds the points the words
@@ -62,16 +62,6 @@ class ExplainPart(NoValue):
                 f'<div class="q-points" hidden><p>Tick each marking point your answer makes:</p>{points}'
                 f'<div class="q-model"><p><strong>A full answer:</strong></p>'
                 f'<div class="q-model-text">{part["model"]}</div></div></div>' + feedback_html(base))
-
-    def print_lines(self, label: str, marks: int, paper) -> list:
-        """Dotted lines to write on, the marks after the last."""
-        return [paper.line(f"{label}{self.prompt}")] + [
-            paper.line("." * 70 + (f" [{marks}]" if last else "")) for last in (False, False, False, True)]
-
-    def latex_sheet(self, question, index: int, marks: int, sheet) -> str:
-        tex = sheet.tex
-        return (f"\\par\\vspace{{4pt}}\\needspace{{4\\baselineskip}}{tex(question.label(index) + self.prompt)}"
-                f"\\writinglines{{{sheet.LINES_PER_MARK * marks}}}\\vspace{{2pt}}\\partmarks{{{marks}}}\\par")
 
     def latex_key(self, question, index: int, marks: int, sheet) -> list[str]:
         rich, tex = sheet.rich, sheet.tex

@@ -44,6 +44,21 @@ def print_wording(wording: str) -> str:
     return wording.replace("|", " / ").replace("_", " ")
 
 
+class WrittenInWords(NoValue):
+    """A part answered in words (a text part, an explain part): on the printed page, dotted lines
+    or a sheet's writing lines to write on, the marks after the last."""
+
+    def print_lines(self, label: str, marks: int, paper) -> list:
+        """Dotted lines to write on, the marks after the last."""
+        return [paper.line(f"{label}{self.prompt}")] + [
+            paper.line("." * 70 + (f" [{marks}]" if last else "")) for last in (False, False, False, True)]
+
+    def latex_sheet(self, question, index: int, marks: int, sheet) -> str:
+        tex = sheet.tex
+        return (f"\\par\\vspace{{4pt}}\\needspace{{4\\baselineskip}}{tex(question.label(index) + self.prompt)}"
+                f"\\writinglines{{{sheet.LINES_PER_MARK * marks}}}\\vspace{{2pt}}\\partmarks{{{marks}}}\\par")
+
+
 @dataclass(frozen=True)
 class Note:
     """A scheme's note on a wording it does not credit: the wording (the rule syntax), why, and
@@ -100,7 +115,7 @@ def point_needs(points: tuple[TextPoint, ...], index: int) -> int | None:
 
 
 @dataclass(frozen=True)
-class TextPart(NoValue):
+class TextPart(WrittenInWords):
     """A define or state part, marked from the typed words by its points' rules."""
 
     prompt: str
@@ -175,16 +190,6 @@ class TextPart(NoValue):
                 f'decide and your answer makes it):</p>{points}'
                 f'<div class="q-model"><p><strong>A full answer:</strong></p>'
                 f'<div class="q-model-text">{part["model"]}</div></div></div>' + feedback_html(base))
-
-    def print_lines(self, label: str, marks: int, paper) -> list:
-        """Dotted lines to write on, the marks after the last (as an explain part)."""
-        return [paper.line(f"{label}{self.prompt}")] + [
-            paper.line("." * 70 + (f" [{marks}]" if last else "")) for last in (False, False, False, True)]
-
-    def latex_sheet(self, question, index: int, marks: int, sheet) -> str:
-        tex = sheet.tex
-        return (f"\\par\\vspace{{4pt}}\\needspace{{4\\baselineskip}}{tex(question.label(index) + self.prompt)}"
-                f"\\writinglines{{{sheet.LINES_PER_MARK * marks}}}\\vspace{{2pt}}\\partmarks{{{marks}}}\\par")
 
     def latex_key(self, question, index: int, marks: int, sheet) -> list[str]:
         """The model answer, then per point what an examiner accepts, rejects (why, the paper) and ignores."""

@@ -2,20 +2,15 @@
 // site ships it, line [[t, y], ...] in the axes' units), JSON [{code, earned}] on stdout.
 // Used by tests/test_sketches.py.
 "use strict";
+const jsonFilter = require("./json_filter.js");
 const path = require("node:path");
 const sketch = require(
   path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "question-kinds", "sketch.js"),
 );
 
-let input = "";
-process.stdin.setEncoding("utf8");
-process.stdin.on("data", (chunk) => {
-  input += chunk;
-});
-process.stdin.on("end", () => {
-  const out = JSON.parse(input).map(({ part, line }) => {
+jsonFilter((input) =>
+  input.map(({ part, line }) => {
     const result = sketch.mark(part, { line: line });
     return { code: result.code, earned: result.earned || [] };
-  });
-  process.stdout.write(JSON.stringify(out));
-});
+  }),
+);

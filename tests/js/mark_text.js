@@ -2,22 +2,17 @@
 // stdin (part as the site ships it), JSON [result] on stdout, each with the time it took (ms).
 // Used by tests/test_text_marking.py.
 "use strict";
+const jsonFilter = require("./json_filter.js");
 const path = require("node:path");
 const text = require(
   path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "question-kinds", "text.js"),
 );
 
-let input = "";
-process.stdin.setEncoding("utf8");
-process.stdin.on("data", (chunk) => {
-  input += chunk;
-});
-process.stdin.on("end", () => {
-  const out = JSON.parse(input).map(({ part, answer }) => {
+jsonFilter((input) =>
+  input.map(({ part, answer }) => {
     const start = process.hrtime.bigint();
     const result = text.mark(part, answer);
     result.ms = Number(process.hrtime.bigint() - start) / 1e6;
     return result;
-  });
-  process.stdout.write(JSON.stringify(out));
-});
+  }),
+);

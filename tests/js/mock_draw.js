@@ -2,13 +2,11 @@
 // stdin: {index, cases: [{paper, size, seed}]}. Prints, per case, the test drawn (paper, size,
 // seed, minutes, questions) or the error's message, as JSON for tests/test_mock_draw.py.
 "use strict";
+const jsonFilter = require("./json_filter.js");
 const path = require("node:path");
 const Mock = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "mock-draw.js"));
 
-let input = "";
-process.stdin.on("data", (chunk) => (input += chunk));
-process.stdin.on("end", () => {
-  const request = JSON.parse(input);
+jsonFilter((request) => {
   const tests = request.cases.map((c) => {
     try {
       return Mock.draw(request.index, c.paper, c.size, c.seed);
@@ -19,5 +17,5 @@ process.stdin.on("end", () => {
   });
   const clock = (request.clock || []).map((ms) => Mock.clockText(ms));
   const warnings = (request.warnings || []).map((w) => Mock.warningDue(w.ms, w.given));
-  process.stdout.write(JSON.stringify({ tests, clock, warnings }));
+  return { tests, clock, warnings };
 });

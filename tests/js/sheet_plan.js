@@ -3,27 +3,22 @@
 // plan's template keys and variants per version, or the error's message, as JSON for
 // tests/test_sheet_builder.py to compare with the command line's.
 "use strict";
+const jsonFilter = require("./json_filter.js");
 const path = require("node:path");
 const S = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "sheet-builder.js"));
 
-let input = "";
-process.stdin.on("data", (chunk) => (input += chunk));
-process.stdin.on("end", () => {
-  const request = JSON.parse(input);
-  const out = {
-    plans: (request.cases || []).map((c) => {
-      try {
-        const sheet = S.plan(request.data, c);
-        return {
-          title: sheet.title,
-          versions: sheet.versions.map((v) => v.items.map((item) => [item.template.key, item.variant])),
-          repeats: S.readyMadeRepeats(sheet).map((r) => `Version ${r.letter}, question ${r.number}: as in ${r.where}`),
-        };
-      } catch (error) {
-        if (!(error instanceof S.SheetError)) throw error;
-        return { error: error.message };
-      }
-    }),
-  };
-  process.stdout.write(JSON.stringify(out));
-});
+jsonFilter((request) => ({
+  plans: (request.cases || []).map((c) => {
+    try {
+      const sheet = S.plan(request.data, c);
+      return {
+        title: sheet.title,
+        versions: sheet.versions.map((v) => v.items.map((item) => [item.template.key, item.variant])),
+        repeats: S.readyMadeRepeats(sheet).map((r) => `Version ${r.letter}, question ${r.number}: as in ${r.where}`),
+      };
+    } catch (error) {
+      if (!(error instanceof S.SheetError)) throw error;
+      return { error: error.message };
+    }
+  }),
+}));

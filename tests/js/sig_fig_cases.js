@@ -19,13 +19,6 @@ function markCases(rows) {
   return rows.map(markCase);
 }
 
-if (require.main === module) {
-  let input = "";
-  process.stdin.setEncoding("utf8");
-  process.stdin.on("data", (chunk) => {
-    input += chunk;
-  });
-  process.stdin.on("end", () => process.stdout.write(JSON.stringify(markCases(JSON.parse(input)))));
-}
+if (require.main === module) require("./json_filter.js")(markCases);
 
 module.exports = { markCases };

@@ -15,16 +15,21 @@ _COMMAND = re.compile(r"([MLHV])\s*((?:-?[\d.]+(?:e-?\d+)?[\s,]*)*)")
 
 
 def _pieces(d: str):
-    """Each straight piece (x1, y1, x2, y2) of absolute path data made of moves and lines."""
+    """Each grid line of absolute path data: a subpath of one move and one straight line, as
+    (x1, y1, x2, y2). A subpath of several lines is the plotted line, not the grid (its level
+    stretches would read as grid lines)."""
+    subpaths: list[list[tuple[float, float, float, float]]] = []
     x = y = None
     for command, numbers in _COMMAND.findall(d):
         values = [float(v) for v in re.findall(r"-?[\d.]+(?:e-?\d+)?", numbers)]
         if command == "M":
             x, y = values[-2:]
+            subpaths.append([])
             continue
         end = {"L": tuple(values[-2:]), "H": (values[-1], y), "V": (x, values[-1])}[command]
-        yield x, y, *end
+        subpaths[-1].append((x, y, *end))
         x, y = end
+    return [lines[0] for lines in subpaths if len(lines) == 1]
 
 
 def grid_lines(svg: str) -> tuple[float, float, list[float], list[float]]:

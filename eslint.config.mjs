@@ -10,7 +10,6 @@ const LEFT_TO_SPLIT = [
   "book/_ext/explorables/static/explorables/momentum-time-reader.js",
   "book/_ext/explorables/static/explorables/momentum-triangle.js",
   "book/_ext/explorables/static/explorables/skydiver.js",
-  "book/_ext/questions/static/answer-reading.js",
   "book/_ext/questions/static/class.js",
   "book/_ext/questions/static/mock-test.js",
   "book/_ext/questions/static/progress.js",

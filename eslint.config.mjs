@@ -7,7 +7,6 @@ import globals from "globals";
 const LEFT_TO_SPLIT = [
   "book/_ext/explorables/static/explorables/collision-lab.js",
   "book/_ext/explorables/static/explorables/models.js",
-  "book/_ext/explorables/static/explorables/momentum-triangle.js",
   "book/_ext/explorables/static/explorables/skydiver.js",
   "book/_ext/questions/static/class.js",
   "book/_ext/questions/static/mock-test.js",

@@ -65,40 +65,50 @@
     return whole.length < 5 ? whole : whole.replace(/\B(?=(\d{3})+(?!\d))/g, GROUP);
   }
 
+  function superscript(digits) {
+    return String(digits)
+      .split("")
+      .map(function (c) {
+        return SUPERSCRIPTS[c];
+      })
+      .join("");
+  }
+
+  /** Rounded digits (not zero) written out: in standard form when the first digit's place is
+   *  10⁵ or more or 10⁻⁴ or less, else as a plain number with its thousands grouped. */
+  function writeDigits(rounded) {
+    var digits = rounded.digits,
+      point = rounded.point;
+    if (point >= 6 || point <= -3) {
+      var mantissa = digits[0] + (digits.length > 1 ? "." + digits.slice(1) : "");
+      return mantissa + " " + TIMES + " 10" + superscript(point - 1);
+    }
+    if (point <= 0) return "0." + zeros(-point) + digits;
+    if (point >= digits.length) return group(digits + zeros(point - digits.length));
+    return group(digits.slice(0, point)) + "." + digits.slice(point);
+  }
+
+  function refuseFormatArguments(x, sigFigs, decimals) {
+    if ((sigFigs === undefined || sigFigs === null) === (decimals === undefined)) {
+      throw new Error("formatNumber: give exactly one of sigFigs and opts.decimals");
+    }
+    if (typeof x !== "number" || !isFinite(x)) throw new Error("formatNumber: x must be a finite number, got " + x);
+  }
+
   /** x to `sigFigs` significant figures, or to opts.decimals places; opts.plus writes "+" before
    *  a positive number. formatNumber(-30012, 2) -> "−30 000"; formatNumber(150000, 2) -> "1.5 × 10⁵". */
   function formatNumber(x, sigFigs, opts) {
     opts = opts || {};
     var decimals = opts.decimals;
-    if ((sigFigs === undefined || sigFigs === null) === (decimals === undefined)) {
-      throw new Error("formatNumber: give exactly one of sigFigs and opts.decimals");
-    }
-    if (typeof x !== "number" || !isFinite(x)) throw new Error("formatNumber: x must be a finite number, got " + x);
+    refuseFormatArguments(x, sigFigs, decimals);
     var d = decimalDigits(Math.abs(x));
     var rounded = d && roundDigits(d, decimals === undefined ? sigFigs : d.point + decimals);
-    var body;
     if (!rounded) {
       // an exact zero is 0 at any s.f.; a value rounded to zero keeps its places
       var places = decimals !== undefined ? decimals : d ? sigFigs - 1 : 0;
-      body = places > 0 ? "0." + zeros(places) : "0";
-    } else if (rounded.point >= 6 || rounded.point <= -3) {
-      var exponent = String(rounded.point - 1)
-        .split("")
-        .map(function (c) {
-          return SUPERSCRIPTS[c];
-        })
-        .join("");
-      var mantissa = rounded.digits[0] + (rounded.digits.length > 1 ? "." + rounded.digits.slice(1) : "");
-      body = mantissa + " " + TIMES + " 10" + exponent;
-    } else if (rounded.point <= 0) {
-      body = "0." + zeros(-rounded.point) + rounded.digits;
-    } else if (rounded.point >= rounded.digits.length) {
-      body = group(rounded.digits + zeros(rounded.point - rounded.digits.length));
-    } else {
-      body = group(rounded.digits.slice(0, rounded.point)) + "." + rounded.digits.slice(rounded.point);
+      return places > 0 ? "0." + zeros(places) : "0";
     }
-    if (!rounded) return body;
-    return (x < 0 ? MINUS : opts.plus ? "+" : "") + body;
+    return (x < 0 ? MINUS : opts.plus ? "+" : "") + writeDigits(rounded);
   }
 
   /* A number is joined to its unit, and a unit's symbols to each other, by a no-break space
@@ -109,12 +119,7 @@
   /** A unit as text, symbols joined and powers raised: unitText("m s^-1") -> "m\u00a0s⁻¹". */
   function unitText(unit) {
     var raised = String(unit).replace(/\^(-?\d+)/g, function (m, power) {
-      return power
-        .split("")
-        .map(function (c) {
-          return SUPERSCRIPTS[c];
-        })
-        .join("");
+      return superscript(power);
     });
     return raised.split(/\s+/).filter(Boolean).join(UNIT_SPACE);
   }

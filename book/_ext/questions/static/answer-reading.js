@@ -49,11 +49,8 @@
     return { ok: false, message: message };
   }
 
-  /* Read a number as a student writes it. Significant figures are counted as
-   * written: a whole number's trailing zeros are ambiguous (1500 has 2 to 4). */
-  function parseNumber(text) {
-    var t = normalise(text).replace(/^([+-])\s+(?=[\d.])/, "$1"); // "- 1.0" is -1.0
-    if (t === "") return refuse("Type a number, for example 7.5, -0.25 or 1.5e3.");
+  /* What a typed number's form refuses before it is read: commas, and "10-3" for a power of ten. */
+  function refuseForm(t) {
     if (t.indexOf(",") >= 0) {
       if (/^[+-]?\d{1,3}(,\d{3})+(\.\d*)?$/.test(t)) {
         return refuse(
@@ -65,37 +62,43 @@
     if (/(^|[x×X*·\s])10\s*-\s*\d+$/.test(t)) {
       return refuse('"' + t + '" reads as ten minus a number. Write a power of ten as 10^-3, or use e: 1.5e-3.');
     }
-    var mantissa,
-      sign,
-      exponent,
-      m = NUMBER.exec(t);
+    return null;
+  }
+
+  /* Sign, mantissa and power of ten of a typed number, or null: "1.5e3", "1.5 × 10^3", "1.5 x 10"
+   * (10 to the first) and "10^-3" (the mantissa 1) are read. */
+  function numberParts(t) {
+    var m = NUMBER.exec(t);
     if (m) {
-      sign = m[1];
-      mantissa = m[2];
-      exponent =
-        m[3] !== undefined
-          ? +m[3]
-          : m[4] !== undefined
-            ? +m[4]
-            : m[5] !== undefined
-              ? +m[5]
-              : /[x×X*·]/.test(t.slice(m[1].length + m[2].length))
-                ? 1
-                : 0;
-    } else if ((m = POWER_ONLY.exec(t))) {
-      sign = m[1];
-      mantissa = "1";
-      exponent = +m[2];
-    } else {
+      // e3, 10^(3) or 10^3; a bare "× 10" is 10 to the first
+      var written = m[3] !== undefined ? m[3] : m[4] !== undefined ? m[4] : m[5];
+      if (written === undefined) written = /[x×X*·]/.test(t.slice(m[1].length + m[2].length)) ? 1 : 0;
+      return { sign: m[1], mantissa: m[2], exponent: +written };
+    }
+    m = POWER_ONLY.exec(t);
+    return m ? { sign: m[1], mantissa: "1", exponent: +m[2] } : null;
+  }
+
+  /* Read a number as a student writes it. Significant figures are counted as
+   * written: a whole number's trailing zeros are ambiguous (1500 has 2 to 4). */
+  function parseNumber(text) {
+    var t = normalise(text).replace(/^([+-])\s+(?=[\d.])/, "$1"); // "- 1.0" is -1.0
+    if (t === "") return refuse("Type a number, for example 7.5, -0.25 or 1.5e3.");
+    var refused = refuseForm(t);
+    if (refused) return refused;
+    var parts = numberParts(t);
+    if (!parts) {
       return refuse(
         "I can't read \"" + String(text).trim() + '" as a number. Write it like 7.5, -0.25, 1.5e3 or 1.5 × 10^3.',
       );
     }
+    var mantissa = parts.mantissa,
+      exponent = parts.exponent;
     var point = mantissa.indexOf(".");
     var whole = point < 0 ? mantissa : mantissa.slice(0, point);
     var fraction = point < 0 ? "" : mantissa.slice(point + 1);
     var digits = (whole + fraction).replace(/^0+/, "");
-    var value = parseFloat(sign + mantissa + "e" + exponent);
+    var value = parseFloat(parts.sign + mantissa + "e" + exponent);
     var sfMax, sfMin, lead;
     if (digits === "") {
       // zero: only the decimal places written say anything
@@ -247,6 +250,50 @@
 
   var FACTOR = /^([A-Za-zµμ°%]+)(?:\^\(?\s*([+-]?\d+)\s*\)?|([+-]?\d+))?/;
 
+  /* The readings of one symbol run with its power ("kms^-1" may be km s⁻¹ or k m s⁻¹), as
+   * {options, used}: used is how many characters it took. Null if it reads as no unit. */
+  function symbolsFactor(rest) {
+    var m = FACTOR.exec(rest);
+    if (!m) return null;
+    var exponent = m[2] !== undefined ? +m[2] : m[3] !== undefined ? +m[3] : 1;
+    var options = segmentations(m[1]).map(function (symbols) {
+      var last = symbols.length - 1;
+      return {
+        unit: symbols.reduce(
+          function (acc, u, i) {
+            return times(acc, i === last ? power(u, exponent) : u);
+          },
+          [1, [0, 0, 0, 0]],
+        ),
+        symbols: symbols.length,
+      };
+    });
+    return options.length ? { options: options, used: m[0].length } : null;
+  }
+
+  /* The readings of a bracket after "/" ("J/(kg K)"), as symbolsFactor; null if unreadable. */
+  function bracketFactor(rest) {
+    var close = rest.indexOf(")");
+    if (close < 0) return null;
+    var inner = parseUnit(rest.slice(1, close));
+    if (!inner.ok || inner.empty) return null;
+    var options = inner.readings.map(function (r) {
+      return { unit: [r.scale, r.dims], symbols: r.symbols };
+    });
+    return { options: options, used: close + 1 };
+  }
+
+  /* Every reading so far times every reading of the next factor. */
+  function combineReadings(readings, options) {
+    var next = [];
+    readings.forEach(function (r) {
+      options.forEach(function (o) {
+        next.push({ unit: times(r.unit, o.unit), symbols: r.symbols + o.symbols });
+      });
+    });
+    return next;
+  }
+
   /* Read a unit typed as text into SI scale and dimensions. Returns every
    * reading (a list of {scale, dims}, fewest symbols first) or an error. */
   function parseUnit(text) {
@@ -267,48 +314,17 @@
         rest = rest.slice(1);
         continue;
       }
-      var options;
-      if (rest[0] === "(" && divide) {
-        var close = rest.indexOf(")");
-        if (close < 0) return unreadableUnit(text);
-        var inner = parseUnit(rest.slice(1, close));
-        if (!inner.ok || inner.empty) return unreadableUnit(text);
-        options = inner.readings.map(function (r) {
-          return { unit: [r.scale, r.dims], symbols: r.symbols };
-        });
-        rest = rest.slice(close + 1);
-      } else {
-        var m = FACTOR.exec(rest);
-        if (!m) return unreadableUnit(text);
-        var exponent = m[2] !== undefined ? +m[2] : m[3] !== undefined ? +m[3] : 1;
-        options = segmentations(m[1]).map(function (symbols) {
-          var last = symbols.length - 1;
-          return {
-            unit: symbols.reduce(
-              function (acc, u, i) {
-                return times(acc, i === last ? power(u, exponent) : u);
-              },
-              [1, [0, 0, 0, 0]],
-            ),
-            symbols: symbols.length,
-          };
-        });
-        if (!options.length) return unreadableUnit(text);
-        rest = rest.slice(m[0].length);
-      }
+      var factor = rest[0] === "(" && divide ? bracketFactor(rest) : symbolsFactor(rest);
+      if (!factor) return unreadableUnit(text);
+      rest = rest.slice(factor.used);
+      var options = factor.options;
       if (divide) {
         options = options.map(function (o) {
           return { unit: power(o.unit, -1), symbols: o.symbols };
         });
         divide = false;
       }
-      var next = [];
-      readings.forEach(function (r) {
-        options.forEach(function (o) {
-          next.push({ unit: times(r.unit, o.unit), symbols: r.symbols + o.symbols });
-        });
-      });
-      readings = next;
+      readings = combineReadings(readings, options);
     }
     if (divide) return unreadableUnit(text);
     readings.sort(function (a, b) {

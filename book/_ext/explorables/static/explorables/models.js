@@ -8,12 +8,7 @@
  * SI units throughout; velocities are signed along a chosen positive direction.
  * Works as a browser global (window.ExplorableModels) and as a node module.
  */
-(function (root, factory) {
-  "use strict";
-  var api = factory();
-  if (typeof module === "object" && module.exports) module.exports = api;
-  else root.ExplorableModels = api;
-})(typeof self !== "undefined" ? self : this, function () {
+(function (root) {
   "use strict";
 
   var DEG = Math.PI / 180;
@@ -111,6 +106,62 @@
     return { step: h, timeSinceOpening: time, velocity: velocity, distance: distance, acceleration: acceleration };
   }
 
+  /* The velocity s seconds into the canopy's opening (0 <= s < its duration): Hermite
+   * interpolation between openCanopy's steps, from v and dv/dt at both ends. */
+  function velocityWhileOpening(opening, s) {
+    var h = opening.step;
+    var i = Math.min(OPENING_STEPS - 1, Math.max(0, Math.floor(Math.max(s, 0) / h)));
+    var th = (s - i * h) / h,
+      om = 1 - th;
+    var v = opening.velocity,
+      a = opening.acceleration;
+    return (
+      (1 + 2 * th) * om * om * v[i] +
+      th * om * om * h * a[i] +
+      th * th * (3 - 2 * th) * v[i + 1] +
+      th * th * (th - 1) * h * a[i + 1]
+    );
+  }
+
+  /* D: the step of the opening with the largest deceleration (the first, if two are equal). */
+  function largestDecelerationStep(opening) {
+    var peak = 0;
+    for (var j = 1; j <= OPENING_STEPS; j++) if (opening.acceleration[j] < opening.acceleration[peak]) peak = j;
+    return peak;
+  }
+
+  /* E: when the speed first comes within 1 % of v_t2 (vE), during the opening (linearly between
+   * steps) or after it, on the coth curve from vFull. */
+  function timeWithinParachuteTerminal(opening, tOpen, tau, vFull, vt2, g) {
+    var vE = vt2 * (1 + WITHIN_TERMINAL);
+    for (var e = 0; e <= OPENING_STEPS; e++) {
+      if (opening.velocity[e] <= vE) {
+        var va = opening.velocity[e - 1],
+          vb = opening.velocity[e];
+        return tOpen + opening.timeSinceOpening[e - 1] + ((va - vE) / (va - vb)) * opening.step;
+      }
+    }
+    return tOpen + tau + timeToSlowToTerminal(vFull, vt2, g);
+  }
+
+  /* Points A to E, [time, velocity] each: A the start, B half of v_t1 and C within 1 % of it
+   * (only if reached before the opening), D the largest deceleration, E within 1 % of v_t2. */
+  function skydivePoints(opening, tOpen, tau, vt1, vt2, g) {
+    var peak = largestDecelerationStep(opening);
+    var vFull = opening.velocity[OPENING_STEPS];
+    var vE = vt2 * (1 + WITHIN_TERMINAL);
+    var tE = timeWithinParachuteTerminal(opening, tOpen, tau, vFull, vt2, g);
+    var vC = vt1 * (1 - WITHIN_TERMINAL);
+    var tB = (vt1 / g) * Math.atanh(0.5),
+      tC = timeToTerminalVelocity(vt1, g);
+    var points = { A: [0, 0] };
+    if (tB < tOpen) points.B = [tB, vt1 / 2];
+    if (tC <= tOpen) points.C = [tC, vC];
+    points.D = [tOpen + opening.timeSinceOpening[peak], opening.velocity[peak]];
+    points.E = [tE, vE];
+    return points;
+  }
+
   /**
    * A skydive with quadratic drag (twin: physics_figures.models.skydive): free fall from
    * rest with drag constant bodyDrag; from parachuteOpensAt the canopy fills over
@@ -131,7 +182,6 @@
     var k2 = weight / (vt2 * vt2);
     var vOpen = vt1 * Math.tanh((g * tOpen) / vt1);
     var opening = openCanopy(m, vOpen, k1, k2, tau, g, OPENING_STEPS);
-    var h = opening.step;
     var vFull = opening.velocity[OPENING_STEPS];
     var c = Math.atanh(vt2 / vFull); // arcoth(vFull / vt2)
 
@@ -142,18 +192,7 @@
       var s = t - tOpen;
       if (s < 0) return vt1 * Math.tanh((g * t) / vt1);
       if (s >= tau) return vt2 / Math.tanh((g * (s - tau)) / vt2 + c);
-      // Hermite interpolation between the steps, from v and dv/dt at both ends
-      var i = Math.min(OPENING_STEPS - 1, Math.max(0, Math.floor(Math.max(s, 0) / h)));
-      var th = (s - i * h) / h,
-        om = 1 - th;
-      var v = opening.velocity,
-        a = opening.acceleration;
-      return (
-        (1 + 2 * th) * om * om * v[i] +
-        th * om * om * h * a[i] +
-        th * th * (3 - 2 * th) * v[i + 1] +
-        th * th * (th - 1) * h * a[i + 1]
-      );
+      return velocityWhileOpening(opening, s);
     }
     function dragAt(t) {
       var v = velocityAt(t);
@@ -166,30 +205,7 @@
       return resultantForceAt(t) / m;
     }
 
-    // D: the step of largest deceleration (the first, if two are equal)
-    var peak = 0;
-    for (var j = 1; j <= OPENING_STEPS; j++) if (opening.acceleration[j] < opening.acceleration[peak]) peak = j;
-    // E: first within 1 % of v_t2, during the opening (linearly between steps) or on the coth curve
-    var vE = vt2 * (1 + WITHIN_TERMINAL);
-    var tE = null;
-    for (var e = 0; e <= OPENING_STEPS; e++) {
-      if (opening.velocity[e] <= vE) {
-        var va = opening.velocity[e - 1],
-          vb = opening.velocity[e];
-        tE = tOpen + opening.timeSinceOpening[e - 1] + ((va - vE) / (va - vb)) * h;
-        break;
-      }
-    }
-    if (tE === null) tE = tOpen + tau + timeToSlowToTerminal(vFull, vt2, g);
-
-    var vC = vt1 * (1 - WITHIN_TERMINAL);
-    var tB = (vt1 / g) * Math.atanh(0.5),
-      tC = timeToTerminalVelocity(vt1, g);
-    var points = { A: [0, 0] };
-    if (tB < tOpen) points.B = [tB, vt1 / 2];
-    if (tC <= tOpen) points.C = [tC, vC];
-    points.D = [tOpen + opening.timeSinceOpening[peak], opening.velocity[peak]];
-    points.E = [tE, vE];
+    var points = skydivePoints(opening, tOpen, tau, vt1, vt2, g);
     var pointDrag = {},
       pointAcceleration = {};
     Object.keys(points).forEach(function (label) {
@@ -410,7 +426,7 @@
     };
   }
 
-  return {
+  var api = {
     dragForce: dragForce,
     terminalVelocity: terminalVelocity,
     velocityFromRest: velocityFromRest,
@@ -438,4 +454,6 @@
     missingMomentum: missingMomentum,
     momentumHistory: momentumHistory,
   };
-});
+  if (typeof module === "object" && module.exports) module.exports = api;
+  else root.ExplorableModels = api;
+})(typeof self !== "undefined" ? self : this);

@@ -12,7 +12,6 @@ const LEFT_TO_SPLIT = [
   "book/_ext/explorables/static/explorables/skydiver.js",
   "book/_ext/notation/static/notation.js",
   "book/_ext/questions/static/answer-reading.js",
-  "book/_ext/questions/static/question-draw.js",
 ];
 
 export default [

@@ -3,14 +3,6 @@
 import js from "@eslint/js";
 import globals from "globals";
 
-// The files whose functions are not split yet (issue 39): the list only shrinks.
-const LEFT_TO_SPLIT = [
-  "book/_ext/questions/static/class.js",
-  "book/_ext/questions/static/mock-test.js",
-  "book/_ext/questions/static/progress.js",
-  "book/_ext/questions/static/question-draw.js",
-];
-
 export default [
   {
     ignores: ["node_modules/", "_build/", ".venv/"],
@@ -54,12 +46,6 @@ export default [
       "max-lines-per-function": ["error", { max: 80 }],
       complexity: ["error", 15],
     },
-  },
-  {
-    // Not split yet (issue 39, item 4, left open): each of these files still holds a
-    // function over the limits; tests/test_function_size.py lists them as what is left.
-    files: LEFT_TO_SPLIT,
-    rules: { "max-lines-per-function": "off", complexity: "off" },
   },
   {
     files: ["eslint.config.mjs"],

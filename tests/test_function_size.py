@@ -3,8 +3,8 @@
 ESLint holds the JavaScript to it (max-lines-per-function 80, complexity 15: eslint.config.mjs)
 and ruff the Python's paths and statements (C901 at 15, PLR0915 at 50: pyproject.toml), both in
 `make check`. This test checks that those limits stay configured, and counts the lines of every
-Python function itself, which no ruff rule does. What is not split yet is named here and in the
-two configurations, and each list only shrinks: an entry that no longer needs its exemption fails.
+Python function itself, which no ruff rule does. No file is exempt: neither configuration turns
+a limit off for a file, and no source file turns one off in a comment.
 """
 
 import ast
@@ -18,10 +18,9 @@ MAX_COMPLEXITY = 15
 MAX_STATEMENTS = 50
 # The Python that ruff checks (the Makefile's LINTED).
 PYTHON_DIRS = ("physics_figures", "tests", "book/_ext", "book/_latex", "scripts")
-
-# Python functions over MAX_LINES, not split yet: path -> function names. None is left (issue 39,
-# item 4: the bank's last long templates and scripts/bench.py's main were split); it only shrinks.
-PYTHON_LEFT: dict[str, set[str]] = {}
+# The JavaScript that ESLint checks: the site's scripts and the Node tests.
+JS_DIRS = ("book/_ext", "tests", "scripts", "physics_figures")
+LIMITS = ("max-lines-per-function", "complexity", "C901", "PLR0915")
 
 
 def long_python_functions(source, limit=MAX_LINES):
@@ -49,18 +48,10 @@ def test_the_line_count_finds_a_long_function():
 def test_no_python_function_is_over_80_lines():
     over = {}
     for path in python_files():
-        name = path.relative_to(ROOT).as_posix()
         long = long_python_functions(path.read_text(encoding="utf-8"))
         if long:
-            over[name] = {function for function, _, _ in long}
-        new = {function for function, _, _ in long} - PYTHON_LEFT.get(name, set())
-        assert not new, f"{name}: functions over {MAX_LINES} lines: {sorted(new)}"
-    # The list of what is left only shrinks: a function split since is taken off it.
-    for name, functions in PYTHON_LEFT.items():
-        split = functions - over.get(name, set())
-        assert not split, (
-            f"{name}: {sorted(split)} now fit in {MAX_LINES} lines: take them off PYTHON_LEFT"
-        )
+            over[path.relative_to(ROOT).as_posix()] = [(name, lines) for name, _, lines in long]
+    assert not over, f"functions over {MAX_LINES} lines (name, lines): {over}"
 
 
 def eslint_config():
@@ -79,15 +70,18 @@ def test_eslint_limits_every_javascript_function():
     )
 
 
-def test_the_javascript_left_to_split_exists():
-    """Each file exempted in eslint.config.mjs (LEFT_TO_SPLIT) still exists; none else is."""
-    config = eslint_config()
-    left = re.search(r"const LEFT_TO_SPLIT = \[(.*?)\];", config, re.DOTALL)
-    assert left, "eslint.config.mjs names what is left to split in LEFT_TO_SPLIT"
-    files = re.findall(r'"([^"]+)"', left.group(1))
-    assert all((ROOT / name).is_file() for name in files), files
-    offs = re.findall(r'"max-lines-per-function": "off"', config)
-    assert len(offs) == 1, "only LEFT_TO_SPLIT may turn the function limit off"
+def test_no_file_turns_a_limit_off():
+    """Neither ESLint's configuration nor a comment in a source file turns a function limit off."""
+    offs = re.findall(r'"(?:max-lines-per-function|complexity)": "off"', eslint_config())
+    assert not offs, f"eslint.config.mjs turns a function limit off: {offs}"
+    sources = [path for folder in JS_DIRS for pattern in ("*.js", "*.mjs") for path in (ROOT / folder).rglob(pattern)]
+    sources += list(python_files())
+    turned_off = [
+        path.relative_to(ROOT).as_posix()
+        for path in sources
+        if re.search(r"(eslint-disable|noqa)[^\n]*(" + "|".join(LIMITS) + ")", path.read_text(encoding="utf-8"))
+    ]
+    assert not turned_off, f"a comment turns a function limit off in: {turned_off}"
 
 
 def test_ruff_limits_every_python_function():
@@ -97,8 +91,6 @@ def test_ruff_limits_every_python_function():
     assert {"C901", "PLR0915"} <= set(lint["extend-select"])
     assert lint["mccabe"]["max-complexity"] == MAX_COMPLEXITY
     assert lint["pylint"]["max-statements"] == MAX_STATEMENTS
-    # an exemption is only for a file named as left to split, and only for these two rules
-    for name, rules in lint.get("per-file-ignores", {}).items():
-        assert (ROOT / name).is_file(), name
-        assert name in PYTHON_LEFT, f"{name} is exempt from {rules} in pyproject.toml but not left to split"
-        assert set(rules) <= {"C901", "PLR0915"}, (name, rules)
+    exempt = {name: rules for name, rules in lint.get("per-file-ignores", {}).items()
+              if {"C901", "PLR0915"} & set(rules)}
+    assert not exempt, f"pyproject.toml exempts files from the function limits: {exempt}"

@@ -54,7 +54,7 @@ def test_the_page_embeds_the_bank_by_type_with_the_page_that_places_each(tmp_pat
     # the plan's scripts, each after the ones it uses; the scheduler on no other page
     scripts = re.findall(r'<script[^>]* src="_static/([^"?]+)', page)
     plan = ["notation.js", "progress-store.js", "ts-fsrs.js", "schedule.js", "progress-file.js", "progress.js",
-            "progress-plan.js"]
+            "progress-page.js", "progress-plan.js"]
     assert [name for name in scripts if name in plan] == plan
     assert "ts-fsrs.js" not in asked and "progress-plan.js" not in asked
     assert asked.index("_static/questions.js") < asked.index("_static/review.js")  # Start's cards are served here

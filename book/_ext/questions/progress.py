@@ -7,7 +7,8 @@ The build writes every type with its templates (marks, the page that places each
 each named mistake sends a student back to), the self-test's definitions and the page that
 holds them. In the browser, static/progress-plan.js writes the plan (cards due, Start, the
 weakest type, the most frequent mistake) from the store (progress-store.js) and the schedule
-(schedule.js); static/progress.js writes the record and moves it to and from a file.
+(schedule.js); static/progress-page.js writes the record (worked out by static/progress.js,
+its pure part) and moves it to and from a file.
 Without JavaScript, and in print, the page still lists and links each type's questions.
 """
 
@@ -234,7 +235,8 @@ def add_assets(app, pagename, templatename, context, doctree):
         add_notation_script(app)
         schedule.add_plan_scripts(app)  # the store, ts-fsrs and the schedule
         app.add_js_file("progress-file.js", loading_method="defer", priority=433)  # what Export writes
-        app.add_js_file("progress.js", loading_method="defer", priority=434)  # the record, the file
+        app.add_js_file("progress.js", loading_method="defer", priority=434)  # the record's pure part
+        app.add_js_file("progress-page.js", loading_method="defer", priority=434)  # the page, the file
         app.add_js_file("progress-plan.js", loading_method="defer", priority=435)  # the plan, Start
 
 

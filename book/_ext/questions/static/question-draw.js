@@ -80,12 +80,9 @@
     return sums;
   }
 
-  /* Templates making exactly `marks`, shared among their types as the exam shares its
-   * questions (each type's exam count). `orderType(group, seed)` puts one type's templates
-   * in the order the subset sums try them (the first found wins); by default the worksheets'
-   * seeded order of their keys. */
-  function chooseTemplates(data, templates, marks, seed, orderType) {
-    orderType = orderType || sheetOrder;
+  /* The templates by type (in the order they come), each type's in the order `orderType`
+   * puts them. */
+  function templatesByType(templates, seed, orderType) {
     var byType = new Map();
     templates.forEach(function (template) {
       if (!byType.has(template.type)) byType.set(template.type, []);
@@ -94,6 +91,11 @@
     byType.forEach(function (group, type) {
       byType.set(type, orderType(group, seed));
     });
+    return byType;
+  }
+
+  /* The marks the templates hold between them; asking for more is an error. */
+  function marksInBank(templates, byType, marks) {
     var available = templates.reduce(function (sum, t) {
       return sum + t.marks;
     }, 0);
@@ -110,6 +112,11 @@
         " templates)",
       { available: available },
     );
+    return available;
+  }
+
+  /* Each type's share of the marks, as the exam shares its questions (its exam count). */
+  function typeShares(data, byType, marks) {
     var counts = new Map();
     byType.forEach(function (group, type) {
       counts.set(type, examCount(data, type));
@@ -119,14 +126,19 @@
       weight += count;
     });
     weight = weight || 1;
-    var options = new Map();
-    byType.forEach(function (group, type) {
-      options.set(type, subsetSums(group, marks));
+    var shares = new Map();
+    counts.forEach(function (count, type) {
+      shares.set(type, (marks * count) / weight);
     });
-    // Over the types: the exact total that strays least from each type's share.
+    return shares;
+  }
+
+  /* Over the types: for each total up to `marks`, the picks ([type, its marks]) that stray
+   * least from each type's share. `options` holds each type's subset sums. */
+  function leastStrayingTotals(options, shares, marks) {
     var best = new Map([[0, { cost: 0, picks: [] }]]);
     options.forEach(function (sums, type) {
-      var target = (marks * counts.get(type)) / weight;
+      var target = shares.get(type);
       var following = new Map();
       best.forEach(function (entry, total) {
         sums.forEach(function (chosen, amount) {
@@ -138,32 +150,51 @@
       });
       best = following;
     });
-    if (!best.has(marks)) {
-      var below = 0;
-      best.forEach(function (entry, total) {
-        if (total < marks && total > below) below = total;
-      });
-      var above = available;
-      subsetSums(templates, available).forEach(function (chosen, total) {
-        if (total > marks && total < above) above = total;
-      });
-      throw new DrawError(
-        "marks cannot be made exactly from the questions of these templates (" +
-          templates
-            .map(function (t) {
-              return t.key + ": " + t.marks;
-            })
-            .join(", ") +
-          "); the nearest totals that can are " +
-          below +
-          " and " +
-          above +
-          " (got marks=" +
-          pyRepr(marks) +
-          ")",
-        { field: "marks", nearest: [below, above] },
-      );
-    }
+    return best;
+  }
+
+  /* The error when `marks` cannot be made exactly: the nearest totals below (shared among the
+   * types) and above (from any of the templates) that can. */
+  function nearestTotalsError(best, templates, marks, available) {
+    var below = 0;
+    best.forEach(function (entry, total) {
+      if (total < marks && total > below) below = total;
+    });
+    var above = available;
+    subsetSums(templates, available).forEach(function (chosen, total) {
+      if (total > marks && total < above) above = total;
+    });
+    return new DrawError(
+      "marks cannot be made exactly from the questions of these templates (" +
+        templates
+          .map(function (t) {
+            return t.key + ": " + t.marks;
+          })
+          .join(", ") +
+        "); the nearest totals that can are " +
+        below +
+        " and " +
+        above +
+        " (got marks=" +
+        pyRepr(marks) +
+        ")",
+      { field: "marks", nearest: [below, above] },
+    );
+  }
+
+  /* Templates making exactly `marks`, shared among their types as the exam shares its
+   * questions (each type's exam count). `orderType(group, seed)` puts one type's templates
+   * in the order the subset sums try them (the first found wins); by default the worksheets'
+   * seeded order of their keys. */
+  function chooseTemplates(data, templates, marks, seed, orderType) {
+    var byType = templatesByType(templates, seed, orderType || sheetOrder);
+    var available = marksInBank(templates, byType, marks);
+    var options = new Map();
+    byType.forEach(function (group, type) {
+      options.set(type, subsetSums(group, marks));
+    });
+    var best = leastStrayingTotals(options, typeShares(data, byType, marks), marks);
+    if (!best.has(marks)) throw nearestTotalsError(best, templates, marks, available);
     var chosen = [];
     best.get(marks).picks.forEach(function (pick) {
       chosen = chosen.concat(options.get(pick[0]).get(pick[1]));

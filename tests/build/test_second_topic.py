@@ -5,15 +5,19 @@ shared module names it: the fixture is never published."""
 
 from __future__ import annotations
 
+import json
 import os
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
+from html import escape
 from pathlib import Path
 
 import pytest
 from browser import open_browser, serve_site
 from moodle_format import check_file
+
+from physics_figures.topics import storage_keys
 
 ROOT = Path(__file__).resolve().parents[2]
 FIXTURE = ROOT / "tests" / "fixtures" / "second_topic"
@@ -21,6 +25,8 @@ BIN = Path(sys.executable).parent
 #: The fixture's topic module is found the way any topic is: on the Python path.
 ENV = {**os.environ, "PYTHONPATH": os.pathsep.join(filter(None, [str(FIXTURE), os.environ.get("PYTHONPATH")]))}
 KEY = "kinematics-speeding-up"
+#: The fixture book's own storage keys: its id is its topic's key (kinematics_topic.TOPIC).
+KEYS = storage_keys("kinematics")
 
 
 @pytest.fixture(scope="module")
@@ -46,6 +52,18 @@ def test_the_second_topic_builds_with_its_pages_and_question(fixture_site):
 
 
 @pytest.mark.build
+def test_the_second_topic_s_pages_name_its_own_storage_keys(fixture_site):
+    """Every page names the keys the book keeps its records under, from its own id: a second
+    topic's book keeps its own with no script edited."""
+    pages = [page.read_text(encoding="utf-8") for page in sorted(fixture_site.rglob("*.html")) if "_static" not in page.parts]
+    pages = [page for page in pages if 'http-equiv="Refresh"' not in page]  # index.html sends to the first page
+    assert len(pages) > 2
+    meta = f'<meta name="book-storage" content="{escape(json.dumps(KEYS, separators=(",", ":")))}">'
+    assert all(meta in page for page in pages), meta
+    assert KEYS["progress"] == "kinematics-progress-v2" and KEYS["cache"] == "kinematics-"
+
+
+@pytest.mark.build
 @pytest.mark.browser
 def test_the_second_topic_is_marked_in_the_browser(fixture_site):
     with serve_site(fixture_site) as base, open_browser() as browser:
@@ -66,6 +84,10 @@ def test_the_second_topic_is_marked_in_the_browser(fixture_site):
         assert feedback.locator("a.q-idea").get_attribute("href") == "equations.html#the-equations-of-motion"
         assert page.locator(".q-score").inner_text() == "0/2 marks"
         assert not errors, errors
+        # the attempts and the answers are kept under the book's own keys, none of Dynamics's
+        stored = page.evaluate("Object.keys(localStorage)")
+        assert KEYS["progress"] in stored and any(key.startswith(KEYS["answers"]) for key in stored), stored
+        assert not [key for key in stored if key.startswith("dynamics-")], stored
 
 
 @pytest.mark.build

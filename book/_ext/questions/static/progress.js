@@ -379,7 +379,7 @@
       var today = new Date().toISOString().slice(0, 10);
       if (!read.ok) {
         // a format this page cannot read: copied out whole
-        var name = ProgressFile.exportFileName(nameInput.value.trim(), today);
+        var name = ProgressFile.exportFileName(nameInput.value.trim(), today, Store.KEYS.exports);
         download(getStored(Store.STORE) || getStored(Store.OLD_STORE), name);
         say("Exported your progress to " + name + ".");
         return;
@@ -388,7 +388,7 @@
       if (!nameToExport(progress)) return;
       progress.schedule = Schedule.replay(progress);
       ProgressFile.exportFile(progress, data.book).then(function (out) {
-        var name = ProgressFile.exportFileName(out.student, today);
+        var name = ProgressFile.exportFileName(out.student, today, Store.KEYS.exports);
         download(JSON.stringify(out, null, 1), name);
         say(
           "Exported " +

@@ -56,7 +56,7 @@ $(VENV)/.installed: requirements.txt pyproject.toml
 # The lock: pyproject.toml declares the dependencies (direct ones pinned), pip-compile (pip-tools,
 # itself in the lock) resolves every transitive package and pins it with its hashes. Pins already
 # in requirements.txt are kept; to move one: make lock LOCK_ARGS="--upgrade-package NAME".
-# tests/test_lock.py checks that the two agree (make check: offline; make test: runs this target
+# tests/no_site/test_lock.py checks that the two agree (make check: offline; make test: runs this target
 # into a temporary file and compares).
 LOCK_OUT ?= requirements.txt
 LOCK_ARGS ?=
@@ -115,7 +115,7 @@ NO_SITE_LOG := _build/tests-without-site.log
 SITE_TESTS := -m "not ($(NO_SITE)) and not alone" -n 2 --dist loadscope
 # The modules that mark a test `alone`: the run that measures speed collects only them (the
 # whole suite's ten thousand tests take seconds to collect while the machine is otherwise idle).
-ALONE_FILES = $(shell grep -l "mark\.alone" tests/test_*.py)
+ALONE_FILES = $(shell grep -l "mark\.alone" tests/browser/test_*.py)
 # (the venv and the node tools install side by side: both mostly wait for downloads and disk)
 test:
 	@$(MAKE) --no-print-directory -j2 --output-sync=target venv node_modules/.package-lock.json
@@ -167,7 +167,7 @@ jslint: node_modules/.package-lock.json
 # sphinx-jupyterbook-latex sets numfig_secnum_depth for LaTeX, and in an environment shared
 # with the HTML build that change made the next make html read every page again. It shares
 # the HTML build's cache of executed pages (a link), so no page is executed twice.
-# make latex writes the .tex files only (tests/test_noop_build.py uses it).
+# make latex writes the .tex files only (tests/build/test_noop_build.py uses it).
 LATEX_BUILD := _build/latex-build
 PDF := $(LATEX_BUILD)/_build/latex
 PDF_FILES := dynamics.pdf dynamics-questions.pdf dynamics-answers.pdf

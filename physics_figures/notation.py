@@ -154,7 +154,7 @@ def format_quantity(value: float, sig_figs: int | None, unit: str, *, decimals: 
 
 
 #: The unit symbols that ``join_units`` knows in prose: every unit the questions use
-#: (tests/test_notation.py checks that against the bank) and a few the notes add.
+#: (tests/no_site/test_notation.py checks that against the bank) and a few the notes add.
 UNIT_SYMBOLS = ("kg", "g", "m", "km", "cm", "mm", "s", "ms", "h", "min", "N", "kN", "J", "kJ", "W", "kW",
                 "Pa", "kPa", "K", "mol", "rad", "Hz")
 _POWER = "(?:[⁻]?[⁰¹²³⁴⁵⁶⁷⁸⁹]+)?"

@@ -1,7 +1,7 @@
 """The date every built file carries instead of "now" (matplotlib's SVG and PDF stamps, the
 PDFs' dates and ids, the offline zip's entries), so the same source gives the same files.
 
-The Makefile exports SOURCE_DATE_EPOCH with this value (tests/test_house.py checks that they
+The Makefile exports SOURCE_DATE_EPOCH with this value (tests/no_site/test_house.py checks that they
 agree); a script run on its own, outside make, reads this constant."""
 
 from __future__ import annotations

@@ -103,3 +103,18 @@ def load(module: str) -> Topic:
         raise ValueError(f"topic {module!r} cannot be imported: {error}") from error
     _require(isinstance(found, Topic), "topic", module, "must be a module whose TOPIC is a physics_figures.topics.Topic")
     return found
+
+
+def storage_keys(book: str) -> dict[str, str]:
+    """The names a book keeps a student's records under in the browser, from its id (the keys of
+    its topics, book/_ext/questions/store.py book_id): its localStorage keys (progress, the
+    format 1 store it upgrades, a question's saved answers by prefix, Start's review queue, the
+    mock test in progress), the export's file name before "-NAME-DATE.json", and the service
+    worker's caches by prefix. The build writes them into every page (a meta tag) and sw.js,
+    and the scripts read them there, so a book of another topic keeps its own. Dynamics's are
+    the names its students' saved progress is under: they never change."""
+    _require(bool(book) and book == book.strip().lower() and " " not in book, "book", book,
+             "must be a lower-case id without spaces (the topics' keys), e.g. 'dynamics'")
+    return {"book": book, "progress": f"{book}-progress-v2", "oldProgress": f"{book}-progress-v1",
+            "answers": f"{book}-questions:", "review": f"{book}-review-v1", "mock": f"{book}-mock-v1",
+            "exports": f"{book}-progress", "cache": f"{book}-"}

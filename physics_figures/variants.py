@@ -172,7 +172,7 @@ class Template:
     try_first: bool = False
     #: Why an explain or conceptual template's answer is the same text in every variant (say, one
     #: definition asked in several wordings); else each variant's answer follows its situation
-    #: (issue 25: tests/test_findings.py).
+    #: (issue 25: tests/no_site/test_findings.py).
     same_answer_because: str = ""
     #: A define/state template whose wording cannot change without changing the physics (a
     #: definition has one right wording): why, in a sentence. It has no draws and one variant,

@@ -556,7 +556,7 @@ def offline_sizes(site: Path) -> dict[str, int]:
 
 def template_data_sizes(site: Path) -> dict[str, int]:
     """Each template's question data, gzip: its inline data (on the first page that asks it) and its
-    variants' file (tests/test_house.py checks the same budget)."""
+    variants. file (tests/site/test_house_site.py checks the same budget)."""
     inline: dict[str, bytes] = {}
     for page in sorted(site.rglob("*.html")):
         for data in re.findall(r'<script type="application/json" class="q-data">(.*?)</script>',

@@ -55,7 +55,39 @@ def variant_param(template, index: int, *values):
                         marks=pytest.mark.variant(index, len(template.values)))
 
 
+#: The folders of tests/ follow the markers: a test lives in the folder of the heaviest thing it
+#: needs (a build of its own, then Chromium, then the built site, then PyPI), and the folder gives
+#: it that marker. tests/no_site/ holds what `make check` runs. A test marked `alone` (it measures
+#: speed) lives with the others of what it needs: `alone` says when make test runs it, not what
+#: it needs.
+FOLDERS = ("build", "browser", "site", "network")
+NO_SITE_FOLDER = "no_site"
+TESTS = Path(__file__).resolve().parent
+
+
+def folder_for(markers) -> str:
+    """The folder of tests/ that a test carrying `markers` belongs in."""
+    return next((folder for folder in FOLDERS if folder in markers), NO_SITE_FOLDER)
+
+
+def test_folder(path: Path) -> str:
+    """The folder of tests/ that a test module sits in (the first one under tests/)."""
+    return Path(path).resolve().relative_to(TESTS).parts[0]
+
+
+@pytest.hookimpl(tryfirst=True)  # before -m deselects by marker
 def pytest_collection_modifyitems(config, items):
+    misplaced = []
+    for item in items:
+        folder = test_folder(item.path)
+        if folder in FOLDERS:
+            item.add_marker(folder)
+        carried = {marker.name for marker in item.iter_markers()}
+        if folder_for(carried) != folder:
+            misplaced.append(f"{item.nodeid} carries {sorted(carried & set(FOLDERS))}: "
+                             f"it belongs in tests/{folder_for(carried)}/")
+    if misplaced:
+        raise pytest.UsageError("tests in a folder whose marker they do not follow:\n" + "\n".join(misplaced))
     if not config.getoption("--sample-variants"):
         return
     kept, left_out = [], []

@@ -1,4 +1,4 @@
-"""Where a sheet's choice questions fall on printed pages (tests/test_sheet_print.py): read a PDF
+"""Where a sheet's choice questions fall on printed pages (tests/build/test_sheet_print.py): read a PDF
 page by page with pdftotext and find, in order, each choice part's stem and its answer line.
 
 Text is compared by its letters alone (a PDF's spaces, hyphens and symbols are not the

@@ -83,7 +83,7 @@ def all_questions() -> tuple[Question, ...]:
     """Every question of the quick check and the practice pages, with the printed numbers
     (variant 0), in book order: the quick check's five, then each type's practice page in the
     notes' order, then the statements' page and the sketches' page (_toc.yml's order;
-    tests/test_questions.py checks the pages place them so)."""
+    tests/no_site/test_questions.py checks the pages place them so)."""
     # statements and sketches are asked on pages of their own, after every type's page
     apart = [*statements.TEMPLATES, *sketches.TEMPLATES]
     left_out = {*QUICK_CHECK, *(t.key for t in apart)}

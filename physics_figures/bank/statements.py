@@ -9,7 +9,7 @@ schemes reject, each citing its paper). The points are the published 9702 scheme
 in the words an examiner looks for ("rate of change of momentum", "resultant force", "no resultant
 external force", "on different bodies", ...); the wording of each is the notes'
 (../shared/notes, "Mass, weight and the definitions" and "Understand it"), and each template's
-docstring cites the paper whose scheme it follows. tests/test_statements.py checks every point
+docstring cites the paper whose scheme it follows. tests/no_site/test_statements.py checks every point
 against a table of those key words.
 
 A statement whose question can be set in different situations without changing the physics

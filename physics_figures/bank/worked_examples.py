@@ -10,7 +10,7 @@ above, so the question's text only says what to work out, and which part of the 
 each box answers when the letters differ (the boxes are lettered (a), (b), ... in order).
 
 Keys come from the models with the example's own numbers, so they equal the values the
-page glues from physics_figures.answers (tests/test_worked_examples_try.py checks it);
+page glues from physics_figures.answers (tests/no_site/test_worked_examples_try.py checks it);
 the mark-scheme lines carry the codes of the example's solution.
 """
 

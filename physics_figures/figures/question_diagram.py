@@ -97,7 +97,7 @@ def _panel(ax, title: str, bodies: tuple[Body, ...], diagram: Diagram, *, plane:
 def plot_question_diagram(diagram: Diagram) -> Figure:
     panels = [(title, bodies) for title, bodies in (("Before", diagram.before), ("After", diagram.after)) if bodies]
     # Before above After, not side by side: narrow enough that a phone shows its text at 11 px or
-    # more (tests/test_reading_browser.py), the panels sharing one scale.
+    # more (tests/browser/test_reading_browser.py), the panels sharing one scale.
     width = max(_MIN_WIDTH, *(_LEFT + _RIGHT + (len(bodies) - 1) * _SPACING for _, bodies in panels))
     scale = min(_SCALE, _MAX_INCHES / width)  # three bodies abreast: the same inches, text relatively larger
     figure = Figure(figsize=(width * scale, len(panels) * ((2 * _HEIGHT + _HEADROOM) * scale + 0.3)), layout="constrained")

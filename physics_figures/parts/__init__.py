@@ -1,7 +1,7 @@
 """The part kinds, one module each, found through ``KINDS``; each kind has one browser twin
 (book/_ext/questions/static/question-kinds/, registered in ``QuestionKinds``: see
 book/_ext/questions/static/question-kinds.js). No code outside a kind's two modules and the two
-registries branches on a kind's name: it asks the part (tests/test_kind_plugins.py checks).
+registries branches on a kind's name: it asks the part (tests/no_site/test_kind_plugins.py checks).
 
 A kind registers itself: ``register_kind(MyPart)`` when its module is imported (a topic's bank
 that uses it imports it; the build then loads its browser twin, ``browser_script``).

@@ -329,7 +329,7 @@ def choices_in_order(key: float, wrong: dict[str, tuple], *, sig_figs: int, unit
     so that the key's letter moves from variant to variant (issue 25, no give-aways): the letter
     comes from the key's printed value, never from random state, so a variant always prints the
     same options. ``seed`` is the template's own fixed number mixed into that choice: a template
-    picks the one that spreads its variants' keys over the letters (tests/test_choice_letters.py
+    picks the one that spreads its variants' keys over the letters (tests/no_site/test_choice_letters.py
     checks no letter is the key in more than 40 % of them). Returns (options, the key's letter)."""
     _require(len(wrong) >= len(OPTION_LETTERS) - 1, "wrong", sorted(wrong),
              f"must hold at least {len(OPTION_LETTERS) - 1} named mistakes")

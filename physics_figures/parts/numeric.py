@@ -251,7 +251,7 @@ class Part(PartKind):
     (in order); with both, ``rounded_part_way`` lists what rounding them early gives.
     answer_for_g: the answer as a function of g, for a part whose answer depends on g;
     it adds the named mistake "used g = 10 m s⁻²" (G_TEN_SLIP: loses only the A1) and the
-    g = 9.8 slip. Every part whose answer uses g must give it (tests/test_allowances.py rebuilds
+    g = 9.8 slip. Every part whose answer uses g must give it (tests/no_site/test_allowances.py rebuilds
     the bank with g = 10 and finds any that does not); where readings of a graph within half a
     small square give the g = 10 answer too, it is right and no slip is named.
     alternatives (Alternative, each with its paper) and allow_minus: what the part's scheme

@@ -6,12 +6,14 @@ const assert = require("node:assert/strict");
 const crypto = require("node:crypto");
 const path = require("node:path");
 const STATIC = path.join(__dirname, "..", "..", "book", "_ext", "questions", "static");
+require("./book_storage.js"); // the storage keys a page of the book names
 const F = require(path.join(STATIC, "progress-file.js"));
 const C = require(path.join(STATIC, "class.js"));
 const fs = require("node:fs");
 const V1_FILE = path.join(__dirname, "..", "fixtures", "progress_v1", "progress-v1.json");
 
 const BOOK = "dynamics";
+const EXPORTS = "dynamics-progress"; // the book's storage_keys()["exports"] (physics_figures/topics.py)
 function attempt(question, type, earned, available, at, mistakes) {
   return { question, type, variant: 0, earned, available, at, mistakes: mistakes || [] };
 }
@@ -138,13 +140,13 @@ test("a student is the name the file carries; an older file's is its file's name
   const read = await C.readFile("dynamics-progress-2026-11-28.json", JSON.stringify(named), BOOK);
   assert.equal(read.student, "Amira Khan");
   assert.equal((await C.readFile("ben.json", JSON.stringify({ version: 1, attempts: [] }), BOOK)).student, "ben");
-  assert.equal(F.exportFileName("Amira Khan", "2026-11-28"), "dynamics-progress-Amira-Khan-2026-11-28.json");
+  assert.equal(F.exportFileName("Amira Khan", "2026-11-28", EXPORTS), "dynamics-progress-Amira-Khan-2026-11-28.json");
   assert.equal(
-    F.exportFileName(" Zoë O'Brien / 12B ", "2026-11-28"),
+    F.exportFileName(" Zoë O'Brien / 12B ", "2026-11-28", EXPORTS),
     "dynamics-progress-Zoë-O-Brien-12B-2026-11-28.json",
   );
-  assert.equal(F.exportFileName("../..", "2026-11-28"), "dynamics-progress-2026-11-28.json");
-  assert.equal(F.exportFileName("", "2026-11-28"), "dynamics-progress-2026-11-28.json");
+  assert.equal(F.exportFileName("../..", "2026-11-28", EXPORTS), "dynamics-progress-2026-11-28.json");
+  assert.equal(F.exportFileName("", "2026-11-28", EXPORTS), "dynamics-progress-2026-11-28.json");
 });
 
 test("two files that give one name are two rows, each labelled with its file, never merged", () => {

@@ -1,6 +1,6 @@
 // Marks whole questions with the browser's engine: JSON [{data, answers}] on stdin (data as
 // the site ships it), JSON [{results, marks, lost}] on stdout, lost: each part's "what was
-// lost" text. Used by tests/test_marks_rules.py.
+// lost" text. Used by tests/no_site/test_marks_rules.py.
 "use strict";
 const jsonFilter = require("./json_filter.js");
 const path = require("node:path");

@@ -1,6 +1,6 @@
 // Marks drawn lines with the sketch kind's marker: JSON [{part, line}] on stdin (part as the
 // site ships it, line [[t, y], ...] in the axes' units), JSON [{code, earned}] on stdout.
-// Used by tests/test_sketches.py.
+// Used by tests/no_site/test_sketches.py.
 "use strict";
 const jsonFilter = require("./json_filter.js");
 const path = require("node:path");

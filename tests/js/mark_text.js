@@ -1,6 +1,6 @@
 // Marks typed answers to text parts with the browser's text marker: JSON [{part, answer}] on
 // stdin (part as the site ships it), JSON [result] on stdout, each with the time it took (ms).
-// Used by tests/test_text_marking.py.
+// Used by tests/no_site/test_text_marking.py.
 "use strict";
 const jsonFilter = require("./json_filter.js");
 const path = require("node:path");

@@ -1,6 +1,6 @@
 // Runs the mock test's draw (book/_ext/questions/static/mock-draw.js) on cases read as JSON from
 // stdin: {index, cases: [{paper, size, seed}]}. Prints, per case, the test drawn (paper, size,
-// seed, minutes, questions) or the error's message, as JSON for tests/test_mock_draw.py.
+// seed, minutes, questions) or the error's message, as JSON for tests/no_site/test_mock_draw.py.
 "use strict";
 const jsonFilter = require("./json_filter.js");
 const path = require("node:path");

@@ -1,5 +1,5 @@
 // The browser's number writer (book/_ext/notation/static/notation.js) against the case table
-// that physics_figures/notation.py also runs (tests/test_notation.py). Run: node --test tests/js
+// that physics_figures/notation.py also runs (tests/no_site/test_notation.py). Run: node --test tests/js
 "use strict";
 const test = require("node:test");
 const assert = require("node:assert/strict");

@@ -6,6 +6,7 @@ const assert = require("node:assert/strict");
 const path = require("node:path");
 const FSRS = require("ts-fsrs");
 const STATIC = path.join(__dirname, "..", "..", "book", "_ext", "questions", "static");
+require("./book_storage.js"); // the storage keys a page of the book names
 const Store = require(path.join(STATIC, "progress-store.js"));
 const Schedule = require(path.join(STATIC, "schedule.js"));
 

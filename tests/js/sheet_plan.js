@@ -1,7 +1,7 @@
 // Runs the sheet builder's plan (sheet-builder.js, over the one draw, question-draw.js) on cases
 // read as JSON from stdin: {data, cases: [{types, marks, versions, seed}]}. Prints, per case, the
 // plan's template keys and variants per version, or the error's message, as JSON for
-// tests/test_sheet_builder.py to compare with the command line's.
+// tests/no_site/test_sheet_builder.py to compare with the command line's.
 "use strict";
 const jsonFilter = require("./json_filter.js");
 const path = require("node:path");

@@ -1,6 +1,6 @@
 // The shared s.f. case table (tests/fixtures/sig_fig_cases.json) through the browser's engine:
 // each written answer gets the case's judgement; physics_figures.marking.judge_sig_figs gets the
-// same (tests/test_sig_fig_judge.py runs both and compares them case by case).
+// same (tests/no_site/test_sig_fig_judge.py runs both and compares them case by case).
 "use strict";
 const test = require("node:test");
 const assert = require("node:assert");

@@ -1,6 +1,6 @@
 // Marks each written answer of tests/fixtures/sig_fig_cases.json (or JSON cases on stdin) with
 // the browser's engine, as a signed value in N against the case's key: JSON [{code, message}]
-// on stdout. Used by tests/test_sig_fig_judge.py and tests/js/sig-figs.test.js.
+// on stdout. Used by tests/no_site/test_sig_fig_judge.py and tests/js/sig-figs.test.js.
 "use strict";
 const path = require("node:path");
 const engine = require(path.join(__dirname, "..", "..", "book", "_ext", "questions", "static", "marking.js"));

@@ -1,7 +1,7 @@
 // The text part kind's marker (book/_ext/questions/static/question-kinds/text.js), run with
 // `node --test tests/js`: how it reads typed words (CLARIFICATIONS, Papers). The parts here are
 // small, written for each rule; the templates' own rules are marked against the typed answers of
-// tests/fixtures/text_answers.json by tests/test_text_marking.py.
+// tests/fixtures/text_answers.json by tests/no_site/test_text_marking.py.
 "use strict";
 const test = require("node:test");
 const assert = require("node:assert/strict");

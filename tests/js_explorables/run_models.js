@@ -1,5 +1,5 @@
 // Runs the explorables' JavaScript models on cases read as JSON from stdin and prints
-// the results as JSON, for tests/test_explorables_models.py to compare with Python.
+// the results as JSON, for tests/no_site/test_explorables_models.py to compare with Python.
 //
 // A case is {"call": name, "args": [...]} for a plain function, or one of the
 // compound calls below that evaluate a model object at many points.

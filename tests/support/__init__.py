@@ -1,4 +1,4 @@
-"""Helpers the test modules share, each defined once here (tests/test_house.py checks that no
+"""Helpers the test modules share, each defined once here (tests/no_site/test_house.py checks that no
 two test modules define one helper). What scripts/ shares with the tests lives in scripts/
 (scripts/browser.py): no script imports a test.
 

@@ -1,5 +1,5 @@
-"""A page's first visit weighed, as `make bench` weighs it: tests/test_site.py's sweep (with the
-page's layout shift) and tests/test_lighthouse.py (to find the heaviest page) share it."""
+"""A page's first visit weighed, as `make bench` weighs it: tests/browser/test_site.py's sweep (with the
+page's layout shift) and tests/browser/test_lighthouse.py (to find the heaviest page) share it."""
 
 from __future__ import annotations
 
@@ -56,7 +56,7 @@ async def weigh(browser, base: str, pages: list[str], reports) -> None:
     """Each page's first visit: a fresh context (nothing cached from another page), service
     workers blocked, as `make bench` weighs it. Its layout shift while it loads, too, and what
     failed or was sent off the site (scrolled: the lazy figures load too). A page is loaded once
-    here; its layout shift is the worst of this load and the sweep's (tests/test_site.py), never
+    here; its layout shift is the worst of this load and the sweep's (tests/browser/test_site.py), never
     the least: a shift a student can meet on a first load fails the page."""
     for path in pages:
         context = await browser.new_context(viewport=VIEWPORTS["mobile"], service_workers="block")

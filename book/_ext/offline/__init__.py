@@ -27,7 +27,7 @@ import hashlib
 import json
 import posixpath
 import re
-from html import escape
+from html import escape, unescape
 from html.parser import HTMLParser
 from pathlib import Path
 
@@ -140,12 +140,22 @@ def precache_size(site: Path) -> int:
     return sum(len(gzip.compress((site / f).read_bytes(), mtime=0)) for f, _ in precache_list(site))
 
 
+def book_storage(site: Path) -> dict[str, str]:
+    """The names the book keeps its records and caches under, as the questions extension wrote
+    them into its pages (<meta name="book-storage">, physics_figures/topics.py storage_keys)."""
+    for page in sorted(site.rglob("*.html")):  # the first page that has it (index.html may be a redirect)
+        found = re.search(r'<meta name="book-storage" content="([^"]+)"', page.read_text(encoding="utf-8"))
+        if found:
+            return json.loads(unescape(found[1]))
+    raise ValueError(f"site {site} has no page with <meta name=\"book-storage\">: the questions extension writes it")
+
+
 def write_service_worker(site: Path) -> str:
     """Write sw.js for the site as it is now; returns its version (a hash of the list)."""
     files = precache_list(site)
     version = hashlib.sha256(json.dumps(files).encode()).hexdigest()[:16]
     script = (HERE / "sw_template.js").read_text(encoding="utf-8")
-    script = script.replace("__VERSION__", version).replace(
+    script = script.replace("__VERSION__", version).replace("__BOOK_CACHES__", book_storage(site)["cache"]).replace(
         "__PRECACHE__", json.dumps([f for f, _ in files], indent=0))
     (site / SERVICE_WORKER).write_text(script, encoding="utf-8")
     return version

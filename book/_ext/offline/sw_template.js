@@ -5,11 +5,14 @@
  * first install (2 MB at most); each is kept once it has been opened (OPENED). */
 "use strict";
 var VERSION = "__VERSION__";
-var CACHE = "dynamics-" + VERSION;
+// The book's caches are named by its own prefix (physics_figures/topics.py storage_keys), so
+// two books on one host never drop each other's.
+var BOOK_CACHES = "__BOOK_CACHES__";
+var CACHE = BOOK_CACHES + VERSION;
 var PRECACHE = __PRECACHE__;
 // Downloads opened online, for offline. Online, the network always answers (a rebuilt PDF
 // replaces the kept one); a new build of the pages drops them with the old pages.
-var OPENED = "dynamics-opened-" + VERSION;
+var OPENED = BOOK_CACHES + "opened-" + VERSION;
 // Under the site's root (the worker's scope): the downloads offline/__init__.py leaves out of
 // PRECACHE (NOT_PRECACHED), but the zip: the whole book, to keep on disk, not in a cache. The
 // sheet builder's data (teachers/sheet-data.js, several hundred KB) is kept the same way, once
@@ -38,7 +41,7 @@ self.addEventListener("activate", function (event) {
         return Promise.all(
           names
             .filter(function (name) {
-              return name.indexOf("dynamics-") === 0 && name !== CACHE && name !== OPENED;
+              return name.indexOf(BOOK_CACHES) === 0 && name !== CACHE && name !== OPENED;
             })
             .map(function (name) {
               return caches.delete(name);

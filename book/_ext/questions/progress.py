@@ -194,7 +194,7 @@ def visit_practice_progress(self, node):
     html.append(
         '<section class="pp-file" aria-labelledby="pp-file-heading" hidden>'
         '<h2 id="pp-file-heading">Move or clear your progress</h2>'
-        # two lines on a phone: the page stays within two screens (tests/test_plan_browser.py)
+        # two lines on a phone: the page stays within two screens (tests/browser/test_plan_browser.py)
         "<p>Kept in this browser only: Export saves a file, and Import adds it on another device.</p>"
         '<p class="pp-student-line"><label for="pp-student">Your name, for the file</label> '
         '<input type="text" id="pp-student" class="pp-student" autocomplete="name" maxlength="80" size="16"></p>'

@@ -8,10 +8,14 @@ static/schedule.js as well, so no other page carries the scheduler's weight.
 
 from __future__ import annotations
 
+import json
 import shutil
+from html import escape
 from pathlib import Path
 
 from sphinx.errors import ExtensionError
+
+from . import store
 
 #: ts-fsrs's browser build, as `npm ci` installs it (package.json pins the version).
 TS_FSRS = Path(__file__).resolve().parents[3] / "node_modules" / "ts-fsrs" / "dist" / "index.umd.js"
@@ -43,5 +47,20 @@ def add_plan_scripts(app) -> None:
     app.add_js_file("schedule.js", loading_method="defer", priority=432)
 
 
+#: The meta tag that names the book's storage keys in every page (progress-store.js reads it, and
+#: book/_ext/offline names the service worker's caches by it).
+STORAGE_META = "book-storage"
+
+
+def add_storage_meta(app, pagename, templatename, context, doctree) -> None:
+    """Every page names the keys the book keeps its records under (physics_figures.topics
+    storage_keys of the book's id), so a book of another topic keeps its own with no script edited."""
+    from physics_figures.topics import storage_keys
+
+    keys = json.dumps(storage_keys(store.book_id(app.config)), separators=(",", ":"))
+    context["metatags"] = context.get("metatags", "") + f'\n<meta name="{STORAGE_META}" content="{escape(keys)}">'
+
+
 def setup(app) -> None:
     app.connect("config-inited", vendor_ts_fsrs)
+    app.connect("html-page-context", add_storage_meta)

@@ -161,7 +161,7 @@ def _build_finished(app: Sphinx, exception) -> None:
     copied = all((outdir / sheet).exists() for sheets in bundles.values() for sheet in sheets)
     for name, stylesheets in bundles.items() if copied else ():
         write_bundle(outdir, name, stylesheets)
-        # the bundle before pruning, beside the site (tests/test_css_pruning.py compares them)
+        # the bundle before pruning, beside the site (tests/browser/test_css_pruning.py compares them)
         unpruned = unpruned_bundle(outdir, name)
         unpruned.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(outdir / name, unpruned)

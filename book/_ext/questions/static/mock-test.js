@@ -13,7 +13,7 @@
   var Mock = root.MockDraw,
     Questions = root.MockQuestions,
     engine = root.QuestionMarking;
-  var STATE = "dynamics-mock-v1";
+  var STATE = root.ProgressStore.KEYS.mock;
 
   function loadState() {
     try {

@@ -93,18 +93,19 @@
     });
   }
 
-  /* The name an export is saved under: "dynamics-progress-NAME-DATE.json", NAME the student's
+  /* The name an export is saved under: "PREFIX-NAME-DATE.json" (PREFIX the book's KEYS.exports,
+   * "dynamics-progress" in Dynamics), NAME the student's
    * name made safe for a file name on any system (letters and digits of any script kept, every
    * run of other characters one "-", at most 40 characters), DATE yyyy-mm-dd; without a name,
-   * "dynamics-progress-DATE.json". */
-  function exportFileName(student, date) {
+   * "PREFIX-DATE.json". */
+  function exportFileName(student, date, prefix) {
     var safe = String(student || "")
       .normalize("NFC")
       .replace(/[^\p{L}\p{N}]+/gu, "-")
       .replace(/^-+|-+$/g, "")
       .slice(0, 40)
       .replace(/-+$/, "");
-    return "dynamics-progress-" + (safe ? safe + "-" : "") + date + ".json";
+    return prefix + "-" + (safe ? safe + "-" : "") + date + ".json";
   }
 
   var api = {

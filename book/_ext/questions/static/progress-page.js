@@ -243,7 +243,7 @@
     var today = new Date().toISOString().slice(0, 10);
     if (!read.ok) {
       // a format this page cannot read: copied out whole
-      var name = ProgressFile.exportFileName(page.nameInput.value.trim(), today);
+      var name = ProgressFile.exportFileName(page.nameInput.value.trim(), today, Store.KEYS.exports);
       download(getStored(Store.STORE) || getStored(Store.OLD_STORE), name);
       say(page, "Exported your progress to " + name + ".");
       return;
@@ -252,7 +252,7 @@
     if (!nameToExport(page, progress)) return;
     progress.schedule = Schedule.replay(progress);
     ProgressFile.exportFile(progress, page.data.book).then(function (out) {
-      var name = ProgressFile.exportFileName(out.student, today);
+      var name = ProgressFile.exportFileName(out.student, today, Store.KEYS.exports);
       download(JSON.stringify(out, null, 1), name);
       say(
         page,

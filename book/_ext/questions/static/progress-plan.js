@@ -5,7 +5,7 @@
  * store keeps (progress-store.js). Plain JavaScript, offline, no physics. The pure part (top)
  * runs under Node for the tests; the page code (bottom) in a browser.
  *
- * Start keeps a review queue in localStorage "dynamics-review-v1":
+ * Start keeps a review queue in localStorage ProgressStore.KEYS.review:
  *   {version: 1, home: URL of Your practice, at (ms), position: index of the card served,
  *    cards: [{id, type, url}]}
  * the cards due today, then the next ones (new cards from every type in turn, then the soonest
@@ -16,7 +16,6 @@
 
   var Progress = root.PracticeProgress || require("./progress.js");
 
-  var QUEUE = "dynamics-review-v1";
   // After the cards due today, Start serves this many more: enough for a session, not a list.
   var NEXT = 5;
   var DEFINITION = "definition:";
@@ -255,7 +254,6 @@
   }
 
   var api = {
-    QUEUE: QUEUE,
     NEXT: NEXT,
     interleave: interleave,
     pickNew: pickNew,
@@ -275,6 +273,7 @@
   if (typeof document === "undefined" || !root.ProgressStore || !root.Schedule) return;
   var Store = root.ProgressStore;
   var Schedule = root.Schedule;
+  var QUEUE = Store.KEYS.review;
 
   function link(href, text) {
     var a = document.createElement("a");

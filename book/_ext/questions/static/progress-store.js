@@ -3,8 +3,8 @@
  * no physics. The pure part (top) runs under Node for the tests; the browser part (bottom)
  * reads and writes localStorage.
  *
- * Format 2, under localStorage "dynamics-progress-v2":
- *   {version: 2, book: "dynamics", attempts: [attempt], definitions: {version: 1, cards: {slug:
+ * Format 2, under localStorage KEYS.progress (the book's, from the page):
+ *   {version: 2, book: BOOK, attempts: [attempt], definitions: {version: 1, cards: {slug:
  *    {mark, at}}}, mocks: [mock], schedule: {cardId: card}, student: "name"}
  * attempt: {question, type, variant, earned, available, at, mistakes: [names]} (format 1's
  *   fields) and help (working steps shown before the Check), seconds (from the numbers
@@ -19,23 +19,35 @@
  * schedule: each card's FSRS state as schedule.js last worked it out from the attempts (a
  *   copy for export: the attempts are the record, and the schedule is replayed from them).
  *
- * Format 1 ("dynamics-progress-v1", attempts and definitions only) is upgraded on reading,
+ * Format 1 (KEYS.oldProgress, attempts and definitions only) is upgraded on reading,
  * every attempt kept, and never deleted: an older build of the book still reads it. A store
  * of a version this page does not know is left exactly as it is and nothing is written over
  * it. */
 (function (root) {
   "use strict";
 
-  var STORE = "dynamics-progress-v2";
-  var OLD_STORE = "dynamics-progress-v1";
+  // The names this book keeps its records under, and its id: the build's (physics_figures/topics.py,
+  // storage_keys), read from the page, so a book of another topic keeps its own.
+  var KEYS = storageKeys();
+  var STORE = KEYS.progress;
+  var OLD_STORE = KEYS.oldProgress;
   var VERSION = 2;
-  var BOOK = "dynamics";
+  var BOOK = KEYS.book;
   var RATING = { again: 1, hard: 2, good: 3, easy: 4 };
   // Easy is full marks at the exam's pace or faster: 9702 Paper 2 gives 75 min for 60 marks,
   // 1.25 minutes a mark (CLARIFICATIONS, Plan).
   var SECONDS_A_MARK = 75;
   var DEFINITION = "definition:";
   var NAME_LENGTH = 80;
+
+  /* The page's <meta name="book-storage"> (every page of the book has it); under Node, where
+   * there is no page, the caller's globalThis.BOOK_STORAGE (tests/js/book_storage.js). */
+  function storageKeys() {
+    var meta = typeof document === "undefined" ? null : document.querySelector('meta[name="book-storage"]');
+    if (meta) return JSON.parse(meta.content);
+    if (typeof globalThis === "object" && globalThis.BOOK_STORAGE) return globalThis.BOOK_STORAGE;
+    throw new Error('progress-store.js: no <meta name="book-storage"> names the book\'s storage keys');
+  }
 
   function count(n) {
     return String(n);
@@ -292,6 +304,7 @@
   }
 
   var api = {
+    KEYS: KEYS,
     STORE: STORE,
     OLD_STORE: OLD_STORE,
     VERSION: VERSION,

@@ -1,7 +1,7 @@
 /* The part kinds' registry: QuestionKinds. Each part kind is one script in question-kinds/ (the
  * browser twin of its Python class in physics_figures/parts/, whose `browser_script` names it)
  * that registers itself here; nothing outside a kind's two modules and the two registries
- * branches on a kind's name (tests/test_kind_plugins.py checks). The page loads this file first,
+ * branches on a kind's name (tests/no_site/test_kind_plugins.py checks). The page loads this file first,
  * then each kind's script (book/_ext/questions/form.py, kind_scripts), then the engine. Under
  * Node, the first look-up loads every script in question-kinds/ (a test may register its own).
  *

@@ -10,7 +10,7 @@
   var Notation = root.Notation;
   var Kinds = root.QuestionKinds; // each part's kind reads, fills and relabels its own fieldset
 
-  var STORE = "dynamics-questions:";
+  var STORE = root.ProgressStore.KEYS.answers;
 
   function load(id) {
     try {

@@ -2,12 +2,12 @@
  * card being served says "Card 2 of 7" at its top from the start; after its Check
  * (questions.js's "q-checked") or its self-test mark (selftest.js's "st-marked"), a line
  * below it offers the next card, or, after the last, the way back to Your practice. The queue
- * is progress-plan.js's, in localStorage "dynamics-review-v1" ({home, position, cards: [{id,
+ * is progress-plan.js's, in localStorage ProgressStore.KEYS.review ({home, position, cards: [{id,
  * type, url}]}). Plain JavaScript, offline. */
 (function () {
   "use strict";
 
-  var QUEUE = "dynamics-review-v1";
+  var QUEUE = window.ProgressStore.KEYS.review;
   var DEFINITION = "definition:";
 
   /* The queue this page was sent with (from disk, the link carries it: progress-plan.js's

@@ -1,0 +1,114 @@
+"""A no-op rebuild redoes nothing, and an edit still reaches the site.
+
+The work done when the HTML build finishes is skipped when its inputs did not change
+(book/_ext/questions/variants.py: each template's variants and their graphs;
+book/_ext/offline: the search texts and the service worker, which read and hash the whole
+site). One small book (a copy of the project with its own physics_figures, as
+tests/build/test_fresh_figures_build.py makes) with a question that has a graph, built cold, then
+without a change, then after an edit to the graph's drawing code, to the question's
+numbers in the bank, and to a page's text: each must reach the site. And the LaTeX build
+(make latex, the first half of make pdf) between two HTML builds leaves the second one
+nothing to do: it keeps its own Sphinx environment.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+from test_fresh_figures_build import _build
+from test_fresh_figures_build import _project as _fresh_figures_project
+
+pytestmark = [pytest.mark.build]
+
+KEY = "graph-ball-acceleration"  # a template with a graph and New numbers (bank/drag.py)
+
+
+def _project(project: Path) -> None:
+    _fresh_figures_project(project)
+    (project / "book" / "question.md").write_text(f"# Question\n\nA ball falls.\n\n```{{question}} {KEY}\n```\n")
+    # two pages, no code cells: nothing to execute (test_fresh_figures_build.py covers that)
+    (project / "_toc.yml").write_text("format: jb-book\nroot: book/intro\nchapters:\n  - file: book/question\n")
+
+
+def _site(project: Path) -> dict[str, bytes]:
+    site = project / "_build" / "html"
+    return {p.relative_to(site).as_posix(): p.read_bytes() for p in sorted(site.rglob("*")) if p.is_file()}
+
+
+def _mtimes(project: Path, names: list[str]) -> dict[str, int]:
+    return {name: (project / "_build" / "html" / name).stat().st_mtime_ns for name in names}
+
+
+def _edit(path: Path, old: str, new: str) -> None:
+    text = path.read_text()
+    assert old in text, f"{path.name} no longer holds {old!r}: update this test"
+    path.write_text(text.replace(old, new, 1))
+
+
+def test_a_no_op_rebuild_rewrites_nothing_and_every_edit_reaches_the_site(tmp_path):
+    _project(tmp_path)
+    _build(tmp_path)
+    cold = _site(tmp_path)
+    variants = sorted(name for name in cold if name.startswith(f"_static/questions/{KEY}"))
+    assert f"_static/questions/{KEY}.js" in variants and f"_static/questions/{KEY}-1.svg" in variants
+    written_last = [*variants, "sw.js", "_static/search-texts.js"]
+    before = _mtimes(tmp_path, written_last)
+
+    log = _build(tmp_path)
+    assert "no targets are out of date" in log, log[-2000:]
+    assert _site(tmp_path) == cold, "a no-op rebuild changed the site"
+    assert _mtimes(tmp_path, written_last) == before, "a no-op rebuild wrote the variants or the service worker again"
+
+    # an output removed by hand is written again, though nothing else changed
+    (tmp_path / "_build" / "html" / "_static" / "questions" / f"{KEY}-1.svg").unlink()
+    _build(tmp_path)
+    assert _site(tmp_path) == cold, "a removed variant graph was not drawn again"
+
+    # the graph's drawing code: every variant's graph is drawn again
+    _edit(tmp_path / "physics_figures" / "figures" / "question_graph.py",
+          'color=colour("figure.grid-minor"), linewidth=0.5',
+          'color=colour("figure.grid-minor"), linewidth=0.7')
+    _build(tmp_path)
+    drawn = _site(tmp_path)
+    for name in (n for n in variants if n.endswith(".svg")):
+        assert drawn[name] != cold[name], f"{name} is stale after an edit to the graph's drawing code"
+    assert drawn["sw.js"] != cold["sw.js"], "the service worker still lists the old graphs' hashes"
+
+    # the question's numbers in the bank: the variants' data change
+    _edit(tmp_path / "physics_figures" / "bank" / "drag.py",
+          '{"terminal": Draw(20.0, 10.0, 25.0, 0.5)', '{"terminal": Draw(22.0, 10.0, 25.0, 0.5)')
+    _build(tmp_path)
+    renumbered = _site(tmp_path)
+    assert renumbered[f"_static/questions/{KEY}.js"] != drawn[f"_static/questions/{KEY}.js"], \
+        "the variants' script is stale after an edit to the bank"
+
+    # a page's text: its words reach the search texts (for a copy opened from disk)
+    with (tmp_path / "book" / "intro.md").open("a") as page:
+        page.write("\nA sentence about zebrafish.\n")
+    _build(tmp_path)
+    texts = (tmp_path / "_build" / "html" / "_static" / "search-texts.js").read_text()
+    assert re.search(r"zebrafish", texts), "the search texts are stale after a page edit"
+
+
+def test_the_latex_build_leaves_the_html_build_its_environment(tmp_path):
+    _project(tmp_path)
+    # parts, as the book's table of contents has: sphinx-jupyterbook-latex then numbers
+    # LaTeX's figures by chapter (numfig_secnum_depth), a setting the HTML build does not share
+    (tmp_path / "book" / "answers.md").write_text("# Answers\n\n```{answer-key}\n```\n")
+    (tmp_path / "_toc.yml").write_text(
+        "format: jb-book\nroot: book/intro\nparts:\n"
+        "  - caption: One\n    chapters:\n      - file: book/question\n"
+        "  - caption: Two\n    chapters:\n      - file: book/answers\n")
+    _build(tmp_path)
+    # an edit, so that the LaTeX build reads a page and saves its environment
+    with (tmp_path / "book" / "intro.md").open("a") as page:
+        page.write("\nA sentence about zebrafish.\n")
+    assert "build succeeded" in _build(tmp_path, "latex")
+
+    log = _build(tmp_path)
+    assert "config changed" not in log, "the LaTeX build changed the HTML build's environment:\n" + log[-2000:]
+    read = re.findall(r"reading sources\.\.\. \S*\[\s*\d+%\]\S* \S*book/(\w+)", log)
+    assert "question" not in read, f"the HTML build after the LaTeX build read an unchanged page again: {read}"
+    assert "intro" in read, f"the edited page was not read again: {read}"

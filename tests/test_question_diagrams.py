@@ -11,6 +11,7 @@ import re
 import pytest
 from browser import question_pages, shipped_variants
 from conftest import variant_param
+from support.sheet_data import joined_pages
 
 from physics_figures import bank
 from physics_figures.figures.question_diagram import question_diagram
@@ -98,4 +99,5 @@ def test_the_sheet_builder_s_sheets_carry_each_diagram():
     names = {name.rsplit("-", 1)[0] for name, picture in pictures if picture.__class__.__name__ == "Diagram"}
     assert set(DIAGRAMMED) <= names
     index = bank.TEMPLATES["puck-components"].reserve_variants[0]
-    assert f"<svg>puck-components-{index}</svg>" in data["variants"]["puck-components"][str(index)]["sheet"]
+    sheet = joined_pages(data, [("puck-components", index)])[("puck-components", str(index))]["sheet"]
+    assert f"<svg>puck-components-{index}</svg>" in sheet

@@ -12,10 +12,10 @@ reserve's indices) with, for each reserve variant, its sheet body and key body a
 (physics_figures.worksheets.html: the PDF key's information), its graph inline as SVG. Each is
 held as pieces, and a piece that several sheets and keys print (the question's text in its sheet
 and its key, a graph's axes and grid, a template's answer spaces) is held once
-(sheet_pieces.py): the file is half what it was whole. static/sheet-builder.js draws the sheets with static/question-draw.js, the
-one draw the command line runs too (physics_figures.worksheets.draw, under Node);
-static/sheet-builder-page.js only assembles the pages: it computes no physics and no key. The
-file is a script: the page fetches it and keeps it in its own cache (the Cache API) for offline
+(sheet_pieces.py): the file is half what it was whole. static/sheet-builder.js draws the sheets
+with static/question-draw.js, the one draw the command line runs too (physics_figures.worksheets.draw,
+under Node), and joins each sheet's and key's pieces; static/sheet-builder-page.js only assembles
+the pages: it computes no physics and no key. The file is a script: the page fetches it and keeps it in its own cache (the Cache API) for offline
 use, and from file://, where fetch() cannot read, a <script> element loads it.
 
 Working every reserve variant out and drawing 76 graphs takes most of a minute, so, as for the

@@ -216,17 +216,23 @@ def builder_index(topic) -> dict:
             "templates": templates}
 
 
-def builder_data(topic, graph_svg, keys: list[str] | None = None) -> dict:
-    """The index and, for each template's reserve variant, its sheet and key as HTML, cut into
-    pieces (sheet_pieces: what more than one variant prints is held once, in ``pieces``), with
-    its graph's id prefix. ``graph_svg(name, graph)`` gives a graph's inline SVG, its ids
-    prefixed by short_prefix(name). ``keys``: only these templates' variants (a test's few)."""
+def builder_data(topic, graph_svg) -> dict:
+    """The index and every reserve variant's sheet and key (builder_pages)."""
+    return {**builder_index(topic), **builder_pages(topic, graph_svg)}
+
+
+def builder_pages(topic, graph_svg, keys: list[str] | None = None) -> dict:
+    """For each bank template's reserve variant, its sheet and key as HTML, cut into pieces
+    (sheet_pieces: what more than one variant prints is held once, in ``pieces``), with its
+    graph's id prefix. ``graph_svg(name, graph)`` gives a graph's inline SVG, its ids prefixed
+    by short_prefix(name). ``keys``: only these templates' variants (a test's few)."""
+    from physics_figures.worksheets import bank_templates
     from physics_figures.worksheets.html import key_body, sheet_body
 
-    data = builder_index(topic)
     pages, texts = [], []
-    for template in (topic.by_key[entry["key"]] for entry in data["templates"]
-                     if keys is None or entry["key"] in keys):
+    for template in bank_templates(topic):
+        if keys is not None and template.key not in keys:
+            continue
         for index in template.reserve_variants:
             question = template.variant(index)
             picture = question.graph or question.diagram  # a graph to read, or the situation drawn
@@ -234,7 +240,7 @@ def builder_data(topic, graph_svg, keys: list[str] | None = None) -> dict:
             svg = "" if picture is None else graph_svg(name, picture)
             pages.append((template.key, str(index), short_prefix(name) if svg else ""))
             texts += [sheet_body(question, svg), key_body(question)]
-    return {**data, **shared_pages(pages, texts)}
+    return shared_pages(pages, texts)
 
 
 def shared_pages(pages: list[tuple[str, str, str]], texts: list[str]) -> dict:

@@ -10,6 +10,7 @@ import re
 
 import pytest
 from conftest import variant_param
+from support.sheet_data import joined_pages
 from support.templates import DIAGRAMMED, diagram_numbers
 
 from physics_figures import bank
@@ -54,11 +55,12 @@ def test_the_sheet_builder_s_sheets_carry_each_diagram():
     from pathlib import Path
 
     sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "book" / "_ext"))
-    from questions.sheet_builder import builder_data
+    from questions.sheet_builder import builder_pages
 
     pictures = []
-    data = builder_data(bank.TOPIC, lambda name, picture: pictures.append((name, picture)) or f"<svg>{name}</svg>")
+    data = builder_pages(bank.TOPIC, lambda name, picture: pictures.append((name, picture)) or f"<svg>{name}</svg>")
     names = {name.rsplit("-", 1)[0] for name, picture in pictures if picture.__class__.__name__ == "Diagram"}
     assert set(DIAGRAMMED) <= names
     index = bank.TEMPLATES["puck-components"].reserve_variants[0]
-    assert f"<svg>puck-components-{index}</svg>" in data["variants"]["puck-components"][str(index)]["sheet"]
+    sheet = joined_pages(data, [("puck-components", index)])[("puck-components", str(index))]["sheet"]
+    assert f"<svg>puck-components-{index}</svg>" in sheet

@@ -6,11 +6,13 @@ this checks what each feeds it (the builder its data file, the command line the 
 back (tests/js/sheet_plan.js runs the builder). And no second draw: the Python package holds none.
 
 Also the HTML the builder prints (physics_figures.worksheets.html): a key holds what the PDF
-key holds, and a graph inlined into a page keeps its references, with ids of its own."""
+key holds, a graph inlined into a page keeps its references, with ids of its own, and the data
+file's pieces join into that HTML as physics_figures wrote it."""
 
 from __future__ import annotations
 
 import functools
+import json
 import re
 import sys
 from pathlib import Path
@@ -25,8 +27,10 @@ from physics_figures.worksheets.latex import ecf_note, wrong_answers
 ROOT = Path(__file__).resolve().parents[2]
 RUNNER = ROOT / "tests" / "js" / "sheet_plan.js"
 sys.path.insert(0, str(ROOT / "book" / "_ext"))
-from questions.sheet_builder import builder_index, inline_svg
+from questions.sheet_builder import builder_index, builder_pages, inline_svg, short_prefix
+from questions.sheet_pieces import LONGEST_WHOLE
 from support.engine import node_json
+from support.sheet_data import joined_pages
 
 TOPIC = topics.load("physics_figures.bank")
 TYPES = [kind.key for kind in TOPIC.types]
@@ -144,3 +148,47 @@ def test_a_graph_inlined_keeps_its_references_with_ids_of_its_own():
     assert ids and all(i.startswith("k-3-") for i in ids)
     assert referred <= set(ids)  # every reference finds its element
     assert svg.startswith("<svg") and 'role="img"' in svg and "<metadata" not in svg and "\n" not in svg
+
+
+#: a graph, a diagram, a choice question (its text kept with its options), a sketch, text parts
+JOINED = ["graph-kick-force-time", "puck-components", "falling-graph-choice", "sketch-bounce-force",
+          "state-first-law", "practice-towing"]
+
+
+def _graph_svg(name: str) -> str:
+    """A stand-in for a graph as the build draws it (inline_svg; the site's test joins the drawn
+    ones): the same axes and grid in every variant, a line of the variant's own, and ids of its
+    own that both refer to."""
+    prefix = short_prefix(name)
+    grid = "".join(f"M{x} 200V10" for x in range(40, 300, 5))
+    return (f'<svg viewBox="0 0 300 240" role="img" aria-label="A graph."><g><g><path d="{grid}" '
+            f'clip-path="url(#{prefix}0)"/></g><g><path d="M40 200L{len(name)} 50" '
+            f'clip-path="url(#{prefix}0)"/></g></g>'
+            f'<defs><clipPath id="{prefix}0"><rect x="40" y="10" width="250" height="190"/></clipPath></defs></svg>')
+
+
+def test_the_builder_joins_each_variant_s_sheet_and_key_as_physics_figures_wrote_them():
+    """The data file holds each sheet and key as pieces, a piece that several print once
+    (sheet_pieces.py); the builder's page joins them (sheet-builder.js, variantHtml) into the
+    HTML physics_figures wrote, byte for byte, each graph with its own ids."""
+    graphs: dict[str, str] = {}
+    data = builder_pages(TOPIC, lambda name, _: graphs.setdefault(name, _graph_svg(name)), keys=JOINED)
+    joined = joined_pages(data)
+    assert {key for key, _ in joined} == set(JOINED)
+    written = texts_held_once = 0
+    held = data["pieces"] + [p for v in data["variants"].values() for page in v.values()
+                             for p in page["sheet"] + page["key"] if isinstance(p, str)]
+    for (key, variant), page in joined.items():
+        question = TOPIC.by_key[key].variant(int(variant))
+        sheet = sheet_body(question, graphs.get(f"{key}-{variant}", ""))
+        assert page["sheet"] == sheet, (key, variant)
+        assert page["key"] == key_body(question), (key, variant)
+        if len(question.text_html()) > LONGEST_WHOLE:  # a short text is in one short piece with its <div>
+            assert sum(piece.count(question.text_html()) for piece in held) == 1, (key, variant)  # for both
+            texts_held_once += 1
+        written += len(sheet) + len(page["key"])
+    ids = re.findall(r'\sid="([^"]+)"', "".join(page["sheet"] for page in joined.values()))
+    assert len(ids) == len(set(ids)) >= len(graphs)  # each graph's ids its own
+    assert texts_held_once >= 30
+    held_bytes = len(json.dumps([data["pieces"], data["variants"]], ensure_ascii=False))
+    assert held_bytes < 0.7 * written, f"{held_bytes:,} of {written:,}"  # these templates: 0.65

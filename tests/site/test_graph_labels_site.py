@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import html
 import itertools
-import json
 import re
 import subprocess
 import xml.etree.ElementTree as ET
@@ -28,6 +27,7 @@ import pytest
 from matplotlib.font_manager import FontProperties
 from matplotlib.textpath import text_to_path
 from support.printed_numbers import too_many_figures
+from support.sheet_data import joined_pages, read_sheet_data
 
 from physics_figures import bank
 from physics_figures.figures.style import book_style
@@ -120,21 +120,14 @@ def site_graphs(site_dir: Path) -> dict[str, str]:
 
 
 def builder_graphs(site_dir: Path) -> dict[str, str]:
-    """The sheet builder's graphs: every inline SVG in its data that is a question graph (a
-    question's diagram, whose label starts "Diagram.", is not one)."""
-    script = (site_dir / "teachers" / "sheet-data.js").read_text(encoding="utf-8")
-    data = json.loads(script[script.index("{"):script.rindex("}") + 1])
-    found, stack = {}, [data]
-    while stack:
-        item = stack.pop()
-        if isinstance(item, dict):
-            stack += item.values()
-        elif isinstance(item, list):
-            stack += item
-        elif isinstance(item, str) and "<svg" in item:
-            for number, svg in enumerate(re.findall(r"<svg\b.*?</svg>", item, re.DOTALL)):
-                if 'aria-label="Diagram.' not in svg and all(tick_labels(svg)):
-                    found[f"sheet-data graph {len(found)}.{number}"] = svg
+    """The sheet builder's graphs: every inline SVG of its sheets, joined as the builder joins
+    them, that is a question graph (a question's diagram, whose label starts "Diagram.", is not
+    one)."""
+    found = {}
+    for (key, variant), page in joined_pages(read_sheet_data(site_dir)).items():
+        for number, svg in enumerate(re.findall(r"<svg\b.*?</svg>", page["sheet"] + page["key"], re.DOTALL)):
+            if 'aria-label="Diagram.' not in svg and all(tick_labels(svg)):
+                found[f"sheet-data graph {key}-{variant}.{number}"] = svg
     return found
 
 

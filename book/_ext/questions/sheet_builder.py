@@ -8,12 +8,14 @@ finishes, this module writes the teachers-only data the builder reads, ``teacher
 (not under _static: the site's own pages never load it, and the service worker keeps it only once
 it has been opened, outside the first install). It holds, from physics_figures, the topic's types
 (titles, exam counts) and every bank template (key, type, title, marks, one-wording flag, the
-reserve's indices) with, for each reserve variant, its parts (label, prompt, marks), its sheet
-body and key body as HTML (physics_figures.worksheets.html: the PDF key's information) and its
-graph as inline SVG. static/sheet-builder.js draws the sheets with static/question-draw.js, the
-one draw the command line runs too (physics_figures.worksheets.draw, under Node);
-static/sheet-builder-page.js only assembles the pages: it computes no physics and no key. The
-file is a script: the page fetches it and keeps it in its own cache (the Cache API) for offline
+reserve's indices) with, for each reserve variant, its sheet body and key body as HTML
+(physics_figures.worksheets.html: the PDF key's information), its graph inline as SVG. Each is
+held as pieces, and a piece that several sheets and keys print (the question's text in its sheet
+and its key, a graph's axes and grid, a template's answer spaces) is held once
+(sheet_pieces.py): the file is half what it was whole. static/sheet-builder.js draws the sheets
+with static/question-draw.js, the one draw the command line runs too (physics_figures.worksheets.draw,
+under Node), and joins each sheet's and key's pieces; static/sheet-builder-page.js only assembles
+the pages: it computes no physics and no key. The file is a script: the page fetches it and keeps it in its own cache (the Cache API) for offline
 use, and from file://, where fetch() cannot read, a <script> element loads it.
 
 Working every reserve variant out and drawing 76 graphs takes most of a minute, so, as for the
@@ -36,6 +38,7 @@ from sphinx.util.docutils import SphinxDirective
 from svg_compact import ID_ATTRIBUTE, XML_HEAD, compact_svg  # book/_ext: a graph in fewer bytes
 
 from . import store
+from .sheet_pieces import ID_MARK, cut, share
 from .variants import _code, _sha256, _unchanged, _write
 
 DIRECTIVE = "sheet-builder"
@@ -214,23 +217,46 @@ def builder_index(topic) -> dict:
 
 
 def builder_data(topic, graph_svg) -> dict:
-    """The index and, for each template's reserve variant, its parts (label, prompt, marks)
-    and its sheet and key as HTML. ``graph_svg(name, graph)`` gives a graph's inline SVG."""
+    """The index and every reserve variant's sheet and key (builder_pages)."""
+    return {**builder_index(topic), **builder_pages(topic, graph_svg)}
+
+
+def builder_pages(topic, graph_svg, keys: list[str] | None = None) -> dict:
+    """For each bank template's reserve variant, its sheet and key as HTML, cut into pieces
+    (sheet_pieces: what more than one variant prints is held once, in ``pieces``), with its
+    graph's id prefix. ``graph_svg(name, graph)`` gives a graph's inline SVG, its ids prefixed
+    by short_prefix(name). ``keys``: only these templates' variants (a test's few)."""
+    from physics_figures.worksheets import bank_templates
     from physics_figures.worksheets.html import key_body, sheet_body
 
-    data = builder_index(topic)
-    data["variants"] = {}
-    for template in (topic.by_key[entry["key"]] for entry in data["templates"]):
-        pages = data["variants"][template.key] = {}
+    pages, texts = [], []
+    for template in bank_templates(topic):
+        if keys is not None and template.key not in keys:
+            continue
         for index in template.reserve_variants:
             question = template.variant(index)
             picture = question.graph or question.diagram  # a graph to read, or the situation drawn
-            svg = "" if picture is None else graph_svg(f"{template.key}-{index}", picture)
-            pages[str(index)] = {
-                "parts": [{"label": question.label(i), "prompt": part.prompt, "marks": marks}
-                          for i, (part, marks) in enumerate(zip(question.parts, question.part_marks(), strict=True))],
-                "sheet": sheet_body(question, svg), "key": key_body(question)}
-    return data
+            name = f"{template.key}-{index}"
+            svg = "" if picture is None else graph_svg(name, picture)
+            pages.append((template.key, str(index), short_prefix(name) if svg else ""))
+            texts += [sheet_body(question, svg), key_body(question)]
+    return shared_pages(pages, texts)
+
+
+def shared_pages(pages: list[tuple[str, str, str]], texts: list[str]) -> dict:
+    """``pieces`` and ``variants``: each page's (key, index, graph's id prefix) sheet and key
+    (``texts``: a sheet, then its key) as pieces, a graph's ids written ID_MARK."""
+    marked = []
+    for (key, index, ids), text in zip([p for p in pages for _ in (0, 1)], texts, strict=True):
+        if ID_MARK in text:
+            raise ExtensionError(f"sheet_builder: {key}-{index} prints {ID_MARK!r}, the graphs' id mark")
+        marked.append(cut(text.replace(ids, ID_MARK) if ids else text))
+    pieces, lists = share(marked)
+    variants: dict[str, dict] = {}
+    for n, (key, index, ids) in enumerate(pages):
+        variants.setdefault(key, {})[index] = {"sheet": lists[2 * n], "key": lists[2 * n + 1],
+                                               **({"ids": ids} if ids else {})}
+    return {"idMark": ID_MARK, "pieces": pieces, "variants": variants}
 
 
 def write_data(app, exception):
@@ -242,7 +268,7 @@ def write_data(app, exception):
     record_file = record_path(outdir)
     last = json.loads(record_file.read_text()) if record_file.exists() else {}
     modules = [*store.bank_modules(app.config), *SOURCES]
-    inputs = _code(app, modules, (Path(__file__),))
+    inputs = _code(app, modules, (Path(__file__), Path(__file__).with_name("sheet_pieces.py")))
     readme = Path(app.confdir) / "README.md"
     if readme.is_file():  # a small copy, redone only when it changed
         (outdir / README).parent.mkdir(parents=True, exist_ok=True)

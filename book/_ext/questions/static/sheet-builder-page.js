@@ -15,6 +15,7 @@
   var plan = root.SheetBuilder.plan;
   var SheetError = root.SheetBuilder.SheetError;
   var readyMadeRepeats = root.SheetBuilder.readyMadeRepeats;
+  var variantHtml = root.SheetBuilder.variantHtml;
   /* The page's own cache of the data file (not "dynamics-…": a new build's worker keeps it). */
   var KEPT = "sheet-builder-data";
   if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", start);
@@ -51,7 +52,7 @@
       .join("");
     var questions = version.items
       .map(function (item, i) {
-        var page = data.variants[item.template.key][String(item.variant)];
+        var page = variantHtml(data, item.template.key, item.variant);
         return (
           '<section class="sb-question" data-question="' +
           esc(item.template.key) +
@@ -104,7 +105,7 @@
   function keyHtml(data, sheet, version, made) {
     var questions = version.items
       .map(function (item, i) {
-        var page = data.variants[item.template.key][String(item.variant)];
+        var page = variantHtml(data, item.template.key, item.variant);
         return (
           '<section class="sb-key-question"><h4>Question ' +
           (i + 1) +

@@ -87,7 +87,25 @@
     return { title: "Worksheet: " + titles.join("; "), seed: options.seed, marks: options.marks, versions: out };
   }
 
+  /* A variant's sheet and key as HTML ({sheet, key}), joined from their pieces in the data file
+   * (sheet_pieces.py): a piece is HTML, or the number of one the file holds once (data.pieces)
+   * for every sheet and key that prints it; a graph's ids are written data.idMark, for the
+   * variant's own prefix (page.ids). */
+  function variantHtml(data, key, variant) {
+    var page = data.variants[key][String(variant)];
+    function join(pieces) {
+      var html = pieces
+        .map(function (piece) {
+          return typeof piece === "number" ? data.pieces[piece] : piece;
+        })
+        .join("");
+      return page.ids ? html.split(data.idMark).join(page.ids) : html;
+    }
+    return { sheet: join(page.sheet), key: join(page.key) };
+  }
+
   var api = {
+    variantHtml: variantHtml,
     readyMadeRepeats: readyMadeRepeats,
     plan: plan,
     SheetError: Draw.DrawError,

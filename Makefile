@@ -105,13 +105,16 @@ moodle: venv
 	$(BIN)/python -m physics_figures.worksheets.moodle $(TEACHERS)/dynamics-moodle.xml
 
 # The tests that need no site (models, questions, the small books of the build tests) start
-# beside the book's build, on one core. Once the book is built, the tests of the built site
-# and the browser tests run on both cores (pytest-xdist, each test module on one worker with
-# its own Chromium), while the first run finishes; then the tests that measure speed (marker
-# alone: Lighthouse) run by themselves. The reports follow in that order; the runs together
-# are the suite.
+# beside the book's build. Once the book is built, the tests of the built site and the browser
+# tests run on both cores (pytest-xdist, each test module on one worker with its own Chromium),
+# while the first run finishes; then the tests that measure speed (marker alone: Lighthouse)
+# run by themselves. The reports follow in that order; the runs together are the suite.
+# The first run has two workers too, a module each, at a lower priority (nice): they take
+# what the book and the site's tests leave of both cores, so no core waits while the other
+# finishes it (on one worker the second core stood idle for its last minutes).
 NO_SITE := not site and not browser
 NO_SITE_LOG := _build/tests-without-site.log
+NO_SITE_TESTS := -p no:cacheprovider -m "$(NO_SITE)" -n 2 --dist loadscope
 SITE_TESTS := -m "not ($(NO_SITE)) and not alone" -n 2 --dist loadscope
 # The modules that mark a test `alone`: the run that measures speed collects only them (the
 # whole suite's ten thousand tests take seconds to collect while the machine is otherwise idle).
@@ -126,7 +129,7 @@ test:
 	@$(MAKE) --no-print-directory jslint
 	@mkdir -p _build
 	@echo ">>> building the book; beside it, the tests that need no site (report: $(NO_SITE_LOG))"
-	@$(BIN)/python -m pytest -p no:cacheprovider -m "$(NO_SITE)" >$(NO_SITE_LOG) 2>&1 & tests=$$!; \
+	@nice -n 5 $(BIN)/python -m pytest $(NO_SITE_TESTS) >$(NO_SITE_LOG) 2>&1 & tests=$$!; \
 	  $(MAKE) --no-print-directory book || { kill $$tests; wait $$tests; exit 1; }; \
 	  echo ">>> the tests of the built site, in Chromium too, on both cores"; \
 	  $(BIN)/python -m pytest $(SITE_TESTS) && site=0 || site=$$?; \

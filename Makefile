@@ -144,14 +144,15 @@ test:
 # The fast loop: ruff, ESLint, Prettier and every test that needs no build and no browser
 # (models, marking rules, questions, notation), with three variants of each template
 # (--sample-variants, tests/conftest.py; make test tests every one). Under a minute: pytest
-# runs on both cores (pytest-xdist), ESLint and Prettier beside it.
+# runs on both cores (pytest-xdist), ESLint and Prettier beside it. A worker takes a whole
+# module (--dist loadscope), so a module's fixtures and caches are made once, not on both.
 # .pre-commit-config.yaml runs these same commands.
 .PHONY: check
 check: venv node_modules/.package-lock.json
 	$(BIN)/ruff check $(LINTED)
 	$(MAKE) --no-print-directory jslint & jslint=$$!; \
 	  $(BIN)/python -m pytest -m "not site and not browser and not build and not network" -q \
-	    --sample-variants -n 2 || { wait $$jslint; exit 1; }; \
+	    --sample-variants -n 2 --dist loadscope || { wait $$jslint; exit 1; }; \
 	  wait $$jslint
 
 # The site's JavaScript: ESLint (eslint.config.mjs) and Prettier's layout (.prettierrc.json;

@@ -105,14 +105,18 @@ moodle: venv
 	$(BIN)/python -m physics_figures.worksheets.moodle $(TEACHERS)/dynamics-moodle.xml
 
 # The tests that need no site (models, questions, the small books of the build tests) start
-# beside the book's build, on one core. Once the book is built, the tests of the built site
-# and the browser tests run on both cores (pytest-xdist, each test module on one worker with
-# its own Chromium), while the first run finishes; then the tests that measure speed (marker
-# alone: Lighthouse) run by themselves. The reports follow in that order; the runs together
-# are the suite.
-NO_SITE := not site and not browser
+# beside the book's build. Once the book is built, the tests of the built site and the browser
+# tests run on both cores (pytest-xdist, each test module on one worker with its own Chromium),
+# while the first run finishes; then the tests that measure speed (marker alone: Lighthouse)
+# run by themselves. The reports follow in that order; the runs together are the suite.
+# The first run has two workers too, a module each, at a lower priority (nice): they take
+# what the book and the site's tests leave of both cores, so no core waits while the other
+# finishes it (on one worker the second core stood idle for its last minutes).
+# The test folders follow the markers (tests/conftest.py), so each run names its folders and
+# collects only their modules.
 NO_SITE_LOG := _build/tests-without-site.log
-SITE_TESTS := -m "not ($(NO_SITE)) and not alone" -n 2 --dist loadscope
+NO_SITE_TESTS := -p no:cacheprovider tests/no_site tests/build tests/network -n 2 --dist loadscope
+SITE_TESTS := tests/site tests/browser -m "not alone" -n 2 --dist loadscope
 # The modules that mark a test `alone`: the run that measures speed collects only them (the
 # whole suite's ten thousand tests take seconds to collect while the machine is otherwise idle).
 ALONE_FILES = $(shell grep -l "mark\.alone" tests/browser/test_*.py)
@@ -126,7 +130,7 @@ test:
 	@$(MAKE) --no-print-directory jslint
 	@mkdir -p _build
 	@echo ">>> building the book; beside it, the tests that need no site (report: $(NO_SITE_LOG))"
-	@$(BIN)/python -m pytest -p no:cacheprovider -m "$(NO_SITE)" >$(NO_SITE_LOG) 2>&1 & tests=$$!; \
+	@nice -n 5 $(BIN)/python -m pytest $(NO_SITE_TESTS) >$(NO_SITE_LOG) 2>&1 & tests=$$!; \
 	  $(MAKE) --no-print-directory book || { kill $$tests; wait $$tests; exit 1; }; \
 	  echo ">>> the tests of the built site, in Chromium too, on both cores"; \
 	  $(BIN)/python -m pytest $(SITE_TESTS) && site=0 || site=$$?; \
@@ -141,14 +145,15 @@ test:
 # The fast loop: ruff, ESLint, Prettier and every test that needs no build and no browser
 # (models, marking rules, questions, notation), with three variants of each template
 # (--sample-variants, tests/conftest.py; make test tests every one). Under a minute: pytest
-# runs on both cores (pytest-xdist), ESLint and Prettier beside it.
+# runs on both cores (pytest-xdist), ESLint and Prettier beside it. A worker takes a whole
+# module (--dist loadscope), so a module's fixtures and caches are made once, not on both.
 # .pre-commit-config.yaml runs these same commands.
 .PHONY: check
 check: venv node_modules/.package-lock.json
 	$(BIN)/ruff check $(LINTED)
 	$(MAKE) --no-print-directory jslint & jslint=$$!; \
-	  $(BIN)/python -m pytest -m "not site and not browser and not build and not network" -q \
-	    --sample-variants -n 2 || { wait $$jslint; exit 1; }; \
+	  $(BIN)/python -m pytest tests/no_site -q --sample-variants -n 2 --dist loadscope \
+	    || { wait $$jslint; exit 1; }; \
 	  wait $$jslint
 
 # The site's JavaScript: ESLint (eslint.config.mjs) and Prettier's layout (.prettierrc.json;

@@ -12,6 +12,7 @@ import ast
 import re
 import subprocess
 import sys
+from functools import cache
 from pathlib import Path
 
 from support.programs import ENSURE, TABLE, table
@@ -65,6 +66,7 @@ def programs_run_by(source: Path, wrappers: frozenset[str] = frozenset()) -> set
     return found
 
 
+@cache  # two tests read it: the sources are parsed once (the tests only read the result)
 def all_programs() -> dict[str, set[str]]:
     """program -> the files that run it."""
     runs: dict[str, set[str]] = {}

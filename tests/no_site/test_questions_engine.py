@@ -76,14 +76,14 @@ def _question_cases(question: q.Question, name: str):
             yield where, what, data, _answer(part, value, sig_figs=3, exact=True), ("rounded-part-way", None)
 
 
-CASES = list(_cases())
-
-
 def test_every_question_marks_its_own_answer_right_and_names_each_mistake():
-    results = mark_all([{"part": data, "answer": answer} for _, _, data, answer, _ in CASES])
+    # made here, not when the module is collected: every process that collects the suite (each
+    # xdist worker, the site's runs) would make every variant's marking data for one test
+    cases = list(_cases())
+    results = mark_all([{"part": data, "answer": answer} for _, _, data, answer, _ in cases])
     wrong = [
         f"{where} {what}: typed {answer} -> {got['code']} {got.get('mistake')} ({got['message']})"
-        for (where, what, _, answer, expected), got in zip(CASES, results, strict=True)
+        for (where, what, _, answer, expected), got in zip(cases, results, strict=True)
         if (got["code"], got.get("mistake")) != expected
     ]
     assert not wrong, "\n".join(wrong)

@@ -1,7 +1,7 @@
 """The typeset sheets as a printer gives them (issue 37): a choice question's stem, options and
 answer box on one page, and a key's "[6 marks]" on one line. The site's sheets that hold choice
-questions (physics_figures.worksheets.site_sheets), typeset here by xelatex and read back page by
-page with pdftotext."""
+questions (physics_figures.worksheets.site_sheets), as `make book` typesets them into the site
+(make worksheets), read back page by page with pdftotext."""
 
 from __future__ import annotations
 
@@ -13,9 +13,8 @@ from sheet_pages import split_choices
 from support.pdf import pdf_pages
 
 from physics_figures.worksheets import site_sheets
-from physics_figures.worksheets.build import typeset, write_sources
 
-pytestmark = [pytest.mark.build]
+pytestmark = [pytest.mark.site]
 
 SHEETS = [sheet for sheet in site_sheets()
           if any(part.kind == "mcq" for item in sheet.versions[0].items for part in item.question.parts)]
@@ -23,11 +22,16 @@ KEYS = "end-of-topic-test"  # the keys with the longest headers: every type's ti
 
 
 @pytest.fixture(scope="module")
-def typeset_sheets(tmp_path_factory):
-    out = tmp_path_factory.mktemp("sheets")
-    jobs = [job for job in write_sources(SHEETS, out) if "-key-" not in job.jobname or job.jobname.startswith(KEYS)]
-    typeset(jobs)
-    return out
+def typeset_sheets(site_dir):
+    """The site's typeset sheets: the same sources and the same xelatex as a sheet typeset here
+    (physics_figures.worksheets.build), so the tests read those rather than typeset them again."""
+    teachers = site_dir / "teachers"
+    for sheet in SHEETS:
+        for name in [f"{sheet.name}-{v.letter}.pdf" for v in sheet.versions] + (
+                [f"{KEYS}-key-{v.letter}.pdf" for v in sheet.versions] if sheet.name == KEYS else []):
+            if not (teachers / name).exists():
+                pytest.fail(f"no {name} in {teachers}: run `make worksheets` (make book builds it)")
+    return teachers
 
 
 def test_sheets_with_choice_questions_are_typeset():

@@ -123,10 +123,12 @@ def _percent_lost(before, after):
 
 
 def _most_percent_lost(m1, u1, m2, u2):
-    """Percentage of kinetic energy lost by sticking together: the most any collision loses."""
+    """Percentage of kinetic energy lost by sticking together: the most any collision loses.
+    Never below 0: when A barely catches B, rounding can make the two energies' difference a
+    hair negative (about -1e-14 %), and a collision losing 0 % would then be refused."""
     v = stick_together(m1, u1, m2, u2)
-    return _percent_lost(total_kinetic_energy((m1, m2), (u1, u2)),
-                         total_kinetic_energy((m1, m2), (v, v)))
+    return max(0.0, _percent_lost(total_kinetic_energy((m1, m2), (u1, u2)),
+                                  total_kinetic_energy((m1, m2), (v, v))))
 
 
 def _collision_lab_options(kind, u1, u2, velocity_a_after, percent_lost):

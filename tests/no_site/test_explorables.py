@@ -7,7 +7,7 @@ import re
 from pathlib import Path
 
 import pytest
-from hypothesis import given
+from hypothesis import example, given
 from hypothesis import strategies as st
 
 from physics_figures import models, scenarios
@@ -83,6 +83,8 @@ def test_the_lab_refuses_an_explosion_that_sends_a_through_b():
 
 
 @given(m1=masses, u1=velocities, m2=masses, u2=velocities, share=st.floats(0, 1))
+# A barely catches B: sticking together loses -1.2e-14 % by rounding, and 0 % was refused
+@example(m1=1.0, u1=0.10000000000000002, m2=0.5, u2=0.1, share=0.0)
 def test_every_accepted_collision_conserves_momentum_and_never_creates_kinetic_energy(m1, u1, m2, u2, share):
     for kind in ("elastic", "stick", "loss"):
         most = collision_lab("stick", m1=m1, u1=u1, m2=m2, u2=u2).most_percent_lost

@@ -308,10 +308,12 @@
     return before > 0 ? percentageKineticEnergyLost(before, after) : 0;
   }
 
-  /** Percentage of the kinetic energy lost by sticking together: the most any collision loses. */
+  /** Percentage of the kinetic energy lost by sticking together: the most any collision loses.
+   * Never below 0 (rounding, when A barely catches B: as the Python twin). */
   function mostPercentLost(m1, u1, m2, u2) {
     var v = stickTogether(m1, u1, m2, u2);
-    return percentLost(totalKineticEnergy([m1, m2], [u1, u2]), totalKineticEnergy([m1, m2], [v, v]));
+    var lost = percentLost(totalKineticEnergy([m1, m2], [u1, u2]), totalKineticEnergy([m1, m2], [v, v]));
+    return Math.max(0, lost);
   }
 
   /**

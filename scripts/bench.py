@@ -38,13 +38,13 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 from bench_make_test import carry_over, replace_section
 from browser import (
-    CHROMIUM_ARGS,
     FIRST_VISIT_REQUESTS,
     FIRST_VISIT_SHARE,
     LIGHTHOUSE_RUNS,
     QUESTION_DATA_BYTES,
     PageVisitor,
     chromium_path,
+    lighthouse_runs,
     median_scores,
     node_module,
     open_browser_async,
@@ -338,49 +338,13 @@ async def class_page_load_time(site: Path) -> float:
     return best
 
 
-LIGHTHOUSE_RUNNER = """
-// Lighthouse over many URLs with one Chrome: node runner.mjs OUT URL...
-import fs from 'fs';
-import lighthouse from 'lighthouse';
-import * as chromeLauncher from 'chrome-launcher';
-const [out, ...urls] = process.argv.slice(2);
-const chrome = await chromeLauncher.launch({chromeFlags: JSON.parse(process.env.LH_FLAGS)});
-const scores = {};
-for (const url of urls) {
-  const result = await lighthouse(url, {port: chrome.port, output: 'json', logLevel: 'error',
-    onlyCategories: ['performance', 'accessibility', 'best-practices', 'seo']});
-  const lhr = result.lhr;
-  scores[url] = Object.fromEntries(Object.entries(lhr.categories).map(([k, v]) => [k, v.score]));
-  scores[url].fcp = lhr.audits['first-contentful-paint'].numericValue;
-  scores[url].lcp = lhr.audits['largest-contentful-paint'].numericValue;
-}
-await chrome.kill();
-fs.writeFileSync(out, JSON.stringify(scores));
-"""
-
-
 LIGHTHOUSE_GOAL = {"performance": 0.97, "accessibility": 1.0, "best-practices": 1.0, "seo": 1.0}
 
 
 def _lighthouse_run(site: Path, pages: list[str]) -> dict[str, dict]:
     """One Lighthouse run over `pages` (one Chrome, one page after another)."""
-    node_module("lighthouse")
-    with serve_site(site) as base, tempfile.TemporaryDirectory() as folder:
-        runner = ROOT / "node_modules" / ".bench-lighthouse.mjs"  # beside lighthouse, to import it
-        runner.write_text(LIGHTHOUSE_RUNNER)
-        out = Path(folder) / "scores.json"
-        env = {**os.environ, "CHROME_PATH": chromium_path(whole_browser=True), "LH_FLAGS": json.dumps(CHROMIUM_ARGS)}
-        try:
-            result = subprocess.run(
-                ["node", str(runner), str(out), *[f"{base}/{p}" for p in pages]],
-                env=env, capture_output=True, text=True, timeout=3600, check=False,
-            )
-        finally:
-            runner.unlink()
-        if result.returncode != 0:
-            raise SystemExit(f"lighthouse failed:\n{result.stderr[-3000:]}")
-        scores = json.loads(out.read_text())
-    return {url.split("/", 3)[3]: value for url, value in scores.items()}
+    with serve_site(site) as base:
+        return dict(zip(pages, lighthouse_runs([f"{base}/{page}" for page in pages]), strict=True))
 
 
 def lighthouse_scores(site: Path, pages: list[str]) -> dict[str, dict]:

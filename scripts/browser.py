@@ -21,10 +21,13 @@ import hashlib
 import http.server
 import io
 import json
+import os
 import re
 import shutil
 import statistics
+import subprocess
 import sys
+import tempfile
 import threading
 import time
 import urllib.request
@@ -445,6 +448,25 @@ def shipped_variants(script: Path) -> list[dict]:
 #: median of (CLARIFICATIONS, House: as Lighthouse CI aggregates its runs).
 LIGHTHOUSE_CATEGORIES = ("performance", "accessibility", "best-practices", "seo")
 LIGHTHOUSE_RUNS = 3
+
+
+#: Runs Lighthouse through one Chrome, URL after URL (Lighthouse's node API).
+LIGHTHOUSE_RUNNER = ROOT / "scripts" / "lighthouse_runs.mjs"
+
+
+def lighthouse_runs(urls: list[str]) -> list[dict[str, float | None]]:
+    """Lighthouse (npm, pinned; mobile) on each of `urls` in turn, one Chrome for them all (a URL
+    given three times runs three times, each a first visit): per URL, in order, its category
+    scores and its fcp and lcp in ms. Chrome starts once, not once a run."""
+    node_module("lighthouse")
+    env = {**os.environ, "CHROME_PATH": chromium_path(whole_browser=True), "LH_FLAGS": json.dumps(CHROMIUM_ARGS)}
+    with tempfile.TemporaryDirectory() as folder:
+        out = Path(folder) / "runs.json"
+        result = subprocess.run(["node", str(LIGHTHOUSE_RUNNER), str(out), *urls], env=env, capture_output=True,
+                                text=True, timeout=180 * len(urls), check=False)
+        if result.returncode != 0:
+            raise RuntimeError(f"lighthouse failed on {urls[0]}:\n{result.stderr[-3000:]}")
+        return json.loads(out.read_text())
 
 
 def median_scores(runs: list[dict[str, float | None]]) -> dict[str, float]:

@@ -11,18 +11,13 @@ from __future__ import annotations
 
 import asyncio
 import json
-import os
-import subprocess
-import tempfile
 from pathlib import Path
 
 import pytest
 from browser import (
-    CHROMIUM_ARGS,
     LIGHTHOUSE_RUNS,
-    chromium_path,
+    lighthouse_runs,
     median_scores,
-    node_module,
     open_browser_async,
     serve_site,
     site_pages,
@@ -32,22 +27,6 @@ from support.weighing import PageReport, site_version, weigh, weights_file
 pytestmark = [pytest.mark.site, pytest.mark.browser, pytest.mark.alone]
 
 LIGHTHOUSE_MINIMUM = {"performance": 0.95, "accessibility": 1.0, "best-practices": 1.0, "seo": 1.0}
-
-
-def _lighthouse(url: str, output: Path) -> dict[str, float]:
-    """Lighthouse (npm, pinned), mobile, against the local server; {category: score}."""
-    cli = node_module("lighthouse") / "cli" / "index.js"
-    flags = " ".join(CHROMIUM_ARGS)
-    env = {**os.environ, "CHROME_PATH": chromium_path(whole_browser=True)}
-    result = subprocess.run(
-        ["node", str(cli), url, "--quiet", "--output=json", f"--output-path={output}",
-         f"--chrome-flags={flags}", "--only-categories=performance,accessibility,best-practices,seo"],
-        capture_output=True, text=True, env=env, timeout=180, check=False,
-    )
-    if result.returncode != 0:
-        raise RuntimeError(f"lighthouse failed on {url}:\n{result.stderr[-2000:]}")
-    report = json.loads(output.read_text())
-    return {name: category["score"] for name, category in report["categories"].items()}
 
 
 def _heaviest(site: Path) -> str:
@@ -72,9 +51,9 @@ async def _weigh_all(site: Path) -> str:
 
 def test_lighthouse_on_the_heaviest_page(site_dir):
     heaviest = _heaviest(site_dir)
-    with serve_site(site_dir) as base, tempfile.TemporaryDirectory() as folder:
+    with serve_site(site_dir) as base:
         # the median of LIGHTHOUSE_RUNS runs, category by category (CLARIFICATIONS), every run made
-        runs = [_lighthouse(f"{base}/{heaviest}", Path(folder) / f"report-{n}.json") for n in range(LIGHTHOUSE_RUNS)]
+        runs = lighthouse_runs([f"{base}/{heaviest}"] * LIGHTHOUSE_RUNS)
     scores = median_scores(runs)
     low = {name: score for name, score in scores.items() if score < LIGHTHOUSE_MINIMUM[name]}
     assert not low, (f"lighthouse (mobile) on {heaviest}: median {scores} of {runs}; "

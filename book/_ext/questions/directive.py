@@ -101,22 +101,30 @@ class QuestionDirective(SphinxDirective):
         except ValueError as error:
             raise self.error(f"question: {error}") from error
 
+    def _format(self) -> str:
+        """The format this build prints a question's figures in: PDF for the book (LaTeX), SVG
+        for the site. Each builder keeps its own environment and its own folder of figures
+        (GRAPHS_DIR beside its doctrees), so neither draws the other's: a PDF is half a second of
+        matplotlib's font subsetting that the site never shows."""
+        return "pdf" if self.env.app.builder.format == "latex" else "svg"
+
     def _graph(self, key: str, graph) -> graph_view:
-        """The printed variant's graph, drawn now as SVG (the site) and PDF (the book): an
-        image Sphinx copies like any other, so every builder picks its own format; on the site,
-        inside the button that enlarges it."""
+        """The printed variant's graph, drawn now in this build's format (_format): an image
+        Sphinx copies like any other; on the site, inside the button that enlarges it."""
         folder = Path(self.env.doctreedir).parent / GRAPHS_DIR
-        drawn = write_graph(folder, f"{key}-0", graph, formats=("svg", "pdf"))
+        drawn = write_graph(folder, f"{key}-0", graph, formats=(self._format(),))
         here = Path(self.env.srcdir) / Path(self.env.docname).parent
         uri = Path(os.path.relpath(folder / f"{key}-0", here)).as_posix() + ".*"
-        return graph_view("", nodes.image(uri=uri, alt=drawn.alt, classes=["q-graph"]),
-                          square=square_text(folder / f"{key}-0.svg", graph),
+        image = nodes.image(uri=uri, alt=drawn.alt, classes=["q-graph"])
+        if self._format() != "svg":  # print: no enlarged view, no cursor
+            return graph_view("", image, square="", cursor="")
+        return graph_view("", image, square=square_text(folder / f"{key}-0.svg", graph),
                           cursor=cursor_text(folder / f"{key}-0.svg", graph))
 
     def _diagram(self, key: str, diagram) -> nodes.image:
-        """The printed variant's diagram, as SVG (the site) and PDF (the book), like its graph."""
+        """The printed variant's diagram, in this build's format (_format), like its graph."""
         folder = Path(self.env.doctreedir).parent / GRAPHS_DIR
-        drawn = write_diagram(folder, diagram_name(key, 0), diagram, formats=("svg", "pdf"))
+        drawn = write_diagram(folder, diagram_name(key, 0), diagram, formats=(self._format(),))
         here = Path(self.env.srcdir) / Path(self.env.docname).parent
         uri = Path(os.path.relpath(folder / diagram_name(key, 0), here)).as_posix() + ".*"
         return nodes.image(uri=uri, alt=drawn.alt, classes=["q-diagram"])

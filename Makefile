@@ -114,9 +114,11 @@ moodle: venv
 # finishes it (on one worker the second core stood idle for its last minutes).
 # The test folders follow the markers (tests/conftest.py), so each run names its folders and
 # collects only their modules.
+# Each run hands its workers the modules in tests/conftest.py's order (RUN_FIRST: the longest
+# first), not xdist's own (--no-loadscope-reorder: by number of tests, which put the longest last).
 NO_SITE_LOG := _build/tests-without-site.log
-NO_SITE_TESTS := -p no:cacheprovider tests/no_site tests/build tests/network -n 2 --dist loadscope
-SITE_TESTS := tests/site tests/browser -m "not alone" -n 2 --dist loadscope
+NO_SITE_TESTS := -p no:cacheprovider tests/no_site tests/build tests/network -n 2 --dist loadscope --no-loadscope-reorder
+SITE_TESTS := tests/site tests/browser -m "not alone" -n 2 --dist loadscope --no-loadscope-reorder
 # The modules that mark a test `alone`: the run that measures speed collects only them (the
 # whole suite's ten thousand tests take seconds to collect while the machine is otherwise idle).
 ALONE_FILES = $(shell grep -l "mark\.alone" tests/browser/test_*.py)
@@ -152,7 +154,7 @@ test:
 check: venv node_modules/.package-lock.json
 	$(BIN)/ruff check $(LINTED)
 	$(MAKE) --no-print-directory jslint & jslint=$$!; \
-	  $(BIN)/python -m pytest tests/no_site -q --sample-variants -n 2 --dist loadscope \
+	  $(BIN)/python -m pytest tests/no_site -q --sample-variants -n 2 --dist loadscope --no-loadscope-reorder \
 	    || { wait $$jslint; exit 1; }; \
 	  wait $$jslint
 

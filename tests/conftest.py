@@ -75,8 +75,38 @@ def test_folder(path: Path) -> str:
     return Path(path).resolve().relative_to(TESTS).parts[0]
 
 
+#: The modules that take longest (tens of seconds, on two workers), run first. pytest-xdist
+#: (--dist loadscope) hands a worker a whole module, in the order they are collected: a long
+#: module collected last kept one core busy for a minute while the other had nothing left.
+#: Measured with --durations on an idle machine; the order within this list is longest first.
+RUN_FIRST = (
+    # tests/site, tests/browser: make test's run of the built site
+    "test_site.py", "test_offline_browser.py", "test_sketch_browser.py", "test_css_pruning.py",
+    "test_sheet_builder_browser.py", "test_ecf_browser.py", "test_reading_browser.py",
+    "test_text_marking_browser.py", "test_class_browser.py",
+    # tests/build: each builds books of its own
+    "test_noop_build.py", "test_build.py", "test_worksheets_pdf_build.py", "test_fresh_figures_build.py",
+    "test_site_assets_build.py", "test_second_topic.py", "test_progress_build.py",
+    # tests/no_site: make check's
+    "test_question_diagrams.py", "test_figures.py", "test_graph_readings.py", "test_models_drag.py",
+    "test_allowances.py", "test_questions_engine.py", "test_figure_data.py", "test_worksheets.py",
+    "test_programs.py", "test_graph_labels.py",
+)
+
+
+def run_first(items) -> None:
+    """Order `items` so that RUN_FIRST's modules come first, longest first; the rest keep their
+    order. A name in RUN_FIRST that is no module of tests/ is an error, not a silent no-op."""
+    missing = [name for name in RUN_FIRST if not any(TESTS.glob(f"*/{name}"))]
+    if missing:
+        raise pytest.UsageError(f"RUN_FIRST (tests/conftest.py) names no module: {missing}")
+    rank = {name: place for place, name in enumerate(RUN_FIRST)}
+    items.sort(key=lambda item: rank.get(item.path.name, len(RUN_FIRST)))  # stable: a module stays whole
+
+
 @pytest.hookimpl(tryfirst=True)  # before -m deselects by marker
 def pytest_collection_modifyitems(config, items):
+    run_first(items)
     misplaced = []
     for item in items:
         folder = test_folder(item.path)

@@ -17,6 +17,7 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..cores import on_every_core
 from ..reproducible import source_date_epoch
 from . import Sheet
 from .latex import answer_key, graphs, question_sheet
@@ -42,18 +43,23 @@ def write_sources(sheets: list[Sheet], out: Path, work: Path | None = None) -> l
     """Write every version's .tex files and graphs; return the typesetting jobs."""
     jobs = []
     work = out / ".tex" if work is None else work
-    for sheet in sheets:
-        for version in sheet.versions:
-            folder = work / f"{sheet.name}-{version.letter}"
-            if folder.exists():
-                shutil.rmtree(folder)
-            folder.mkdir(parents=True)
-            for name, data in graphs(version).items():
-                (folder / name).write_bytes(data)
-            for jobname, text in ((f"{sheet.name}-{version.letter}", question_sheet(sheet, version)),
-                                  (f"{sheet.name}-key-{version.letter}", answer_key(sheet, version))):
-                (folder / f"{jobname}.tex").write_text(text, encoding="utf-8")
-                jobs.append(Job(folder, jobname, out / f"{jobname}.pdf"))
+    versions = [(sheet, version) for sheet in sheets for version in sheet.versions]
+    for _, version in versions:  # each question worked out here, once: the sheets print them too
+        for item in version.items:
+            item.question  # noqa: B018 (a cached property)
+    # the graphs on every core: matplotlib's PDFs (their fonts' subsetting) are most of the time
+    drawn = on_every_core(lambda n: graphs(versions[n][1]), range(len(versions)))
+    for (sheet, version), figures in zip(versions, drawn, strict=True):
+        folder = work / f"{sheet.name}-{version.letter}"
+        if folder.exists():
+            shutil.rmtree(folder)
+        folder.mkdir(parents=True)
+        for name, data in figures.items():
+            (folder / name).write_bytes(data)
+        for jobname, text in ((f"{sheet.name}-{version.letter}", question_sheet(sheet, version)),
+                              (f"{sheet.name}-key-{version.letter}", answer_key(sheet, version))):
+            (folder / f"{jobname}.tex").write_text(text, encoding="utf-8")
+            jobs.append(Job(folder, jobname, out / f"{jobname}.pdf"))
     return jobs
 
 

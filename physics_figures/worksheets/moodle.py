@@ -42,18 +42,16 @@ import argparse
 import base64
 import html
 import io
-import multiprocessing
-import os
 import re
 import sys
 import xml.etree.ElementTree as ET
-from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 from typing import NamedTuple
 
 import numpy
 
 from .. import marking, topics
+from ..cores import on_every_core
 from ..notation import format_number, plain_number
 from ..questions import KINDS, Question, unit_text
 from ..topics import Topic
@@ -296,26 +294,17 @@ def export(templates: list[Template] | None = None, topic: Topic | None = None
     return ET.ElementTree(out.quiz), out.count
 
 
-#: The templates whose graphs the worker processes draw (set before they fork).
-_GRAPH_TEMPLATES: dict[str, Template] = {}
-
-
-def _drawn(job: tuple[str, int]) -> tuple[str, dict[str, bytes]]:
-    key, index = job
-    template = _GRAPH_TEMPLATES[key]
-    return _graph_files(template, index, template.variant(index))
-
-
 def _draw_graphs(templates: list[Template]) -> dict[tuple[str, int], tuple[str, dict[str, bytes]]]:
     """Every variant's graph, drawn once, on every core (matplotlib takes most of the time)."""
+    by_key = {t.key: t for t in templates}
     jobs = [(t.key, index) for t in templates if any(KINDS[kind].reads_graph for kind in t.kinds)
             for index in variant_indices(t)]
-    if not jobs:
-        return {}
-    _GRAPH_TEMPLATES.update({t.key: t for t in templates})
-    context = multiprocessing.get_context("fork") if sys.platform == "linux" else None
-    with ProcessPoolExecutor(max_workers=os.cpu_count() or 1, mp_context=context) as pool:
-        return dict(zip(jobs, pool.map(_drawn, jobs, chunksize=4), strict=True))
+
+    def draw(job: tuple[str, int]) -> tuple[str, dict[str, bytes]]:
+        template = by_key[job[0]]
+        return _graph_files(template, job[1], template.variant(job[1]))
+
+    return dict(zip(jobs, on_every_core(draw, jobs), strict=True))
 
 
 def _template(out: _Export, template: Template, type_path: str, drawn: dict) -> None:

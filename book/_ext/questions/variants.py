@@ -16,6 +16,7 @@ before is not drawn again.
 from __future__ import annotations
 
 import contextlib
+import functools
 import hashlib
 import json
 from importlib.metadata import version
@@ -24,6 +25,8 @@ from types import SimpleNamespace
 
 from docutils import nodes
 from fresh_figures import modules_digest  # book/_ext: the files a module runs, by content
+
+from physics_figures.cores import on_every_core
 
 from . import form, mock_test, store
 from .directive import (
@@ -97,36 +100,47 @@ def write_variants(app, exception):
     graph_code = _code(app, [store.GRAPH_MODULE, store.DIAGRAM_MODULE], list(GRAPH_WRITERS))
     graphs = last.get("graphs", {}) if last.get("graph_code") == graph_code else {}
     files, drawn_graphs = {}, {}
-    for key in keys:
-        template = store.template(app.config, key)
-        if len(template.site_variants) < 2:  # no New numbers: nothing to load
-            continue
-        variants = []
-        # the site's variants only: the reserve is the teacher's (physics_figures.variants)
-        for index in template.site_variants:
-            variant = template.variant(index)
-            data = variant.variant_data()
-            if variant.graph is not None:  # its own graph, beside the variants' script
-                name = f"{key}-{index}.svg"
-                drawn = _graph(folder, name, variant.graph, graphs, drawn_graphs)
-                data["graph"] = {"src": name, "alt": drawn["alt"], "square": drawn["square"],
-                                 "cursor": json.loads(drawn["cursor"])}
-                files[name] = drawn_graphs[name]["svg"]
-            if variant.diagram is not None:  # its own diagram, labelled with its numbers
-                name = diagram_name(key, index) + ".svg"
-                data["diagram"] = {"src": name, "alt": _diagram(folder, name, variant.diagram, graphs, drawn_graphs)}
-                files[name] = drawn_graphs[name]["svg"]
-            variants.append(data)
-        payload = json.dumps(variants, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
-        script = f"(window.QuestionVariants = window.QuestionVariants || {{}})[{json.dumps(key)}] = {payload};\n"
-        if mock_test.mock_asks(template):  # its form, for the mock test (no other page draws one)
-            answer_form = json.dumps(form_html(template), ensure_ascii=False).replace("</", "<\\/")
-            script += f"(window.QuestionForms = window.QuestionForms || {{}})[{json.dumps(key)}] = {answer_form};\n"
-        files[f"{key}.js"] = _write(folder / f"{key}.js", script.encode())
+    # each template's on a core of its own: drawing the graphs is most of a cold build's last minute
+    for written, drawn in on_every_core(functools.partial(_template_files, app, folder, graphs), keys):
+        files.update(written)
+        drawn_graphs.update(drawn)
     for name in set(last.get("files", {})) - set(files):  # a template no page places any more
         (folder / name).unlink(missing_ok=True)
     record_file.write_text(json.dumps({"inputs": inputs, "files": files, "graph_code": graph_code,
                                        "graphs": drawn_graphs}, indent=1, sort_keys=True))
+
+
+def _template_files(app, folder: Path, graphs: dict, key: str) -> tuple[dict[str, str], dict[str, dict]]:
+    """Write template `key`'s variants' script and figures into `folder` (none for a template
+    without New numbers); ({file name: digest}, {figure name: its record}). `graphs`: the last
+    build's records, so that a figure whose numbers and drawing code are the same is kept."""
+    files, drawn_graphs = {}, {}
+    template = store.template(app.config, key)
+    if len(template.site_variants) < 2:  # no New numbers: nothing to load
+        return files, drawn_graphs
+    variants = []
+    # the site's variants only: the reserve is the teacher's (physics_figures.variants)
+    for index in template.site_variants:
+        variant = template.variant(index)
+        data = variant.variant_data()
+        if variant.graph is not None:  # its own graph, beside the variants' script
+            name = f"{key}-{index}.svg"
+            drawn = _graph(folder, name, variant.graph, graphs, drawn_graphs)
+            data["graph"] = {"src": name, "alt": drawn["alt"], "square": drawn["square"],
+                             "cursor": json.loads(drawn["cursor"])}
+            files[name] = drawn_graphs[name]["svg"]
+        if variant.diagram is not None:  # its own diagram, labelled with its numbers
+            name = diagram_name(key, index) + ".svg"
+            data["diagram"] = {"src": name, "alt": _diagram(folder, name, variant.diagram, graphs, drawn_graphs)}
+            files[name] = drawn_graphs[name]["svg"]
+        variants.append(data)
+    payload = json.dumps(variants, ensure_ascii=False, separators=(",", ":")).replace("</", "<\\/")
+    script = f"(window.QuestionVariants = window.QuestionVariants || {{}})[{json.dumps(key)}] = {payload};\n"
+    if mock_test.mock_asks(template):  # its form, for the mock test (no other page draws one)
+        answer_form = json.dumps(form_html(template), ensure_ascii=False).replace("</", "<\\/")
+        script += f"(window.QuestionForms = window.QuestionForms || {{}})[{json.dumps(key)}] = {answer_form};\n"
+    files[f"{key}.js"] = _write(folder / f"{key}.js", script.encode())
+    return files, drawn_graphs
 
 
 def _graph(folder: Path, name: str, graph, last: dict, drawn: dict) -> dict:

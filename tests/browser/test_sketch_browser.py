@@ -6,7 +6,7 @@ form's .q-score as "k/n marks". The part is a fieldset.q-part[data-kind="sketch"
 
 from __future__ import annotations
 
-import itertools
+import math
 
 import pytest
 from browser import site_pages
@@ -16,8 +16,10 @@ from physics_figures.bank import sketches
 pytestmark = [pytest.mark.site, pytest.mark.browser]
 
 VIEWPORTS = {"phone": {"width": 390, "height": 844}, "laptop": {"width": 1280, "height": 800}}
-#: Mouse moves between two corners of a line drawn by pointer.
-MOVES = 12
+#: Pointer moves in a stroke: about what a pointer reports in a steady half-second stroke (60 a
+#: second), spread over the line's segments, at least two a segment (a curve's many short
+#: segments are already its shape; each move costs the page a redraw).
+STROKE_MOVES = 36
 
 
 def _lines(question) -> list[tuple[str, tuple, int]]:
@@ -70,26 +72,34 @@ def recipe(line, axes) -> list[tuple[str, str, float, float]]:
 
 # ------------------------------------------------------------------ drawing and building
 
-def _to_screen(page, key, point):
-    return page.evaluate(
-        """([key, t, y]) => {
+def _to_screen(page, key):
+    """The map from the axes' (t, y) to the screen's pixels: read from the page once (its SVG's
+    plot box, ranges and transform), then applied in Python (it is affine)."""
+    plot, t, y, ctm = page.evaluate(
+        """(key) => {
           const svg = document.querySelector(`form[data-question="${key}"] fieldset.q-part[data-kind="sketch"] svg`);
-          const [l, top, r, b] = svg.dataset.plot.split(' ').map(Number);
-          const [t0, t1] = svg.dataset.t.split(' ').map(Number), [y0, y1] = svg.dataset.y.split(' ').map(Number);
-          const p = new DOMPoint(l + (t - t0) / (t1 - t0) * (r - l), b - (y - y0) / (y1 - y0) * (b - top));
-          const s = p.matrixTransform(svg.getScreenCTM());
-          return [s.x, s.y];
-        }""", [key, *point])
+          const numbers = (text) => text.split(' ').map(Number);
+          const m = svg.getScreenCTM();
+          return [numbers(svg.dataset.plot), numbers(svg.dataset.t), numbers(svg.dataset.y), [m.a, m.b, m.c, m.d, m.e, m.f]];
+        }""", key)
+    (left, top, right, bottom), (t0, t1), (y0, y1), (a, b, c, d, e, f) = plot, t, y, ctm
+
+    def screen(point):
+        x = left + (point[0] - t0) / (t1 - t0) * (right - left)
+        u = bottom - (point[1] - y0) / (y1 - y0) * (bottom - top)
+        return a * x + c * u + e, b * x + d * u + f
+    return screen
 
 
 def draw_by_pointer(page, form, line) -> None:
-    key = form.get_attribute("data-question")
+    """Presses at the line's start and moves along it, STROKE_MOVES pointer moves in all."""
     form.locator("fieldset.q-part[data-kind='sketch'] svg.q-sketch-axes").scroll_into_view_if_needed()
-    page.mouse.move(*_to_screen(page, key, line[0]))
+    screen = _to_screen(page, form.get_attribute("data-question"))
+    page.mouse.move(*screen(line[0]))
     page.mouse.down()
-    for (t0, y0), (t1, y1) in itertools.pairwise(line):
-        for k in range(1, MOVES + 1):
-            page.mouse.move(*_to_screen(page, key, (t0 + (t1 - t0) * k / MOVES, y0 + (y1 - y0) * k / MOVES)))
+    moves = max(2, math.ceil(STROKE_MOVES / (len(line) - 1)))
+    for point in line[1:]:
+        page.mouse.move(*screen(point), steps=moves)  # evenly spaced moves from the last point
     page.mouse.up()
 
 

@@ -6,9 +6,10 @@ book/_ext/offline: the search texts and the service worker, which read and hash 
 site). One small book (a copy of the project with its own physics_figures, as
 tests/build/test_fresh_figures_build.py makes) with a question that has a graph, built cold, then
 without a change, then after an edit to the graph's drawing code, to the question's
-numbers in the bank, and to a page's text: each must reach the site. And the LaTeX build
-(make latex, the first half of make pdf) between two HTML builds leaves the second one
-nothing to do: it keeps its own Sphinx environment.
+numbers in the bank, and to a page's text: each must reach the site. The page's edit is built
+by the LaTeX build (make latex, the first half of make pdf) first, and the HTML build after it
+reads that page only: the LaTeX build keeps its own Sphinx environment. (One book for all of
+it: each cold build of it costs a test process ten seconds.)
 """
 
 from __future__ import annotations
@@ -28,8 +29,14 @@ KEY = "graph-ball-acceleration"  # a template with a graph and New numbers (bank
 def _project(project: Path) -> None:
     _fresh_figures_project(project)
     (project / "book" / "question.md").write_text(f"# Question\n\nA ball falls.\n\n```{{question}} {KEY}\n```\n")
-    # two pages, no code cells: nothing to execute (test_fresh_figures_build.py covers that)
-    (project / "_toc.yml").write_text("format: jb-book\nroot: book/intro\nchapters:\n  - file: book/question\n")
+    (project / "book" / "answers.md").write_text("# Answers\n\n```{answer-key}\n```\n")
+    # three pages, no code cells: nothing to execute (test_fresh_figures_build.py covers that); in
+    # parts, as the book's table of contents has: sphinx-jupyterbook-latex then numbers LaTeX's
+    # figures by chapter (numfig_secnum_depth), a setting the HTML build does not share
+    (project / "_toc.yml").write_text(
+        "format: jb-book\nroot: book/intro\nparts:\n"
+        "  - caption: One\n    chapters:\n      - file: book/question\n"
+        "  - caption: Two\n    chapters:\n      - file: book/answers\n")
 
 
 def _site(project: Path) -> dict[str, bytes]:
@@ -84,31 +91,16 @@ def test_a_no_op_rebuild_rewrites_nothing_and_every_edit_reaches_the_site(tmp_pa
     assert renumbered[f"_static/questions/{KEY}.js"] != drawn[f"_static/questions/{KEY}.js"], \
         "the variants' script is stale after an edit to the bank"
 
-    # a page's text: its words reach the search texts (for a copy opened from disk)
-    with (tmp_path / "book" / "intro.md").open("a") as page:
-        page.write("\nA sentence about zebrafish.\n")
-    _build(tmp_path)
-    texts = (tmp_path / "_build" / "html" / "_static" / "search-texts.js").read_text()
-    assert re.search(r"zebrafish", texts), "the search texts are stale after a page edit"
-
-
-def test_the_latex_build_leaves_the_html_build_its_environment(tmp_path):
-    _project(tmp_path)
-    # parts, as the book's table of contents has: sphinx-jupyterbook-latex then numbers
-    # LaTeX's figures by chapter (numfig_secnum_depth), a setting the HTML build does not share
-    (tmp_path / "book" / "answers.md").write_text("# Answers\n\n```{answer-key}\n```\n")
-    (tmp_path / "_toc.yml").write_text(
-        "format: jb-book\nroot: book/intro\nparts:\n"
-        "  - caption: One\n    chapters:\n      - file: book/question\n"
-        "  - caption: Two\n    chapters:\n      - file: book/answers\n")
-    _build(tmp_path)
-    # an edit, so that the LaTeX build reads a page and saves its environment
+    # a page's text, built by the LaTeX build first: the HTML build after it reads that page only
+    # (the LaTeX build changed none of its environment), and its words reach the search texts
+    # (for a copy opened from disk)
     with (tmp_path / "book" / "intro.md").open("a") as page:
         page.write("\nA sentence about zebrafish.\n")
     assert "build succeeded" in _build(tmp_path, "latex")
-
     log = _build(tmp_path)
     assert "config changed" not in log, "the LaTeX build changed the HTML build's environment:\n" + log[-2000:]
     read = re.findall(r"reading sources\.\.\. \S*\[\s*\d+%\]\S* \S*book/(\w+)", log)
     assert "question" not in read, f"the HTML build after the LaTeX build read an unchanged page again: {read}"
     assert "intro" in read, f"the edited page was not read again: {read}"
+    texts = (tmp_path / "_build" / "html" / "_static" / "search-texts.js").read_text()
+    assert re.search(r"zebrafish", texts), "the search texts are stale after a page edit"

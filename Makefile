@@ -104,20 +104,25 @@ moodle: venv
 	@echo ">>> writing the question bank as Moodle XML"
 	$(BIN)/python -m physics_figures.worksheets.moodle $(TEACHERS)/dynamics-moodle.xml
 
-# The tests that need no site (models, questions, the small books of the build tests) start
-# beside the book's build. Once the book is built, the tests of the built site and the browser
-# tests run on both cores (pytest-xdist, each test module on one worker with its own Chromium),
-# while the first run finishes; then the tests that measure speed (marker alone: Lighthouse)
-# run by themselves. The reports follow in that order; the runs together are the suite.
-# The first run has two workers too, a module each, at a lower priority (nice): they take
-# what the book and the site's tests leave of both cores, so no core waits while the other
-# finishes it (on one worker the second core stood idle for its last minutes).
+# The tests that need no site start beside the book's build, as two runs at a lower priority
+# (nice), each a process of its own: the models, questions and rules (tests/no_site,
+# tests/network), and the small books of the build tests (tests/build). They take what the
+# book and the site's tests leave of both cores. Two plain runs, not one run on two xdist
+# workers: about 25 core-seconds less (no worker collects the other's ten thousand tests, and
+# no report crosses a process), and the two still keep both cores busy. Once the book is
+# built, the tests of the built site and the browser tests run on both cores (pytest-xdist,
+# each test module on one worker with its own Chromium), while the first runs finish; then the
+# tests that measure speed (marker alone: Lighthouse) run by themselves. The reports follow in
+# that order; the runs together are the suite.
 # The test folders follow the markers (tests/conftest.py), so each run names its folders and
 # collects only their modules.
-# Each run hands its workers the modules in tests/conftest.py's order (RUN_FIRST: the longest
-# first), not xdist's own (--no-loadscope-reorder: by number of tests, which put the longest last).
+# The site's run hands its workers the modules in tests/conftest.py's order (RUN_FIRST: the
+# longest first), not xdist's own (--no-loadscope-reorder: by number of tests, which put the
+# longest last).
 NO_SITE_LOG := _build/tests-without-site.log
-NO_SITE_TESTS := -p no:cacheprovider tests/no_site tests/build tests/network -n 2 --dist loadscope --no-loadscope-reorder
+NO_SITE_TESTS := -p no:cacheprovider tests/no_site tests/network
+BUILD_LOG := _build/tests-of-small-books.log
+BUILD_TESTS := -p no:cacheprovider tests/build
 SITE_TESTS := tests/site tests/browser -m "not alone" -n 2 --dist loadscope --no-loadscope-reorder
 # The modules that mark a test `alone`: the run that measures speed collects only them (the
 # whole suite's ten thousand tests take seconds to collect while the machine is otherwise idle).
@@ -131,18 +136,22 @@ test:
 	$(BIN)/ruff check $(LINTED)
 	@$(MAKE) --no-print-directory jslint
 	@mkdir -p _build
-	@echo ">>> building the book; beside it, the tests that need no site (report: $(NO_SITE_LOG))"
+	@echo ">>> building the book; beside it, the tests that need no site (reports: $(NO_SITE_LOG), $(BUILD_LOG))"
 	@nice -n 5 $(BIN)/python -m pytest $(NO_SITE_TESTS) >$(NO_SITE_LOG) 2>&1 & tests=$$!; \
-	  $(MAKE) --no-print-directory book || { kill $$tests; wait $$tests; exit 1; }; \
+	  nice -n 5 $(BIN)/python -m pytest $(BUILD_TESTS) >$(BUILD_LOG) 2>&1 & books=$$!; \
+	  $(MAKE) --no-print-directory book || { kill $$tests $$books; wait $$tests $$books; exit 1; }; \
 	  echo ">>> the tests of the built site, in Chromium too, on both cores"; \
 	  $(BIN)/python -m pytest $(SITE_TESTS) && site=0 || site=$$?; \
 	  wait $$tests && no_site=0 || no_site=$$?; \
+	  wait $$books && built=0 || built=$$?; \
 	  echo ">>> the tests that need no site:"; cat $(NO_SITE_LOG); \
+	  echo ">>> the tests that build small books of their own:"; cat $(BUILD_LOG); \
 	  echo ">>> the tests that measure speed, alone"; \
 	  $(BIN)/python -m pytest -m "alone" $(ALONE_FILES) && alone=0 || alone=$$?; \
 	  [ $$no_site -eq 0 ] || echo "!!! the tests that need no site failed: see above ($(NO_SITE_LOG))"; \
+	  [ $$built -eq 0 ] || echo "!!! the tests that build small books failed: see above ($(BUILD_LOG))"; \
 	  [ $$site -eq 0 ] || echo "!!! the tests of the built site failed: see above"; \
-	  exit $$(( no_site || site || alone ))
+	  exit $$(( no_site || built || site || alone ))
 
 # The fast loop: ruff, ESLint, Prettier and every test that needs no build and no browser
 # (models, marking rules, questions, notation), with three variants of each template

@@ -221,6 +221,14 @@ def _landed(stub: str):
     return lambda url: url != stub and url.startswith("http")
 
 
+def goto_page(page, url: str) -> None:
+    """Load `url` in `page`; a redirect stub (IS_REDIRECT_STUB), until the page it leads to
+    has loaded."""
+    page.goto(url, wait_until="load")
+    if _is_redirect_stub(url):
+        page.wait_for_url(_landed(url), wait_until="load")
+
+
 #: The page-weight budget (CLARIFICATIONS: House, and the standing "Page weight"): a first visit,
 #: counted as Chromium counts a cold load (bytes on the wire, headers included), transfers at most
 #: this share of the default Jupyter Book 1 page, in at most FIRST_VISIT_REQUESTS requests.
@@ -278,9 +286,7 @@ def load_page(context, url: str, *, scroll: bool = True, measure: bool = True) -
     page.on("requestfailed", lambda r: record.failed.append(f"{r.url} ({r.failure})"))
     page.on("console", lambda m: m.type == "error" and record.console_errors.append(m.text))
     page.on("pageerror", lambda e: record.console_errors.append(str(e)))
-    page.goto(url, wait_until="load")
-    if _is_redirect_stub(url):
-        page.wait_for_url(_landed(url), wait_until="load")
+    goto_page(page, url)
     if scroll:
         page.evaluate(SCROLL_TO_BOTTOM)
         page.wait_for_load_state("networkidle")

@@ -14,7 +14,7 @@ from __future__ import annotations
 import re
 
 import pytest
-from browser import open_browser, serve_site, site_pages
+from browser import goto_page, open_browser, serve_site, site_pages
 
 from physics_figures.notation import UNIT_SYMBOLS
 
@@ -88,8 +88,7 @@ def readings(site_dir) -> dict[str, dict]:
         context = browser.new_context(viewport=PHONE)
         page = context.new_page()
         for path in site_pages(site_dir):
-            page.goto(f"{base}/{path}", wait_until="load")
-            page.wait_for_load_state("networkidle")  # the root page redirects
+            goto_page(page, f"{base}/{path}")  # the root page redirects: the page it leads to
             read[path] = {"blocks": page.evaluate(BLOCK_TEXTS), "figures": page.evaluate(FIGURE_TEXT),
                           "code": page.evaluate(SHOWN_CODE)}
         context.close()

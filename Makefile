@@ -104,8 +104,9 @@ moodle: venv
 	@echo ">>> writing the question bank as Moodle XML"
 	$(BIN)/python -m physics_figures.worksheets.moodle $(TEACHERS)/dynamics-moodle.xml
 
-# The tests that need no site start beside the book's build, as two runs at a lower priority
-# (nice), each a process of its own: the models, questions and rules (tests/no_site,
+# The tests that need no site start beside the book's build, as two runs at the lowest priority
+# (nice 19: the rest of the run waits for the book, then for the site's tests, so those two
+# come first), each a process of its own: the models, questions and rules (tests/no_site,
 # tests/network), and the small books of the build tests (tests/build). They take what the
 # book and the site's tests leave of both cores. Two plain runs, not one run on two xdist
 # workers: about 25 core-seconds less (no worker collects the other's ten thousand tests, and
@@ -137,8 +138,8 @@ test:
 	@$(MAKE) --no-print-directory jslint
 	@mkdir -p _build
 	@echo ">>> building the book; beside it, the tests that need no site (reports: $(NO_SITE_LOG), $(BUILD_LOG))"
-	@nice -n 5 $(BIN)/python -m pytest $(NO_SITE_TESTS) >$(NO_SITE_LOG) 2>&1 & tests=$$!; \
-	  nice -n 5 $(BIN)/python -m pytest $(BUILD_TESTS) >$(BUILD_LOG) 2>&1 & books=$$!; \
+	@nice -n 19 $(BIN)/python -m pytest $(NO_SITE_TESTS) >$(NO_SITE_LOG) 2>&1 & tests=$$!; \
+	  nice -n 19 $(BIN)/python -m pytest $(BUILD_TESTS) >$(BUILD_LOG) 2>&1 & books=$$!; \
 	  $(MAKE) --no-print-directory book || { kill $$tests $$books; wait $$tests $$books; exit 1; }; \
 	  echo ">>> the tests of the built site, in Chromium too, on both cores"; \
 	  $(BIN)/python -m pytest $(SITE_TESTS) && site=0 || site=$$?; \

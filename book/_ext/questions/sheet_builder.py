@@ -37,6 +37,8 @@ from sphinx.errors import ExtensionError
 from sphinx.util.docutils import SphinxDirective
 from svg_compact import ID_ATTRIBUTE, XML_HEAD, compact_svg  # book/_ext: a graph in fewer bytes
 
+from physics_figures.cores import on_every_core
+
 from . import store
 from .sheet_pieces import ID_MARK, cut, share
 from .variants import _code, _sha256, _unchanged, _write
@@ -180,8 +182,9 @@ def short_prefix(name: str) -> str:
     return f"g{_sha256(name.encode())[:7]}-"
 
 
-def _graph(folder: Path, name: str, graph, last: dict, drawn: dict) -> str:
-    """A variant's graph as inline SVG, drawn again only when its numbers changed."""
+def _graph(folder: Path, name: str, graph, last: dict) -> tuple[dict, str]:
+    """A variant's graph as inline SVG, drawn again only when its numbers changed; its record
+    (its numbers' and its file's digests) and the SVG."""
     numbers = _sha256(repr(graph).encode())
     path = folder / f"{name}.svg"
     before = last.get(name, {})
@@ -194,8 +197,26 @@ def _graph(folder: Path, name: str, graph, last: dict, drawn: dict) -> str:
         text = inline_svg(figure.svg(), prefix=short_prefix(name), alt=figure.alt)
         figure.figure.clear()  # matplotlib keeps figures alive until cleared
         before = {"numbers": numbers, "svg": _write(path, text.encode())}
-    drawn[name] = before
-    return path.read_text(encoding="utf-8")
+    return before, path.read_text(encoding="utf-8")
+
+
+def picture_name(key: str, index: int) -> str:
+    """The name of a reserve variant's graph (or diagram) in the builder's data and files."""
+    return f"{key}-{index}"
+
+
+def builder_pictures(topic) -> dict:
+    """{picture_name: the graph to read or the situation drawn} of every reserve variant that
+    prints one, as builder_pages draws them."""
+    from physics_figures.worksheets import bank_templates
+
+    pictures = {}
+    for template in bank_templates(topic):
+        for index in template.reserve_variants:
+            question = template.variant(index)
+            if (picture := question.graph or question.diagram) is not None:
+                pictures[picture_name(template.key, index)] = picture
+    return pictures
 
 
 def builder_index(topic) -> dict:
@@ -236,7 +257,7 @@ def builder_pages(topic, graph_svg, keys: list[str] | None = None) -> dict:
         for index in template.reserve_variants:
             question = template.variant(index)
             picture = question.graph or question.diagram  # a graph to read, or the situation drawn
-            name = f"{template.key}-{index}"
+            name = picture_name(template.key, index)
             svg = "" if picture is None else graph_svg(name, picture)
             pages.append((template.key, str(index), short_prefix(name) if svg else ""))
             texts += [sheet_body(question, svg), key_body(question)]
@@ -279,9 +300,14 @@ def write_data(app, exception):
     last_graphs = last.get("graphs", {}) if last.get("graph_code") == graph_code else {}
     folder = graphs_folder(outdir)
     folder.mkdir(parents=True, exist_ok=True)
-    drawn: dict = {}
-    data = builder_data(store.topics(app.config)[0],
-                        lambda name, graph: _graph(folder, name, graph, last_graphs, drawn))
+    topic = store.topics(app.config)[0]
+    pictures = builder_pictures(topic)
+    # each graph on a core of its own: drawing them one after another kept the book's build
+    # waiting on one core for half a minute
+    made = dict(zip(pictures, on_every_core(lambda name: _graph(folder, name, pictures[name], last_graphs),
+                                            list(pictures)), strict=True))
+    drawn = {name: record for name, (record, _) in made.items()}
+    data = builder_data(topic, lambda name, graph: made[name][1])
     prefixes = {short_prefix(name) for name in drawn}
     if len(prefixes) != len(drawn):
         raise ExtensionError("sheet_builder: two graphs' ids share a prefix (short_prefix): lengthen it")

@@ -405,9 +405,13 @@ class PageVisitor:
         if scroll:
             await self.page.evaluate(SCROLL_TO_BOTTOM)
             await self.network_idle()
+        await self.settle()
+        return self.record
+
+    async def settle(self) -> None:
+        """Wait until every finished request of this tab is recorded."""
         await asyncio.gather(*self._pending)
         self._pending.clear()
-        return self.record
 
     async def network_idle(self, quiet_s: float = 0.5, timeout_s: float = 120) -> None:
         """Wait until no request of this tab has been in flight for `quiet_s`.

@@ -1,9 +1,9 @@
 """The built site in a real browser: private, offline, error-free, accessible, light.
 
 One sweep opens every page of the built site in headless Chromium (Debian's), served
-with gzip on a local port, at 1280 px and 390 px, in light and then dark mode (switched on the
-open page, as a reader's system setting switches it), with every request to another host
-blocked (so maths must render offline). Each test below then
+with gzip on a local port, at 1280 px and 390 px (there on the page's weighed first visit), in
+light and then dark mode (switched on the open page, as a reader's system setting switches
+it), with every request to another host blocked (so maths must render offline). Each test below then
 checks one rule over the whole sweep and names every page that breaks it.
 
 Lighthouse runs on the heaviest page only (it takes ~20 s a page): performance depends
@@ -106,13 +106,34 @@ async def _keyboard(page) -> dict:
     return {"first": first, "jumped": jumped, "stops": stops}
 
 
-async def _sweep_viewport(browser, base: str, pages: list[str], viewport: str, reports) -> None:
-    """Every page at one width: loaded light, checked, then switched to dark in place (as the
-    system's setting switches a reader's open page; the theme follows it) and checked again.
-    At the desktop width the page's facts are read too, and the keyboard is tried last (it
-    moves the focus and the page: nothing is judged after it)."""
-    first = viewport == "desktop"
-    context = await browser.new_context(viewport=VIEWPORTS[viewport], color_scheme="light")
+async def _check(page, report: PageReport, viewport: str) -> None:
+    """A loaded page checked light, then switched to dark in place (as the system's setting
+    switches a reader's open page; the theme follows it) and checked again. At the desktop
+    width the page's facts are read too, and the keyboard is tried last (it moves the focus
+    and the page: nothing is judged after it)."""
+    desktop = viewport == "desktop"
+    # Judge the styles' end state (colours, focus rings), not a frame of a transition.
+    await page.add_style_tag(content=NO_TRANSITIONS)
+    if desktop:
+        report.facts.update(await page.evaluate(PAGE_FACTS))
+    for scheme in ("light", "dark"):
+        mode = f"{viewport}/{scheme}"
+        if scheme == "dark":
+            await page.emulate_media(color_scheme="dark")
+            await page.wait_for_function("document.documentElement.dataset.theme === 'dark'")
+            report.dark_images[viewport] = (await page.evaluate(PAGE_FACTS))["images"]
+        report.overflow[mode] = await page.evaluate(
+            "document.documentElement.scrollWidth - document.documentElement.clientWidth"
+        )
+        # Dark mode changes colours only (same DOM, same layout): check the colour rules.
+        report.axe[mode] = await axe_violations_async(page, rules=COLOUR_RULES if scheme == "dark" else None)
+    if desktop:
+        report.facts["keyboard"] = await _keyboard(page)
+
+
+async def _sweep_desktop(browser, base: str, pages: list[str], reports) -> None:
+    """Every page at 1280 px, one tab: loaded (light) and checked."""
+    context = await browser.new_context(viewport=VIEWPORTS["desktop"], color_scheme="light")
     context.set_default_timeout(SWEEP_TIMEOUT_MS)
     # Offline: anything not on the site's own host is blocked (and reported as foreign).
     await context.route(re.compile(r"^(?!http://127\.0\.0\.1:)"), lambda route: route.abort("internetdisconnected"))
@@ -127,28 +148,12 @@ async def _sweep_viewport(browser, base: str, pages: list[str], viewport: str, r
         # not scrolled: the weighing's first visit scrolls, loads every figure and reports
         # what failed (axe and the facts read the page's elements, loaded or not)
         load = await visitor.visit(f"{base}/{path}")
-        report.shifted(await page.evaluate("window.__loadShift"), viewport)
-        # Judge the styles' end state (colours, focus rings), not a frame of a transition.
-        await page.add_style_tag(content=NO_TRANSITIONS)
-        if first:
-            report.facts.update(await page.evaluate(PAGE_FACTS))
-        for scheme in ("light", "dark"):
-            mode = f"{viewport}/{scheme}"
-            if scheme == "dark":
-                await page.emulate_media(color_scheme="dark")
-                await page.wait_for_function("document.documentElement.dataset.theme === 'dark'")
-                report.dark_images[viewport] = (await page.evaluate(PAGE_FACTS))["images"]
-            report.overflow[mode] = await page.evaluate(
-                "document.documentElement.scrollWidth - document.documentElement.clientWidth"
-            )
-            # Dark mode changes colours only (same DOM, same layout): check the colour rules.
-            report.axe[mode] = await axe_violations_async(page, rules=COLOUR_RULES if scheme == "dark" else None)
-        if first:
-            report.facts["keyboard"] = await _keyboard(page)
+        report.shifted(await page.evaluate("window.__loadShift"), "desktop")
+        await _check(page, report, "desktop")
         # read after the switch to dark: whatever it fetched or broke counts too
-        report.failed += [f"{viewport}: {failure}" for failure in load.failed]
-        report.console += [f"{viewport}: {message}" for message in load.console_errors]
-        report.foreign += [f"{viewport}: {url}" for url in load.foreign]
+        report.failed += [f"desktop: {failure}" for failure in load.failed]
+        report.console += [f"desktop: {message}" for message in load.console_errors]
+        report.foreign += [f"desktop: {url}" for url in load.foreign]
     await context.close()
 
 
@@ -157,10 +162,11 @@ async def _sweep(site: Path) -> dict[str, PageReport]:
     reports = {path: PageReport(path) for path in pages}
     with serve_site(site) as base:
         async with open_browser_async() as browser:
-            # The two widths and the weighing run side by side (the weighing mostly waits for
-            # the network to be idle).
-            await asyncio.gather(*(_sweep_viewport(browser, base, pages, v, reports) for v in VIEWPORTS),
-                                 weigh(browser, base, pages, reports))
+            # Side by side: the desktop width, and the first visits at 390 px, each weighed
+            # and then checked at that width in its own tab (one load of a page at 390 px).
+            await asyncio.gather(_sweep_desktop(browser, base, pages, reports),
+                                 weigh(browser, base, pages, reports,
+                                       then=lambda page, report: _check(page, report, "mobile")))
     return reports
 
 

@@ -52,12 +52,16 @@ new PerformanceObserver((list) => {
 """
 
 
-async def weigh(browser, base: str, pages: list[str], reports) -> None:
+async def weigh(browser, base: str, pages: list[str], reports, *, then=None) -> None:
     """Each page's first visit: a fresh context (nothing cached from another page), service
     workers blocked, as `make bench` weighs it. Its layout shift while it loads, too, and what
     failed or was sent off the site (scrolled: the lazy figures load too). A page is loaded once
     here; its layout shift is the worst of this load and the sweep's (tests/browser/test_site.py), never
-    the least: a shift a student can meet on a first load fails the page."""
+    the least: a shift a student can meet on a first load fails the page.
+
+    `then(page, report)`, when given, checks the page further in the same tab once it is
+    weighed (the sweep's checks at 390 px, without a second load): what those checks fetch or
+    break counts as the first visit's failures, but not in its bytes."""
     for path in pages:
         context = await browser.new_context(viewport=VIEWPORTS["mobile"], service_workers="block")
         context.set_default_timeout(SWEEP_TIMEOUT_MS)
@@ -65,12 +69,15 @@ async def weigh(browser, base: str, pages: list[str], reports) -> None:
         await context.add_init_script(LAYOUT_SHIFTS)
         visitor = PageVisitor(await context.new_page())
         load = await visitor.visit(f"{base}/{path}", scroll=True)
-        shift = await visitor.page.evaluate("window.__loadShift")
-        await context.close()
         report = reports[path]
         report.total_bytes = load.total_bytes
         report.requests = sum(not url.startswith("data:") for url in load.requests)  # on the wire
-        report.shifted(shift, "first visit")
+        report.shifted(await visitor.page.evaluate("window.__loadShift"), "first visit")
+        if then:
+            visitor.measure = False  # the first visit is weighed: what the checks fetch is not
+            await then(visitor.page, report)
+            await visitor.settle()
+        await context.close()
         report.failed += [f"first visit: {failure}" for failure in load.failed]
         report.console += [f"first visit: {message}" for message in load.console_errors]
         report.foreign += [f"first visit: {url}" for url in load.foreign]

@@ -1,7 +1,8 @@
 """The CSS the site ships is pruned (PurgeCSS, book/_ext/site_assets/prune-css.js) to the
 rules its pages and scripts use. Nothing may change on screen: the same build with the
 unpruned bundles (write_bundle's output) and with the pruned ones gives the same pixels,
-light and dark, at 1280 and 390 px, and with the phone's menu open."""
+light and dark (each page loaded light, then switched to dark in place), at 1280 and 390 px,
+and with the phone's menu open."""
 
 from __future__ import annotations
 
@@ -38,18 +39,25 @@ def unpruned(site_dir, tmp_path_factory) -> Path:
     return copy
 
 
-def _shot(browser, base_url: str, page_path: str, width: int, mode: str, *, menu: bool = False) -> Image.Image:
-    context = browser.new_context(viewport={"width": width, "height": 900}, color_scheme=mode,
-                                  service_workers="block")
-    context.add_init_script(f"localStorage.setItem('mode', '{mode}'); localStorage.setItem('theme', '{mode}');")
-    page = context.new_page()
-    page.goto(f"{base_url}/{page_path}", wait_until="load")
-    # every deferred script and figure fetched (a slow machine is still loading at "load")
-    page.wait_for_load_state("networkidle")
+def _settled(page) -> None:
+    """Wait for what a full-page shot would otherwise catch half done."""
     page.evaluate("document.fonts.ready")
     # lazy figures load when a full-page shot grows the viewport, at a time a loaded machine
     # varies: load and decode them all first
     page.evaluate("Promise.all([...document.images].map(i => { i.loading = 'eager'; return i.decode().catch(() => null); }))")
+    # every transition and animation run to its end (the phone menu's panel slides in)
+    page.evaluate("Promise.all(document.getAnimations().map(a => a.finished.catch(() => null)))")
+
+
+def _shots(browser, base_url: str, page_path: str, width: int, *, menu: bool = False) -> dict[str, Image.Image]:
+    """The page light, then dark: loaded once, light, and switched to dark in place as the
+    system's setting switches a reader's open page (the theme follows it)."""
+    context = browser.new_context(viewport={"width": width, "height": 900}, color_scheme="light",
+                                  service_workers="block")
+    page = context.new_page()
+    page.goto(f"{base_url}/{page_path}", wait_until="load")
+    # every deferred script and figure fetched (a slow machine is still loading at "load")
+    page.wait_for_load_state("networkidle")
     if "search.html" in page_path:
         # every result, with its snippet (each comes with a fetch of its page, in any order)
         page.wait_for_function("(document.querySelector('#search-results p.search-summary') || "
@@ -58,11 +66,16 @@ def _shot(browser, base_url: str, page_path: str, width: int, mode: str, *, menu
                                ".every(li => li.querySelector('.context'))")
     if menu:
         page.locator("button.primary-toggle:visible, label.sidebar-toggle.primary-toggle:visible").first.click()
-    # every transition and animation run to its end (the phone menu's panel slides in)
-    page.evaluate("Promise.all(document.getAnimations().map(a => a.finished.catch(() => null)))")
-    image = Image.open(BytesIO(page.screenshot(full_page=not menu, animations="disabled", caret="hide")))
+    shots = {}
+    for mode in MODES:
+        if mode == "dark":
+            page.emulate_media(color_scheme="dark")
+            page.wait_for_function("document.documentElement.dataset.theme === 'dark'")
+        _settled(page)
+        png = page.screenshot(full_page=not menu, animations="disabled", caret="hide")
+        shots[mode] = Image.open(BytesIO(png)).convert("RGB")
     context.close()
-    return image.convert("RGB")
+    return shots
 
 
 #: Chromium's software raster sometimes draws a figure's rounded corner 2 px apart from one
@@ -79,19 +92,30 @@ def _same(first: Image.Image, second: Image.Image) -> bool:
     return changed.histogram()[255] <= NOISE_PIXELS
 
 
-@pytest.mark.parametrize("mode", MODES)
-@pytest.mark.parametrize("width", WIDTHS.values(), ids=list(WIDTHS))
-def test_pruned_css_draws_every_page_as_the_full_css_does(browser, site_dir, unpruned, width, mode):
+@pytest.fixture(scope="module")
+def changed(browser, site_dir, unpruned) -> dict[tuple[str, str], list[str]]:
+    """{(width, mode): the pages whose shots differ}: every page of PAGES at each width, with
+    the pruned and with the full bundles, each loaded once and shot light and then dark."""
+    found = {(width, mode): [] for width in WIDTHS for mode in MODES}
     with serve_site(site_dir) as pruned_url, serve_site(unpruned) as full_url:
-        # one shot each, compared within NOISE_PIXELS
-        changed = [path for path in PAGES
-                   if not _same(_shot(browser, pruned_url, path, width, mode), _shot(browser, full_url, path, width, mode))]
-    assert not changed, f"pruning the CSS changed {changed} at {width} px, {mode}"
+        for width, pixels in WIDTHS.items():
+            for path in PAGES:
+                pruned, full = (_shots(browser, url, path, pixels) for url in (pruned_url, full_url))
+                for mode in MODES:
+                    if not _same(pruned[mode], full[mode]):
+                        found[width, mode].append(path)
+    return found
 
 
 @pytest.mark.parametrize("mode", MODES)
-def test_pruned_css_draws_the_phone_menu_as_the_full_css_does(browser, site_dir, unpruned, mode):
+@pytest.mark.parametrize("width", WIDTHS)
+def test_pruned_css_draws_every_page_as_the_full_css_does(changed, width, mode):
+    # one shot each, compared within NOISE_PIXELS
+    assert not changed[width, mode], f"pruning the CSS changed {changed[width, mode]} at {WIDTHS[width]} px, {mode}"
+
+
+def test_pruned_css_draws_the_phone_menu_as_the_full_css_does(browser, site_dir, unpruned):
     with serve_site(site_dir) as pruned_url, serve_site(unpruned) as full_url:
-        pruned = _shot(browser, pruned_url, "book/intro.html", 390, mode, menu=True)
-        full = _shot(browser, full_url, "book/intro.html", 390, mode, menu=True)
-    assert _same(pruned, full), f"pruning the CSS changed the open phone menu ({mode})"
+        pruned, full = (_shots(browser, url, "book/intro.html", 390, menu=True) for url in (pruned_url, full_url))
+    changed = [mode for mode in MODES if not _same(pruned[mode], full[mode])]
+    assert not changed, f"pruning the CSS changed the open phone menu ({', '.join(changed)})"

@@ -106,7 +106,7 @@ async def _keyboard(page) -> dict:
     return {"first": first, "jumped": jumped, "stops": stops}
 
 
-async def _check(page, report: PageReport, viewport: str) -> None:
+async def _check_modes(page, report: PageReport, viewport: str) -> None:
     """A loaded page checked light, then switched to dark in place (as the system's setting
     switches a reader's open page; the theme follows it) and checked again. At the desktop
     width the page's facts are read too, and the keyboard is tried last (it moves the focus
@@ -149,7 +149,7 @@ async def _sweep_desktop(browser, base: str, pages: list[str], reports) -> None:
         # what failed (axe and the facts read the page's elements, loaded or not)
         load = await visitor.visit(f"{base}/{path}")
         report.shifted(await page.evaluate("window.__loadShift"), "desktop")
-        await _check(page, report, "desktop")
+        await _check_modes(page, report, "desktop")
         # read after the switch to dark: whatever it fetched or broke counts too
         report.failed += [f"desktop: {failure}" for failure in load.failed]
         report.console += [f"desktop: {message}" for message in load.console_errors]
@@ -166,7 +166,7 @@ async def _sweep(site: Path) -> dict[str, PageReport]:
             # and then checked at that width in its own tab (one load of a page at 390 px).
             await asyncio.gather(_sweep_desktop(browser, base, pages, reports),
                                  weigh(browser, base, pages, reports,
-                                       then=lambda page, report: _check(page, report, "mobile")))
+                                       then=lambda page, report: _check_modes(page, report, "mobile")))
     return reports
 
 

@@ -19,7 +19,7 @@ class PageReport:
     total_bytes: int = 0
     requests: int = 0  # on the first visit
     layout_shift: float = 0.0  # what Lighthouse calls CLS, while it loads: the worst of its loads
-    layout_shift_load: str = ""  # which load shifted most ("first visit", "desktop", "mobile")
+    layout_shift_load: str = ""  # which load shifted most ("first visit" at 390 px, or "desktop")
     foreign: list[str] = field(default_factory=list)
     failed: list[str] = field(default_factory=list)
     console: list[str] = field(default_factory=list)

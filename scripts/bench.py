@@ -29,6 +29,7 @@ import platform
 import random
 import re
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -304,9 +305,10 @@ def term_of_practice(data: dict, student: int) -> str:
 
 async def class_page_load_time(site: Path) -> float:
     """Milliseconds from dropping CLASS_FILES students' exports on the class page to its tables
-    laid out (every file read, checked against its checksum, summed and shown): the best of
-    CLASS_RUNS, each on a freshly loaded page."""
-    best = None
+    laid out (every file read, checked against its checksum, summed and shown): the median of
+    CLASS_RUNS, each on a freshly loaded page (never the best: a slow run counts as often as it
+    happens)."""
+    times = []
     with serve_site(site) as base:
         async with open_browser_async() as browser:
             context = await browser.new_context()
@@ -333,9 +335,9 @@ async def class_page_load_time(site: Path) -> float:
                 shown = await tab.locator(".cp-table tbody tr").count()
                 if shown != CLASS_FILES:
                     raise SystemExit(f"the class page showed {shown} students of {CLASS_FILES} files")
-                best = ms if best is None else min(best, ms)
+                times.append(ms)
             await context.close()
-    return best
+    return statistics.median(times)
 
 
 LIGHTHOUSE_GOAL = {"performance": 0.97, "accessibility": 1.0, "best-practices": 1.0, "seo": 1.0}
@@ -567,7 +569,7 @@ def marking_line(most: int, marking: float, text_marking: dict, question_marking
 
 def class_load_line(ms: float) -> str:
     return (f"Class page: {CLASS_FILES} progress files load (a term's practice each, {TERM_ATTEMPTS} attempts) in "
-            f"{ms:.0f} ms in Chromium, dropped at once and laid out (best of {CLASS_RUNS}; goal: under "
+            f"{ms:.0f} ms in Chromium, dropped at once and laid out (median of {CLASS_RUNS}; goal: under "
             f"{CLASS_LOAD_GOAL_MS} ms).")
 
 

@@ -185,13 +185,24 @@ def base_url(site_dir):
         yield base
 
 
-@pytest.fixture(scope="module")
-def browser():
-    """Headless Chromium for a module's tests (scripts/browser.py)."""
+@pytest.fixture(scope="session")
+def chromium():
+    """Headless Chromium (scripts/browser.py), one for the whole test process: each launch, with
+    playwright's driver, costs about 0.7 core-seconds, and a run of the site's tests opened one
+    per module. A test's state lives in its own browser context, not in the browser."""
     from browser import open_browser
 
-    with open_browser() as chromium:
-        yield chromium
+    with open_browser() as launched:
+        yield launched
+
+
+@pytest.fixture(scope="module")
+def browser(chromium):
+    """Chromium for a module's tests. The contexts (and pages) a module leaves open are closed
+    after it, as closing its own browser did: no page of one module runs on into the next."""
+    yield chromium
+    for context in chromium.contexts:
+        context.close()
 
 
 @pytest.fixture(scope="module")

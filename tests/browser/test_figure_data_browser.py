@@ -18,7 +18,7 @@ import re
 
 import numpy as np
 import pytest
-from browser import open_browser, serve_site, site_pages
+from browser import serve_site, site_pages
 
 from physics_figures import scenarios
 from physics_figures.models import average_force, components, missing_momentum
@@ -65,12 +65,12 @@ OPEN_EVERY_DISCLOSURE = """() => {
 
 
 @pytest.fixture(scope="module")
-def figures(site_dir) -> dict[str, dict]:
+def figures(site_dir, browser) -> dict[str, dict]:
     """Figure id -> its facts, from every page that shows an image; the accessible
     description Chromium computes for each image, too."""
     pages = [p for p in site_pages(site_dir) if "<img" in (site_dir / p).read_text()]
     found, overflow = {}, {}
-    with serve_site(site_dir) as base, open_browser() as browser:
+    with serve_site(site_dir) as base:
         page = browser.new_page(viewport=PHONE)
         for path in pages:
             page.goto(f"{base}/{path}", wait_until="load")

@@ -22,7 +22,7 @@ from browser import (
     serve_site,
     site_pages,
 )
-from support.weighing import PageReport, site_version, weigh, weights_file
+from support.weighing import PageReport, run_apart, site_version, weigh, weights_file
 
 pytestmark = [pytest.mark.site, pytest.mark.browser, pytest.mark.alone]
 
@@ -35,7 +35,7 @@ def _heaviest(site: Path) -> str:
     weighed = json.loads(weights_file(site).read_text()) if weights_file(site).exists() else {}
     if weighed.get("site") == site_version(site) and weighed["bytes"].keys() == set(site_pages(site)):
         return max(weighed["bytes"], key=weighed["bytes"].get)
-    return asyncio.run(_weigh_all(site))
+    return run_apart(_weigh_all(site))
 
 
 async def _weigh_all(site: Path) -> str:

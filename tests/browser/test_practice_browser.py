@@ -6,7 +6,7 @@ from __future__ import annotations
 import json
 
 import pytest
-from browser import open_browser, serve_site
+from browser import serve_site
 from support.pages import fill_part, page_without_errors, question_form, question_page
 
 from physics_figures import bank
@@ -19,8 +19,8 @@ KEY = "quick-check-1"
 
 
 @pytest.fixture(scope="module")
-def page_url(site_dir):
-    with serve_site(site_dir) as base_url, open_browser() as browser:
+def page_url(site_dir, browser):
+    with serve_site(site_dir) as base_url:
         yield browser, base_url + PAGE
 
 

@@ -4,7 +4,7 @@ the new variant's own SVG, loaded, and its alt text carries that variant's numbe
 from __future__ import annotations
 
 import pytest
-from browser import open_browser, question_pages, serve_site
+from browser import question_pages, serve_site
 from support.pages import page_without_errors
 from support.templates import diagram_numbers
 
@@ -14,9 +14,9 @@ pytestmark = [pytest.mark.site, pytest.mark.browser]
 
 
 @pytest.mark.parametrize("key", ["puck-components", "collision-third-law"])
-def test_new_numbers_show_the_new_variant_s_diagram(site_dir, key):
+def test_new_numbers_show_the_new_variant_s_diagram(site_dir, key, browser):
     pages = question_pages(site_dir)
-    with serve_site(site_dir) as base_url, open_browser() as browser, \
+    with serve_site(site_dir) as base_url, \
             page_without_errors(browser, base_url + pages[key]) as page:
         section = page.locator(f"#question-{key}")
         image = section.locator("img.q-diagram")

@@ -9,7 +9,7 @@ feedback in the role="status" element, reloads, and clears. Answers are the note
 from __future__ import annotations
 
 import pytest
-from browser import VIEWPORTS, axe_violations, open_browser, serve_site
+from browser import VIEWPORTS, axe_violations, serve_site
 from design_tokens import rgb
 
 from physics_figures import bank
@@ -22,10 +22,10 @@ PAGE = "/book/exam/quick-check.html"
 
 
 @pytest.fixture(scope="module")
-def browser_and_url(site_dir):
+def browser_and_url(site_dir, browser):
     if not (site_dir / PAGE.lstrip("/")).exists():
         pytest.fail(f"{site_dir}{PAGE} is missing: the quick check page is not in the built site")
-    with serve_site(site_dir) as base_url, open_browser() as browser:
+    with serve_site(site_dir) as base_url:
         yield browser, base_url + PAGE
 
 

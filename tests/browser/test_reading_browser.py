@@ -14,7 +14,7 @@ from __future__ import annotations
 import re
 
 import pytest
-from browser import goto_page, open_browser, serve_site, site_pages
+from browser import goto_page, serve_site, site_pages
 
 from physics_figures.notation import UNIT_SYMBOLS
 
@@ -80,11 +80,11 @@ SHOWN_CODE = """() => {
 
 
 @pytest.fixture(scope="module")
-def readings(site_dir) -> dict[str, dict]:
+def readings(site_dir, browser) -> dict[str, dict]:
     """Every page read once on a 390 px phone: its blocks of text with digits (BLOCK_TEXTS),
     its figures' text sizes (FIGURE_TEXT) and any code shown (SHOWN_CODE)."""
     read = {}
-    with serve_site(site_dir) as base, open_browser() as browser:
+    with serve_site(site_dir) as base:
         context = browser.new_context(viewport=PHONE)
         page = context.new_page()
         for path in site_pages(site_dir):
@@ -160,9 +160,9 @@ def test_every_figure_s_text_is_at_least_11_css_px_on_a_390_px_phone(readings):
     assert not small, f"{len(small)} figure texts below {SMALLEST_FIGURE_TEXT_PX} px at 390 px: {small[:12]}"
 
 
-def test_question_graphs_are_measured_too(site_dir):
+def test_question_graphs_are_measured_too(site_dir, browser):
     """img.q-graph (physics_figures/figures/question_graph.py) is among the figures above."""
-    with serve_site(site_dir) as base, open_browser() as browser:
+    with serve_site(site_dir) as base:
         page = browser.new_page(viewport=PHONE)
         pages = [p for p in site_pages(site_dir) if 'class="q-graph' in (site_dir / p).read_text()]
         assert pages, "no page shows a question graph"
@@ -189,8 +189,8 @@ def example_pages(site_dir) -> list[tuple[str, str]]:
     return pages
 
 
-def test_a_worked_solution_opens_from_its_whole_header_named_for_its_example(site_dir):
-    with serve_site(site_dir) as base, open_browser() as browser:
+def test_a_worked_solution_opens_from_its_whole_header_named_for_its_example(site_dir, browser):
+    with serve_site(site_dir) as base:
         page = browser.new_page(viewport=PHONE)
         for path, example in example_pages(site_dir):
             page.goto(f"{base}/{path}", wait_until="load")

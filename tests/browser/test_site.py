@@ -36,6 +36,7 @@ from support.weighing import (
     LAYOUT_SHIFTS,
     SWEEP_TIMEOUT_MS,
     PageReport,
+    run_apart,
     site_version,
     weigh,
     weights_file,
@@ -174,7 +175,7 @@ async def _sweep(site: Path) -> dict[str, PageReport]:
 def sweep(site_dir) -> dict[str, PageReport]:
     """Open every page in every mode once; the tests read the reports."""
     node_module("axe-core")  # fail now, with the fix, if npm ci was not run
-    reports = asyncio.run(_sweep(site_dir))
+    reports = run_apart(_sweep(site_dir))
     weights = {path: report.total_bytes for path, report in reports.items()}
     weights_file(site_dir).write_text(json.dumps({"site": site_version(site_dir), "bytes": weights}, indent=1))
     return reports

@@ -13,7 +13,7 @@ import json
 from pathlib import Path
 
 import pytest
-from browser import open_browser, serve_site
+from browser import serve_site
 from support.pages import question_page
 
 from physics_figures import bank
@@ -26,8 +26,8 @@ REPORT = ROOT / "_build" / "text-marking-agreement.json"
 
 
 @pytest.fixture(scope="module")
-def served(site_dir):
-    with serve_site(site_dir) as base_url, open_browser() as browser:
+def served(site_dir, browser):
+    with serve_site(site_dir) as base_url:
         yield browser, base_url
 
 

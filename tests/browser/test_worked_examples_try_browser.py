@@ -11,10 +11,10 @@ TRY = "example-1-try"  # the question example 1's page asks a student to try
 
 
 @pytest.fixture(scope="module")
-def example_1(site_dir):
-    from browser import open_browser, serve_site
+def example_1(site_dir, browser):
+    from browser import serve_site
 
-    with serve_site(site_dir) as base_url, open_browser() as browser:
+    with serve_site(site_dir) as base_url:
         yield browser, base_url + "/book/exam/example-1.html"
 
 

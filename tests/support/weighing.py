@@ -3,8 +3,10 @@ page's layout shift) and tests/browser/test_lighthouse.py (to find the heaviest 
 
 from __future__ import annotations
 
+import asyncio
 import hashlib
 import re
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -92,3 +94,11 @@ def weights_file(site: Path) -> Path:
 def site_version(site: Path) -> str:
     """The build's fingerprint: its service worker names a cache for the digest of every file."""
     return hashlib.sha256((site / "sw.js").read_bytes()).hexdigest()
+
+
+def run_apart(coroutine):
+    """``asyncio.run(coroutine)`` on a thread of its own. The test process's one Chromium
+    (tests/conftest.py's ``chromium``) is driven by playwright's sync API, whose event loop
+    belongs to this thread while it is open, and asyncio.run will not start a second loop here."""
+    with ThreadPoolExecutor(max_workers=1) as thread:
+        return thread.submit(asyncio.run, coroutine).result()

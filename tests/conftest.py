@@ -86,7 +86,7 @@ RUN_FIRST = (
     "test_text_marking_browser.py", "test_class_browser.py",
     # tests/build: each builds books of its own
     "test_noop_build.py", "test_build.py", "test_worksheets_pdf_build.py", "test_fresh_figures_build.py",
-    "test_site_assets_build.py", "test_second_topic.py", "test_progress_build.py",
+    "test_second_topic.py", "test_progress_build.py",
     # tests/no_site: make check's
     "test_question_diagrams.py", "test_figures.py", "test_graph_readings.py", "test_models_drag.py",
     "test_allowances.py", "test_questions_engine.py", "test_figure_data.py", "test_worksheets.py",

@@ -6,7 +6,7 @@ book/_ext/offline: the search texts and the service worker, which read and hash 
 site). One small book (a copy of the project with its own physics_figures, as
 tests/build/test_fresh_figures_build.py makes) with a question that has a graph, built cold, then
 without a change, then after an edit to the graph's drawing code, to the question's
-numbers in the bank, and to a page's text: each must reach the site. The page's edit is built
+numbers in the bank, to a stylesheet alone, and to a page's text: each must reach the site. The page's edit is built
 by the LaTeX build (make latex, the first half of make pdf) first, and the HTML build after it
 reads that page only: the LaTeX build keeps its own Sphinx environment. (One book for all of
 it: each cold build of it costs a test process ten seconds.)
@@ -42,6 +42,11 @@ def _project(project: Path) -> None:
 def _site(project: Path) -> dict[str, bytes]:
     site = project / "_build" / "html"
     return {p.relative_to(site).as_posix(): p.read_bytes() for p in sorted(site.rglob("*")) if p.is_file()}
+
+
+def _bundles(project: Path) -> str:
+    """The text of the stylesheet bundles the pages link."""
+    return "\n".join(path.read_text() for path in (project / "_build" / "html" / "_static" / "site-assets").glob("bundle-*.css"))
 
 
 def _mtimes(project: Path, names: list[str]) -> dict[str, int]:
@@ -90,6 +95,18 @@ def test_a_no_op_rebuild_rewrites_nothing_and_every_edit_reaches_the_site(tmp_pa
     renumbered = _site(tmp_path)
     assert renumbered[f"_static/questions/{KEY}.js"] != drawn[f"_static/questions/{KEY}.js"], \
         "the variants' script is stale after an edit to the bank"
+
+    # a stylesheet alone: Sphinx copies static files only when it writes some page, so an edit to
+    # _static/site.css and nothing else once left the site (and the bundle pages link) as it was.
+    # On an element every page has, so the pruned bundle keeps it; a real property with an odd
+    # value, as unused custom properties are pruned and the bundle is minified.
+    rule, mark = "p { word-spacing: 0.0137em; }", ".0137em"
+    assert mark not in _bundles(tmp_path)
+    with (tmp_path / "_static" / "site.css").open("a") as css:
+        css.write(f"\n{rule}\n")
+    _build(tmp_path)
+    assert mark in _bundles(tmp_path), "the stylesheet bundle pages link was not rebuilt after an edit to site.css"
+    assert "no targets are out of date" in _build(tmp_path), "a build after the stylesheet's was not a no-op"
 
     # a page's text, built by the LaTeX build first: the HTML build after it reads that page only
     # (the LaTeX build changed none of its environment), and its words reach the search texts

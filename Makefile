@@ -192,7 +192,7 @@ jslint: node_modules/.package-lock.json
 # sphinx-jupyterbook-latex sets numfig_secnum_depth for LaTeX, and in an environment shared
 # with the HTML build that change made the next make html read every page again. It shares
 # the HTML build's cache of executed pages (a link), so no page is executed twice.
-# make latex writes the .tex files only (tests/build/test_noop_build.py uses it).
+# make latex writes the .tex files only (tests/build/test_incremental_build.py uses it).
 LATEX_BUILD := _build/latex-build
 PDF := $(LATEX_BUILD)/_build/latex
 PDF_FILES := dynamics.pdf dynamics-questions.pdf dynamics-answers.pdf

@@ -85,7 +85,7 @@ RUN_FIRST = (
     "test_sheet_builder_browser.py", "test_ecf_browser.py", "test_reading_browser.py",
     "test_text_marking_browser.py", "test_class_browser.py",
     # tests/build: each builds books of its own
-    "test_noop_build.py", "test_build.py", "test_worksheets_pdf_build.py", "test_fresh_figures_build.py",
+    "test_incremental_build.py", "test_build.py", "test_worksheets_pdf_build.py",
     "test_second_topic.py", "test_progress_build.py",
     # tests/no_site: make check's
     "test_question_diagrams.py", "test_figures.py", "test_graph_readings.py", "test_models_drag.py",

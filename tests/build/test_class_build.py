@@ -6,31 +6,17 @@ only it does), and print builds say where the page works."""
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 import pytest
 from support.pages import embedded
-from support.sphinx import small_book, sphinx_build
 
 from physics_figures import bank
 
 pytestmark = [pytest.mark.build]
 
-ROOT = Path(__file__).resolve().parents[2]
-
-
-def _project(tmp_path: Path) -> Path:
-    return small_book(tmp_path, {
-        "progress": "# Your practice\n\n```{practice-progress}\n```\n",
-        "class": "# The class\n\nWhat the class did.\n\n```{class-progress}\n```\n",
-    })
-
-
-def test_the_class_page_embeds_the_book_and_its_types_and_loads_its_scripts(tmp_path):
-    source = _project(tmp_path)
-    result = sphinx_build(source, "html")
-    assert result.returncode == 0, result.stderr
-    page = (source / "_out" / "html" / "class.html").read_text()
+def test_the_class_page_embeds_the_book_and_its_types_and_loads_its_scripts(directive_book):
+    site = directive_book("html")  # the class page and Your practice, of support.sphinx's DIRECTIVE_PAGES
+    page = (site / "class.html").read_text()
     data = embedded(page, "cp-data")
     assert data["book"] == bank.TOPIC.key
     assert [kind["type"] for kind in data["types"]] == list(bank.TOPIC.type_keys)
@@ -38,7 +24,7 @@ def test_the_class_page_embeds_the_book_and_its_types_and_loads_its_scripts(tmp_
     for kind in data["types"]:
         assert kind["templates"] == [{"key": t.key, "title": t.title, "marks": t.variant(0).marks}
                                      for t in bank.by_type(kind["type"])]
-    assert embedded((source / "_out" / "html" / "progress.html").read_text(), "pp-data")["book"] == data["book"]
+    assert embedded((site / "progress.html").read_text(), "pp-data")["book"] == data["book"]
     scripts = re.findall(r'<script[^>]*src="_static/([\w.-]+\.js)', page)
     order = [name for name in scripts if name in {"notation.js", "progress-file.js", "progress.js", "class-table.js",
                                                        "class.js"}]
@@ -46,13 +32,10 @@ def test_the_class_page_embeds_the_book_and_its_types_and_loads_its_scripts(tmp_
     assert "_static/class.css" in page
     assert re.search(r'<input type="file" id="cp-choose"\s+class="cp-choose" accept="\.json,application/json" multiple>',
                      page)
-    assert "class.js" not in (source / "_out" / "html" / "progress.html").read_text()
+    assert "class.js" not in (site / "progress.html").read_text()
 
 
-def test_print_builds_say_the_class_page_works_in_the_browser(tmp_path):
-    source = _project(tmp_path)
-    result = sphinx_build(source, "text")
-    assert result.returncode == 0, result.stderr
-    text = (source / "_out" / "text" / "class.txt").read_text()
+def test_print_builds_say_the_class_page_works_in_the_browser(directive_book):
+    text = (directive_book("text") / "class.txt").read_text()
     assert "What the class did." in text
     assert "open it in the web version of the book" in text

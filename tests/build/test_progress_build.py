@@ -17,9 +17,6 @@ from physics_figures import bank
 
 pytestmark = [pytest.mark.build]
 
-ROOT = Path(__file__).resolve().parents[2]
-
-
 def _project(tmp_path: Path, asked: str) -> Path:
     return small_book(tmp_path, {
         "asked": "# Questions\n\n" + asked,
@@ -77,10 +74,7 @@ def test_the_page_embeds_the_bank_by_type_with_the_page_that_places_each(tmp_pat
     assert all(t["page"] is None for kind in _progress_data(source)["types"] for t in kind["templates"])
 
 
-def test_print_builds_say_the_progress_is_kept_in_the_browser(tmp_path):
-    source = _project(tmp_path, "Text.\n")
-    result = sphinx_build(source, "text")
-    assert result.returncode == 0, result.stderr
-    text = (source / "_out" / "text" / "progress.txt").read_text()
+def test_print_builds_say_the_progress_is_kept_in_the_browser(directive_book):
+    text = (directive_book("text") / "progress.txt").read_text()
     assert "What you practised." in text
     assert "kept in the web browser you practise in" in text

@@ -1,6 +1,6 @@
 """book/_ext/fresh_figures.py: which physics_figures modules each page imports, and its digest.
 
-The build test (tests/build/test_fresh_figures_build.py) edits a module and rebuilds; these check
+The build test (tests/build/test_incremental_build.py) edits a module and rebuilds; these check
 the static analysis it rests on, quickly, against the book's own pages.
 """
 

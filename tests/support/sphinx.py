@@ -33,3 +33,16 @@ def sphinx_build(source: Path, builder: str) -> subprocess.CompletedProcess:
         [str(SPHINX_BUILD), "-W", "--keep-going", "-q", "-b", builder, str(source), str(source / "_out" / builder)],
         check=False, capture_output=True, text=True, timeout=300,
     )
+
+
+QUICK_CHECK_1 = "```{question} quick-check-1\n```\n"
+#: The small book the directives' tests share (tests/build/conftest.py's `directive_book`): a page
+#: without questions, a question with the answer key, Your practice and the class page.
+DIRECTIVE_PAGES = {
+    "plain": "# A page without questions\n\nText.\n",
+    "asked": "# Questions\n\n" + QUICK_CHECK_1 + "\n## Key\n\n```{answer-key}\n```\n",
+    "progress": "# Your practice\n\nWhat you practised.\n\n```{practice-progress}\n```\n",
+    "class": "# The class\n\nWhat the class did.\n\n```{class-progress}\n```\n",
+}
+DIRECTIVE_CONF = ('myst_enable_extensions = ["dollarmath"]\n'
+                  'latex_documents = [("index", "book.tex", "Book", "Author", "manual")]\n')

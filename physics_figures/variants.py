@@ -61,7 +61,7 @@ class Draw:
         _require(abs(count - round(count)) < 1e-6, "step", self.step,
                  f"must divide high - low = {self.high - self.low} into whole steps")
 
-    @property
+    @cached_property  # a template's draws read it once a try, thousands of times
     def grid(self) -> tuple[float, ...]:
         count = round((self.high - self.low) / self.step)
         # rounded to the step's own places, so 0.1 steps give 2.3, not 2.3000000000000003

@@ -104,15 +104,14 @@ moodle: venv
 	@echo ">>> writing the question bank as Moodle XML"
 	$(BIN)/python -m physics_figures.worksheets.moodle $(TEACHERS)/dynamics-moodle.xml
 
-# The tests that need no site start beside the book's build, as two runs at low priority
-# (nice 19 and 17: the rest of the run waits for the book, then for the site's tests, so those
-# two come first), each a process of its own: the models, questions and rules (tests/no_site,
+# The tests that need no site start beside the book's build, as two runs at the lowest priority
+# (nice 19: the rest of the run waits for the book, then for the site's tests, so those come
+# first), each a process of its own: the models, questions and rules (tests/no_site,
 # tests/network), and the small books of the build tests (tests/build). They take what the
-# book and the site's tests leave of both cores. The small books' run has about half as much
-# work again as the other (about 175 core-seconds alone, against 110), so it gets the larger
-# share of what is left (nice 17, weight 23, against nice 19's 15) and the two end together:
-# a run left alone at the end leaves a core idle (for 8 to 20 s before Lighthouse, when both
-# were at nice 19). Two plain runs, not one run on two xdist
+# book and the site's tests leave of both cores. The two have about as much work (160 and 170
+# core-seconds alone), so they get equal shares and end together: a run left alone at the end
+# leaves a core idle before Lighthouse (for 8 to 20 s when the small books had more work than
+# the other run at the same nice). Two plain runs, not one run on two xdist
 # workers: about 25 core-seconds less (no worker collects the other's ten thousand tests, and
 # no report crosses a process), and the two still keep both cores busy. Once the book is
 # built, the tests of the built site and the browser tests run on both cores (pytest-xdist,
@@ -143,7 +142,7 @@ test:
 	@mkdir -p _build
 	@echo ">>> building the book; beside it, the tests that need no site (reports: $(NO_SITE_LOG), $(BUILD_LOG))"
 	@nice -n 19 $(BIN)/python -m pytest $(NO_SITE_TESTS) >$(NO_SITE_LOG) 2>&1 & tests=$$!; \
-	  nice -n 17 $(BIN)/python -m pytest $(BUILD_TESTS) >$(BUILD_LOG) 2>&1 & books=$$!; \
+	  nice -n 19 $(BIN)/python -m pytest $(BUILD_TESTS) >$(BUILD_LOG) 2>&1 & books=$$!; \
 	  $(MAKE) --no-print-directory book || { kill $$tests $$books; wait $$tests $$books; exit 1; }; \
 	  echo ">>> the tests of the built site, in Chromium too, on both cores"; \
 	  $(BIN)/python -m pytest $(SITE_TESTS) && site=0 || site=$$?; \
